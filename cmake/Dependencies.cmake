@@ -1,0 +1,20 @@
+# Finds every third-party package. The order matters on Debian 12:
+# VTK must come before anything that loads OpenVDB's FindTBB.cmake, otherwise
+# CMake stops with "Some (but not all) targets in this export set were already defined".
+find_package(VTK 9 REQUIRED COMPONENTS
+  CommonCore CommonDataModel FiltersCore IOGeometry IOPLY)
+
+list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
+# Debian's FindOpenVDB.cmake asks for Boost iostreams (libboost-iostreams-dev).
+find_package(OpenVDB REQUIRED)
+find_package(Imath CONFIG REQUIRED)
+find_package(TBB REQUIRED)
+find_package(CLI11 CONFIG REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+
+if(SCULPT_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(SCULPT_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,31 @@
+#include "dirty_region.h"
+
+namespace sculpt {
+
+namespace {
+constexpr openvdb::Int32 kLeafMask = ~openvdb::Int32(7);  // leaves are 8^3 voxels
+}
+
+openvdb::Coord DirtyRegion::leafOriginOf(const openvdb::Coord& ijk)
+{
+    return openvdb::Coord(ijk.x() & kLeafMask, ijk.y() & kLeafMask, ijk.z() & kLeafMask);
+}
+
+void DirtyRegion::addVoxel(const openvdb::Coord& ijk) { mLeafOrigins.insert(leafOriginOf(ijk)); }
+
+void DirtyRegion::merge(const DirtyRegion& other)
+{
+    mLeafOrigins.insert(other.mLeafOrigins.begin(), other.mLeafOrigins.end());
+}
+
+std::vector<openvdb::Coord> DirtyRegion::leafOrigins() const
+{
+    return {mLeafOrigins.begin(), mLeafOrigins.end()};
+}
+
+bool DirtyRegion::containsLeaf(const openvdb::Coord& leafOrigin) const
+{
+    return mLeafOrigins.count(leafOrigin) != 0;
+}
+
+} // namespace sculpt

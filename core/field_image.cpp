@@ -1,0 +1,48 @@
+#include "field_image.h"
+
+#include "errors.h"
+#include "text_format.h"
+
+#include <cmath>
+#include <utility>
+
+namespace sculpt {
+
+namespace {
+
+double uniformVoxelSize(const openvdb::math::Transform& transform)
+{
+    if (!transform.isLinear()) {
+        throw InputError("the grid's transform is not linear (frustum grids cannot be sculpted)");
+    }
+    if (!transform.hasUniformScale()) {
+        throw InputError("the grid's voxels are not cubes (non-uniform voxel size)");
+    }
+    return transform.voxelSize()[0];
+}
+
+} // namespace
+
+FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
+    : mGrid(std::move(grid)), mUnits(std::move(units))
+{
+    if (!mGrid) throw InputError("no grid given");
+    if (mGrid->getGridClass() != openvdb::GRID_LEVEL_SET) {
+        throw InputError("grid '" + mGrid->getName() + "' is not a level set");
+    }
+    mVoxelSize = uniformVoxelSize(mGrid->transform());
+    if (!(mVoxelSize > 0.0) || !std::isfinite(mVoxelSize)) {
+        throw InputError("voxel size must be positive and finite");
+    }
+    if (!(mGrid->background() >= float(mVoxelSize))) {
+        throw InputError("grid '" + mGrid->getName() +
+                         "' has a band narrower than one voxel (background " +
+                         formatNumber(mGrid->background()) + ")");
+    }
+}
+
+double FieldImage::halfWidthVoxels() const { return double(mGrid->background()) / mVoxelSize; }
+
+DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRegion{}); }
+
+} // namespace sculpt

@@ -1,0 +1,88 @@
+#include "field_measures.h"
+
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/LevelSetUtil.h>
+#include <openvdb/tree/LeafManager.h>
+
+#include <tbb/parallel_reduce.h>
+
+namespace sculpt {
+
+namespace {
+
+using LeafRange = openvdb::tree::LeafManager<const openvdb::FloatTree>::LeafRange;
+
+/// Index-space bounding box of the linear zero crossings between face-adjacent voxels.
+struct CrossingBounds {
+    const openvdb::FloatTree* tree;
+    openvdb::BBoxd box;  // default-constructed: empty (min > max)
+
+    CrossingBounds(const openvdb::FloatTree& t) : tree(&t) {}
+    CrossingBounds(const CrossingBounds& other, tbb::split) : tree(other.tree) {}
+
+    void operator()(const LeafRange& range)
+    {
+        openvdb::tree::ValueAccessor<const openvdb::FloatTree> acc(*tree);
+        for (auto leaf = range.begin(); leaf; ++leaf) {
+            for (auto it = leaf->cbeginValueOn(); it; ++it) {
+                if (*it >= 0.0f) continue;
+                addCrossings(acc, it.getCoord(), *it);
+            }
+        }
+    }
+
+    void addCrossings(openvdb::tree::ValueAccessor<const openvdb::FloatTree>& acc,
+                      const openvdb::Coord& ijk, float inside)
+    {
+        for (int axis = 0; axis < 3; ++axis) {
+            for (int step : {-1, 1}) {
+                openvdb::Coord n = ijk;
+                n[axis] += step;
+                const float outside = acc.getValue(n);
+                if (outside < 0.0f) continue;
+                openvdb::Vec3d p = ijk.asVec3d();
+                p[axis] += step * double(inside) / (double(inside) - double(outside));
+                box.expand(p);
+            }
+        }
+    }
+
+    void join(const CrossingBounds& other) { box.expand(other.box); }
+};
+
+int countSurfaceComponents(const openvdb::FloatGrid& grid)
+{
+    auto crossings = openvdb::tools::extractIsosurfaceMask(grid.tree(), 0.0f);
+    std::vector<openvdb::BoolTree::Ptr> segments;
+    openvdb::tools::extractActiveVoxelSegmentMasks(*crossings, segments);
+    return int(segments.size());
+}
+
+} // namespace
+
+FieldMeasures measureField(const FieldImage& field)
+{
+    const auto& grid = field.grid();
+    FieldMeasures m;
+    m.voxelSize = field.voxelSize();
+    m.halfWidthVoxels = field.halfWidthVoxels();
+    m.activeVoxels = grid.activeVoxelCount();
+    m.memoryBytes = grid.memUsage();
+
+    openvdb::tree::LeafManager<const openvdb::FloatTree> leaves(grid.tree());
+    CrossingBounds bounds(grid.tree());
+    tbb::parallel_reduce(leaves.leafRange(), bounds);
+    if (bounds.box.isSorted()) {
+        m.bboxMin = grid.transform().indexToWorld(bounds.box.min());
+        m.bboxMax = grid.transform().indexToWorld(bounds.box.max());
+    }
+
+    openvdb::tools::LevelSetMeasure<openvdb::FloatGrid> measure(grid);
+    m.area = measure.area(true);
+    m.volume = measure.volume(true);
+    m.eulerCharacteristic = m.activeVoxels == 0 ? 0 : measure.eulerCharacteristic();
+    m.components = countSurfaceComponents(grid);
+    return m;
+}
+
+} // namespace sculpt

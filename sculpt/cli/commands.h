@@ -1,0 +1,20 @@
+#pragma once
+/// @file commands.h
+/// @brief The subcommands of the `sculpt` program. Each adds itself to the application with its
+///        options, help text and the callback that runs it. Callbacks throw InputError for bad
+///        input; main() turns exceptions into one line on stderr and the exit code.
+
+namespace CLI {
+class App;
+}
+
+namespace sculpt::cli {
+
+/// `sculpt new`: a starting shape (sphere, box, torus) as a new document.
+void addNewCommand(CLI::App& app);
+/// `sculpt info`: measures of a document, as text or JSON.
+void addInfoCommand(CLI::App& app);
+/// `sculpt mesh`: export the surface as PLY, OBJ or STL.
+void addMeshCommand(CLI::App& app);
+
+} // namespace sculpt::cli

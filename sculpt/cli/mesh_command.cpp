@@ -1,0 +1,47 @@
+#include "commands.h"
+
+#include <atomic_file.h>
+#include <mesh_file.h>
+#include <reference_mesher.h>
+#include <vdb_file.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace sculpt::cli {
+
+namespace {
+
+struct MeshOptions {
+    std::string input;
+    std::string output;
+};
+
+void runMesh(const MeshOptions& o)
+{
+    meshFormatOf(o.output);
+    AtomicFile::checkTarget(o.output);
+    const FieldImage field = readFieldImage(o.input);
+    const TriangleMesh mesh = meshWithVolumeToMesh(field);
+    writeMesh(mesh, o.output);
+    std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, "
+              << mesh.triangles.size() << " triangles\n";
+}
+
+} // namespace
+
+void addMeshCommand(CLI::App& app)
+{
+    auto options = std::make_shared<MeshOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
+                "or rendering. The format follows the output's extension: .ply (binary, with\n"
+                "normals), .obj (text) or .stl (binary).");
+    cmd->add_option("input", options->input, "the .vdb document to mesh")->required();
+    cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
+    cmd->callback([options] { runMesh(*options); });
+}
+
+} // namespace sculpt::cli

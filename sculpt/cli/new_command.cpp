@@ -1,0 +1,71 @@
+#include "commands.h"
+
+#include <analytic_shapes.h>
+#include <atomic_file.h>
+#include <vdb_file.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace sculpt::cli {
+
+namespace {
+
+struct NewOptions {
+    std::string shape = "sphere";
+    double radius = 50.0;
+    double minorRadius = 0.0;  // 0: radius / 3
+    double voxelSize = 0.5;
+    std::string units = FieldImage::kDefaultUnits;
+    std::string output;
+};
+
+AnalyticSdf shapeSdf(const NewOptions& o)
+{
+    if (o.shape == "box") return boxSdf(o.radius);
+    if (o.shape == "torus") {
+        return torusSdf(o.radius, o.minorRadius > 0.0 ? o.minorRadius : o.radius / 3.0);
+    }
+    return sphereSdf(o.radius);
+}
+
+void runNew(const NewOptions& o)
+{
+    AtomicFile::checkTarget(o.output);
+    const AnalyticSdf shape = shapeSdf(o);
+    FieldImage field = rasterizeSdf(shape, o.voxelSize);
+    field.setUnits(o.units);
+    writeFieldImage(field, o.output);
+    std::cout << "wrote " << o.output << ": " << shape.description << " " << o.units
+              << ", voxel size " << o.voxelSize << " " << o.units << ", "
+              << field.grid().activeVoxelCount() << " active voxels\n";
+}
+
+} // namespace
+
+void addNewCommand(CLI::App& app)
+{
+    auto options = std::make_shared<NewOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "new", "Create a document holding a starting shape, centred at the origin.\n"
+               "The defaults give the clay ball a sculptor starts from.");
+    cmd->add_option("--shape", options->shape, "sphere, box or torus")
+        ->check(CLI::IsMember({"sphere", "box", "torus"}))
+        ->capture_default_str();
+    cmd->add_option("--radius", options->radius,
+                    "sphere radius, box half side, or torus major radius (world units)")
+        ->capture_default_str();
+    cmd->add_option("--minor-radius", options->minorRadius,
+                    "torus tube radius (default: radius / 3)");
+    cmd->add_option("--voxel-size", options->voxelSize,
+                    "edge of a voxel in world units: smaller is finer and costs more memory")
+        ->capture_default_str();
+    cmd->add_option("--units", options->units, "length unit recorded in the document")
+        ->capture_default_str();
+    cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    cmd->callback([options] { runNew(*options); });
+}
+
+} // namespace sculpt::cli

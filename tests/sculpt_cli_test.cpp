@@ -1,0 +1,134 @@
+// End to end: the `sculpt` program on a temporary directory, as a user runs it.
+
+#include "support/mesh_checks.h"
+#include "support/run_sculpt.h"
+#include "support/temp_dir.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace sculpt {
+namespace {
+
+using test::runSculpt;
+using test::TempDir;
+constexpr double kPi = 3.14159265358979323846;
+
+nlohmann::json infoJson(const TempDir& dir, const std::string& file)
+{
+    const auto r = runSculpt("info --json " + file, dir.path());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+}
+
+TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
+{
+    TempDir dir;
+    auto r = runSculpt("new -o clay.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("clay.vdb"), std::string::npos);
+
+    const auto info = infoJson(dir, "clay.vdb");
+    for (const char* key : {"voxel_size", "active_voxels", "memory_bytes", "bbox_min", "bbox_max",
+                            "volume", "area", "euler_characteristic", "components"}) {
+        EXPECT_TRUE(info.contains(key)) << key;
+    }
+    const double radius = info["bbox_max"][0].get<double>();
+    EXPECT_NEAR(info["volume"].get<double>(), 4.0 / 3.0 * kPi * std::pow(radius, 3), 0.01 * std::pow(radius, 3) * 4.2);
+    EXPECT_EQ(info["euler_characteristic"], 2);
+    EXPECT_EQ(info["components"], 1);
+
+    r = runSculpt("mesh clay.vdb -o clay.stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto vtk = test::vtkMeshReport(dir / "clay.stl");
+    EXPECT_EQ(vtk.boundaryEdges, 0);
+    EXPECT_NEAR(vtk.volume, info["volume"].get<double>(), 0.01 * info["volume"].get<double>());
+}
+
+TEST(SculptCli, NewHonoursShapeAndSizes)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --shape torus --radius 12 --minor-radius 3 --voxel-size 0.25 -o t.vdb",
+                        dir.path()).exitCode, 0);
+    const auto torus = infoJson(dir, "t.vdb");
+    EXPECT_EQ(torus["euler_characteristic"], 0);
+    EXPECT_DOUBLE_EQ(torus["voxel_size"].get<double>(), 0.25);
+    EXPECT_NEAR(torus["volume"].get<double>(), 2.0 * kPi * kPi * 12.0 * 9.0, 0.01 * 2132.0);
+    EXPECT_NEAR(torus["bbox_max"][0].get<double>(), 15.0, 0.05);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 4 --voxel-size 0.25 -o b.vdb", dir.path()).exitCode, 0);
+    const auto box = infoJson(dir, "b.vdb");
+    EXPECT_NEAR(box["volume"].get<double>(), 512.0, 5.12);
+    EXPECT_EQ(box["euler_characteristic"], 2);
+}
+
+TEST(SculptCli, TextInfoNamesEveryMeasure)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("info s.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* label : {"voxel size", "active voxels", "memory", "bounding box", "volume",
+                              "area", "euler characteristic", "components"}) {
+        EXPECT_NE(r.out.find(label), std::string::npos) << label;
+    }
+}
+
+struct BadCall {
+    const char* args;
+    const char* mentions;  // the message must name what is wrong
+};
+
+void PrintTo(const BadCall& call, std::ostream* os) { *os << "sculpt " << call.args; }
+
+class SculptCliBadInput : public ::testing::TestWithParam<BadCall> {};
+
+TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o good.vdb", dir.path()).exitCode, 0);
+    std::ofstream(dir / "corrupt.vdb") << "garbage that is not a vdb";
+    const auto before = dir.entries();
+
+    const auto r = runSculpt(GetParam().args, dir.path());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find(GetParam().mentions), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(dir.entries(), before);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Calls, SculptCliBadInput,
+    ::testing::Values(BadCall{"info missing.vdb", "missing.vdb"},
+                      BadCall{"info corrupt.vdb", "corrupt.vdb"},
+                      BadCall{"mesh corrupt.vdb -o out.ply", "corrupt.vdb"},
+                      BadCall{"mesh good.vdb -o out.xyz", "out.xyz"},
+                      BadCall{"mesh good.vdb -o nodir/out.ply", "nodir"},
+                      BadCall{"new --voxel-size 0 -o out.vdb", "voxel size"},
+                      BadCall{"new --voxel-size -1 -o out.vdb", "voxel size"},
+                      BadCall{"new --radius 1e5 --voxel-size 0.001 -o out.vdb", "memory"},
+                      BadCall{"new --shape cone -o out.vdb", "cone"},
+                      BadCall{"new -o nodir/out.vdb", "nodir"},
+                      BadCall{"frobnicate", "frobnicate"},
+                      BadCall{"", "ubcommand"}),
+    [](const auto& info) { return "case" + std::to_string(info.index); });
+
+TEST(SculptCli, HelpExplainsEveryCommand)
+{
+    TempDir dir;
+    for (const char* command : {"new", "info", "mesh"}) {
+        const auto r = runSculpt(std::string(command) + " --help", dir.path());
+        EXPECT_EQ(r.exitCode, 0);
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
+    }
+    const auto r = runSculpt("new --help", dir.path());
+    EXPECT_NE(r.out.find("--voxel-size FLOAT=0.5"), std::string::npos) << r.out;
+}
+
+} // namespace
+} // namespace sculpt

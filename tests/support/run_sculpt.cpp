@@ -1,0 +1,38 @@
+#include "run_sculpt.h"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace sculpt::test {
+
+namespace {
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+} // namespace
+
+CommandResult runSculpt(const std::string& args, const std::string& workDir)
+{
+    const std::string outFile = workDir + "/.stdout", errFile = workDir + "/.stderr";
+    const std::string command = "cd '" + workDir + "' && '" SCULPT_EXECUTABLE "' " + args +
+                                " >'" + outFile + "' 2>'" + errFile + "' </dev/null";
+    const int status = std::system(command.c_str());
+    CommandResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = slurp(outFile);
+    result.err = slurp(errFile);
+    std::remove(outFile.c_str());
+    std::remove(errFile.c_str());
+    return result;
+}
+
+} // namespace sculpt::test

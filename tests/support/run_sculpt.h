@@ -1,0 +1,18 @@
+#pragma once
+/// @file run_sculpt.h
+/// @brief Runs the real `sculpt` executable (path from the build) for end-to-end tests.
+
+#include <string>
+
+namespace sculpt::test {
+
+struct CommandResult {
+    int exitCode = -1;
+    std::string out;  ///< standard output
+    std::string err;  ///< standard error
+};
+
+/// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
+CommandResult runSculpt(const std::string& args, const std::string& workDir);
+
+} // namespace sculpt::test
