@@ -1,13 +1,14 @@
 // Exported meshes, re-read by VTK: closed, 2-manifold, enclosing the grid's volume.
 
 #include "support/mesh_checks.h"
+#include "support/reference_mesher.h"
 #include "support/temp_dir.h"
 
 #include <analytic_shapes.h>
 #include <errors.h>
 #include <field_measures.h>
+#include <incremental_mesher.h>
 #include <mesh_file.h>
-#include <reference_mesher.h>
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,7 @@ TEST_P(MeshFileFormats, ExportIsClosedAndKeepsVolume)
 {
     TempDir dir;
     const FieldImage torus = makeTorus(10.0, 4.0, 0.5);
-    const TriangleMesh mesh = meshWithVolumeToMesh(torus);
+    const TriangleMesh mesh = meshLevelSet(torus);
     const auto path = dir / ("torus" + GetParam());
     writeMesh(mesh, path);
 
@@ -40,7 +41,7 @@ INSTANTIATE_TEST_SUITE_P(AllFormats, MeshFileFormats, ::testing::Values(".ply", 
 
 TEST(MeshFile, ReferenceMeshIsOrientedOutwards)
 {
-    const TriangleMesh mesh = meshWithVolumeToMesh(makeSphere(10.0, 1.0));
+    const TriangleMesh mesh = test::meshWithVolumeToMesh(makeSphere(10.0, 1.0));
     const test::MeshTopology topology = test::meshTopology(mesh);
     EXPECT_TRUE(topology.closedManifold());
     EXPECT_EQ(topology.eulerCharacteristic(), 2);
@@ -59,7 +60,7 @@ TEST(MeshFile, FormatFollowsExtension)
 TEST(MeshFile, MissingDirectoryIsAnInputError)
 {
     TempDir dir;
-    const TriangleMesh mesh = meshWithVolumeToMesh(makeSphere(5.0, 1.0));
+    const TriangleMesh mesh = meshLevelSet(makeSphere(5.0, 1.0));
     EXPECT_THROW(writeMesh(mesh, dir / "missing" / "a.ply"), InputError);
     EXPECT_TRUE(dir.entries().empty());
 }

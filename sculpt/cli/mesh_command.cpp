@@ -1,8 +1,8 @@
 #include "commands.h"
 
 #include <atomic_file.h>
+#include <incremental_mesher.h>
 #include <mesh_file.h>
-#include <reference_mesher.h>
 #include <vdb_file.h>
 
 #include <CLI/CLI.hpp>
@@ -24,7 +24,7 @@ void runMesh(const MeshOptions& o)
     meshFormatOf(o.output);
     AtomicFile::checkTarget(o.output);
     const FieldImage field = readFieldImage(o.input);
-    const TriangleMesh mesh = meshWithVolumeToMesh(field);
+    const TriangleMesh mesh = meshLevelSet(field);
     writeMesh(mesh, o.output);
     std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, "
               << mesh.triangles.size() << " triangles\n";

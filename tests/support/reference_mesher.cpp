@@ -2,7 +2,7 @@
 
 #include <openvdb/tools/VolumeToMesh.h>
 
-namespace sculpt {
+namespace sculpt::test {
 
 TriangleMesh meshWithVolumeToMesh(const FieldImage& field)
 {
@@ -31,4 +31,4 @@ TriangleMesh meshWithVolumeToMesh(const FieldImage& field)
     return mesh;
 }
 
-} // namespace sculpt
+} // namespace sculpt::test

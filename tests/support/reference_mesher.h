@@ -5,13 +5,13 @@
 /// One shared-vertex mesh of the zero iso-surface. Kept as the reference our own mesher is
 /// measured against.
 
-#include "field_image.h"
-#include "triangle_mesh.h"
+#include <field_image.h>
+#include <triangle_mesh.h>
 
-namespace sculpt {
+namespace sculpt::test {
 
 /// Meshes the zero iso-surface with openvdb::tools::volumeToMesh; quads are split along their
 /// shorter diagonal. Cost: linear in the band size.
 TriangleMesh meshWithVolumeToMesh(const FieldImage& field);
 
-} // namespace sculpt
+} // namespace sculpt::test

@@ -1,0 +1,20 @@
+#include "grid_builders.h"
+
+namespace sculpt::test {
+
+FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values)
+{
+    auto grid = openvdb::FloatGrid::create(3.0f);
+    grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::CoordBBox box;
+    for (const auto& [ijk, value] : values) box.expand(ijk);
+    box.expand(1);
+    auto acc = grid->getAccessor();
+    for (auto it = box.begin(); it != box.end(); ++it) {
+        const auto found = values.find(*it);
+        acc.setValueOn(*it, found == values.end() ? 1.0f : found->second);
+    }
+    return FieldImage(grid);
+}
+
+} // namespace sculpt::test

@@ -1,0 +1,16 @@
+#pragma once
+/// @file grid_builders.h
+/// @brief Hand-made level sets for tests: a few explicit voxel values in an outside field.
+
+#include <field_image.h>
+
+#include <map>
+
+namespace sculpt::test {
+
+/// A level set (voxel size 1, background 3) whose voxels in `values` hold the given values and
+/// every other voxel in the box around them holds +1: explicit corners surrounded by outside, so
+/// the surface closes in the neighbouring cells.
+FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values);
+
+} // namespace sculpt::test
