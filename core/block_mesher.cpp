@@ -35,12 +35,13 @@ struct BlockMesher::Scratch {
     std::vector<std::uint8_t> inside;  // N^3: sample < iso
     std::vector<std::uint32_t> slot;   // N^3 * 4: vertex of each edge (3 axes) and cell centre
     std::vector<std::uint8_t> cubes;   // B^3: sign configuration of each cell
-    std::vector<std::uint8_t> rowHasSurface;  // B^2: some cell of row (x, y) is cut
+    std::vector<std::uint8_t> rowHasSurface;  // B^2: some cell of row (x, y) may be cut
+    std::vector<std::uint8_t> columnSigns;    // N^2: bit 0 some voxel inside, bit 1 some outside
 
     explicit Scratch(int blockVoxels)
         : B(blockVoxels), S(blockVoxels + 3), N(blockVoxels + 1), values(size_t(S) * S * S),
           inside(size_t(N) * N * N), slot(size_t(N) * N * N * 4), cubes(size_t(B) * B * B),
-          rowHasSurface(size_t(B) * B)
+          rowHasSurface(size_t(B) * B), columnSigns(size_t(N) * N)
     {
     }
 
@@ -83,37 +84,42 @@ void BlockMesher::Scratch::gather(const openvdb::FloatTree& tree, const openvdb:
 
 bool BlockMesher::Scratch::classify()
 {
-    int count = 0;
+    int insideCount = 0;
     for (int x = 0; x < N; ++x) {
         for (int y = 0; y < N; ++y) {
             const float* row = &values[size_t(((x + 1) * S + (y + 1)) * S + 1)];
             std::uint8_t* flags = &inside[size_t((x * N + y) * N)];
+            int count = 0;
             for (int z = 0; z < N; ++z) {
                 flags[z] = row[z] < 0.0f;
                 count += flags[z];
             }
+            columnSigns[size_t(x * N + y)] = std::uint8_t((count > 0 ? 1 : 0) | (count < N ? 2 : 0));
+            insideCount += count;
         }
     }
-    return count > 0 && count < N * N * N;
+    return insideCount > 0 && insideCount < N * N * N;
 }
 
 void BlockMesher::Scratch::configureCells()
 {
     for (int x = 0; x < B; ++x) {
         for (int y = 0; y < B; ++y) {
+            // A row of cells is cut only if its four voxel columns hold both signs.
+            const int signs = columnSigns[size_t(x * N + y)] | columnSigns[size_t((x + 1) * N + y)] |
+                              columnSigns[size_t(x * N + y + 1)] | columnSigns[size_t((x + 1) * N + y + 1)];
+            rowHasSurface[size_t(x * B + y)] = signs == 3;
+            if (signs != 3) continue;
             const std::uint8_t* c0 = &inside[size_t((x * N + y) * N)];
             const std::uint8_t* c1 = &inside[size_t(((x + 1) * N + y) * N)];
             const std::uint8_t* c2 = &inside[size_t((x * N + y + 1) * N)];
             const std::uint8_t* c3 = &inside[size_t(((x + 1) * N + y + 1) * N)];
             std::uint8_t* row = &cubes[size_t((x * B + y) * B)];
-            bool cut = false;
             for (int z = 0; z < B; ++z) {  // corner c has offset bits (x, y, z) = (c&1, c>>1&1, c>>2)
                 const int low = c0[z] | c1[z] << 1 | c2[z] << 2 | c3[z] << 3;
                 const int high = c0[z + 1] | c1[z + 1] << 1 | c2[z + 1] << 2 | c3[z + 1] << 3;
                 row[z] = std::uint8_t(low | high << 4);
-                cut |= row[z] != 0 && row[z] != 255;
             }
-            rowHasSurface[size_t(x * B + y)] = cut;
         }
     }
 }

@@ -1,6 +1,6 @@
 #include "mesh_welder.h"
 
-#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <limits>
@@ -48,17 +48,21 @@ struct Welder {
         return vertexOffset[b] + std::uint32_t(found - keys.begin());
     }
 
-    void copyBlock(size_t b, TriangleMesh& out) const
+    /// Copies block b's owned vertices and its triangles; false if a vertex had no owner.
+    bool copyBlock(size_t b, TriangleMesh& out, std::vector<std::uint32_t>& global) const
     {
         const BlockMesh& mesh = *meshes[b];
         std::copy_n(mesh.positions.begin(), mesh.ownedCount, out.positions.begin() + vertexOffset[b]);
         std::copy_n(mesh.normals.begin(), mesh.ownedCount, out.normals.begin() + vertexOffset[b]);
-        std::vector<std::uint32_t> global(mesh.keys.size());
+        global.resize(mesh.keys.size());
+        bool complete = true;
         for (std::uint32_t j = 0; j < global.size(); ++j) {
             global[j] = j < mesh.ownedCount ? vertexOffset[b] + j : lookup(mesh.keys[j]);
+            complete = complete && global[j] != kMissing;
         }
         auto dst = out.triangles.begin() + triangleOffset[b];
         for (const auto& tri : mesh.triangles) *dst++ = {global[tri[0]], global[tri[1]], global[tri[2]]};
+        return complete;
     }
 
     /// Serial pass: append vertices whose owner block did not produce them.
@@ -93,12 +97,14 @@ TriangleMesh weldBlocks(const std::map<openvdb::Coord, BlockMesh>& blocks, int b
     out.positions.resize(welder.vertexOffset.back());
     out.normals.resize(welder.vertexOffset.back());
     out.triangles.resize(welder.triangleOffset.back());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, welder.meshes.size()), [&](const auto& r) {
-        for (size_t b = r.begin(); b < r.end(); ++b) welder.copyBlock(b, out);
-    });
-    const bool complete = std::none_of(out.triangles.begin(), out.triangles.end(), [](const auto& t) {
-        return t[0] == kMissing || t[1] == kMissing || t[2] == kMissing;
-    });
+    const bool complete = tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, welder.meshes.size()), true,
+        [&](const auto& r, bool ok) {
+            std::vector<std::uint32_t> global;
+            for (size_t b = r.begin(); b < r.end(); ++b) ok = welder.copyBlock(b, out, global) && ok;
+            return ok;
+        },
+        [](bool a, bool b) { return a && b; });
     if (!complete) welder.addOrphans(out);
     return out;
 }
