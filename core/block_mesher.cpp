@@ -1,5 +1,6 @@
 #include "block_mesher.h"
 
+#include "dense_gather.h"
 #include "marching_cubes_table.h"
 
 #include <algorithm>
@@ -10,10 +11,7 @@ namespace sculpt {
 
 namespace {
 
-using LeafT = openvdb::FloatTree::LeafNodeType;
-constexpr int kLeafDim = int(LeafT::DIM);
-
-int floorToLeaf(int v) { return v & ~(kLeafDim - 1); }
+constexpr int kLeafDim = int(openvdb::FloatTree::LeafNodeType::DIM);
 
 /// A voxel exactly on the iso-value would put the vertices of all its crossing edges on one
 /// point: zero-area triangles that merge into non-manifold edges when a tool welds by position.
@@ -54,32 +52,7 @@ struct BlockMesher::Scratch {
 
 void BlockMesher::Scratch::gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin)
 {
-    const openvdb::Coord lo = origin.offsetBy(-1), hi = origin.offsetBy(B + 1);
-    openvdb::tree::ValueAccessor<const openvdb::FloatTree> acc(tree);
-    for (int lx = floorToLeaf(lo.x()); lx <= hi.x(); lx += kLeafDim) {
-        for (int ly = floorToLeaf(lo.y()); ly <= hi.y(); ly += kLeafDim) {
-            for (int lz = floorToLeaf(lo.z()); lz <= hi.z(); lz += kLeafDim) {
-                const openvdb::Coord leafOrigin(lx, ly, lz);
-                const LeafT* leaf = acc.probeConstLeaf(leafOrigin);
-                const float tile = leaf ? 0.0f : acc.getValue(leafOrigin);
-                const float* data = leaf ? leaf->buffer().data() : nullptr;
-                const int x0 = std::max(lx, lo.x()), x1 = std::min(lx + kLeafDim - 1, hi.x());
-                const int y0 = std::max(ly, lo.y()), y1 = std::min(ly + kLeafDim - 1, hi.y());
-                const int z0 = std::max(lz, lo.z()), z1 = std::min(lz + kLeafDim - 1, hi.z());
-                for (int x = x0; x <= x1; ++x) {
-                    for (int y = y0; y <= y1; ++y) {
-                        float* dst = &values[size_t(((x - lo.x()) * S + (y - lo.y())) * S + (z0 - lo.z()))];
-                        if (!data) {
-                            std::fill(dst, dst + (z1 - z0 + 1), tile);
-                            continue;
-                        }
-                        const float* src = data + LeafT::coordToOffset(openvdb::Coord(x, y, z0));
-                        std::copy(src, src + (z1 - z0 + 1), dst);
-                    }
-                }
-            }
-        }
-    }
+    gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-1), origin.offsetBy(B + 1)), values.data());
 }
 
 bool BlockMesher::Scratch::classify()

@@ -1,0 +1,424 @@
+#include "level_set_evolution.h"
+
+#include "dense_gather.h"
+#include "errors.h"
+#include "text_format.h"
+
+#include <openvdb/math/FiniteDifference.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/LevelSetTracker.h>
+#include <openvdb/tools/SignedFloodFill.h>
+#include <openvdb/tree/LeafManager.h>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <array>
+#include <cmath>
+
+namespace sculpt {
+
+namespace {
+
+using LeafT = openvdb::FloatTree::LeafNodeType;
+using LeafValues = std::array<float, LeafT::SIZE>;
+constexpr int kApron = 3;  // WENO5 reads three voxels on each side
+constexpr int kDim = int(LeafT::DIM) + 2 * kApron;
+constexpr double kVolumeIntegralGain = 0.3;
+
+/// A leaf and its apron, densely: at(x, y, z) for leaf-local x, y, z in [-3, 10].
+struct LeafStencil {
+    std::array<float, kDim * kDim * kDim> v;
+    float at(int x, int y, int z) const { return v[size_t(((x + kApron) * kDim + (y + kApron)) * kDim + (z + kApron))]; }
+    void gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin)
+    {
+        gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-kApron), origin.offsetBy(LeafT::DIM - 1 + kApron)), v.data());
+    }
+};
+
+/// What every voxel of one step needs to know, fixed for the step.
+struct StepConstants {
+    double h, invH;
+    GradientScheme scheme;
+    const openvdb::FloatTree* target = nullptr;
+    float alpha = 0.0f, clampWorld = 0.0f;
+    double beta = 0.0;
+    double volumeSpeed = 0.0;  // uniform part of the speed: volume control plus offset
+    std::optional<LocalTerm> local;
+    std::optional<MotionRegion> region;
+    const openvdb::math::Transform* xform;
+};
+
+/// One-sided differences along `axis` at (x, y, z): minus and plus.
+void oneSided(const LeafStencil& s, int x, int y, int z, int axis, GradientScheme scheme,
+              double invH, double& minus, double& plus)
+{
+    auto f = [&](int k) {
+        return s.at(x + (axis == 0) * k, y + (axis == 1) * k, z + (axis == 2) * k);
+    };
+    if (scheme == GradientScheme::FirstOrder) {
+        minus = (f(0) - f(-1)) * invH;
+        plus = (f(1) - f(0)) * invH;
+        return;
+    }
+    // Slopes, not differences: WENO5's smoothness epsilon assumes values of order one.
+    double d[6];
+    for (int k = 0; k < 6; ++k) d[k] = (f(k - 2) - f(k - 3)) * invH;
+    minus = openvdb::math::WENO5(d[0], d[1], d[2], d[3], d[4]);
+    plus = openvdb::math::WENO5(d[5], d[4], d[3], d[2], d[1]);
+}
+
+/// Mean-curvature flow term kappa |grad phi| by central differences (zero where grad vanishes).
+double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
+{
+    const double f = s.at(x, y, z);
+    const double dx = 0.5 * (s.at(x + 1, y, z) - s.at(x - 1, y, z)), dy = 0.5 * (s.at(x, y + 1, z) - s.at(x, y - 1, z)),
+                 dz = 0.5 * (s.at(x, y, z + 1) - s.at(x, y, z - 1));
+    const double dxx = s.at(x + 1, y, z) - 2 * f + s.at(x - 1, y, z), dyy = s.at(x, y + 1, z) - 2 * f + s.at(x, y - 1, z),
+                 dzz = s.at(x, y, z + 1) - 2 * f + s.at(x, y, z - 1);
+    const double dxy = 0.25 * (s.at(x + 1, y + 1, z) - s.at(x + 1, y - 1, z) - s.at(x - 1, y + 1, z) + s.at(x - 1, y - 1, z));
+    const double dxz = 0.25 * (s.at(x + 1, y, z + 1) - s.at(x + 1, y, z - 1) - s.at(x - 1, y, z + 1) + s.at(x - 1, y, z - 1));
+    const double dyz = 0.25 * (s.at(x, y + 1, z + 1) - s.at(x, y + 1, z - 1) - s.at(x, y - 1, z + 1) + s.at(x, y - 1, z - 1));
+    const double g2 = dx * dx + dy * dy + dz * dz;
+    if (g2 < 1e-12) return 0.0;
+    const double num = dx * dx * (dyy + dzz) + dy * dy * (dxx + dzz) + dz * dz * (dxx + dyy) -
+                       2.0 * (dx * dy * dxy + dx * dz * dxz + dy * dz * dyz);
+    return num / g2 * invH * invH;  // differences carry h: num ~ h^4, g2 ~ h^2
+}
+
+/// The right-hand side dphi/dt at one voxel.
+class VoxelRate {
+public:
+    explicit VoxelRate(const StepConstants& c) : c(c)
+    {
+        if (c.target) mTarget.emplace(*c.target);
+    }
+
+    /// nullopt if the voxel is outside the region and must not move.
+    std::optional<double> operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    {
+        openvdb::Vec3d world;
+        if (c.region || c.local) world = c.xform->indexToWorld(ijk);
+        if (c.region && (world - c.region->centreWorld).lengthSqr() > c.region->radiusWorld * c.region->radiusWorld) {
+            return std::nullopt;
+        }
+        double speed = c.volumeSpeed;
+        if (mTarget) speed -= c.alpha * std::clamp(mTarget->getValue(ijk), -c.clampWorld, c.clampWorld);
+        if (c.local) {
+            const double q = (world - c.local->centreWorld).lengthSqr() / (c.local->radiusWorld * c.local->radiusWorld);
+            if (q < 1.0) speed += c.local->speedWorld * (1.0 - q) * (1.0 - q);
+        }
+        double rate = 0.0;
+        if (speed != 0.0) {
+            openvdb::Vec3d minus, plus;
+            for (int axis = 0; axis < 3; ++axis) oneSided(s, x, y, z, axis, c.scheme, c.invH, minus[axis], plus[axis]);
+            rate -= speed * std::sqrt(openvdb::math::GodunovsNormSqrd(speed > 0.0, minus, plus));
+        }
+        if (c.beta > 0.0) rate += c.beta * curvatureNormGrad(s, x, y, z, c.invH);
+        return rate;
+    }
+
+private:
+    const StepConstants& c;
+    std::optional<openvdb::tree::ValueAccessor<const openvdb::FloatTree>> mTarget;
+};
+
+/// One explicit Euler stage over every leaf: out[i] = phi + dt * rate (inactive voxels kept).
+/// Returns the largest change of a voxel near the surface (|phi| < h), i.e. how far it moved.
+double eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves,
+                  const StepConstants& c, double dt, std::vector<LeafValues>& out)
+{
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, leaves.size()), 0.0,
+        [&](const tbb::blocked_range<size_t>& r, double moved) {
+            LeafStencil stencil;
+            VoxelRate rate(c);
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                const LeafT& leaf = *leaves[i];
+                std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
+                if (leaf.isEmpty()) continue;
+                stencil.gather(tree, leaf.origin());
+                for (auto it = leaf.cbeginValueOn(); it; ++it) {
+                    const openvdb::Coord local = it.getCoord() - leaf.origin();
+                    const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
+                    if (!dphi) continue;
+                    out[i][it.pos()] = float(*it + dt * *dphi);
+                    if (std::abs(*it) < c.h) moved = std::max(moved, std::abs(dt * *dphi));
+                }
+            }
+            return moved;
+        },
+        [](double a, double b) { return std::max(a, b); });
+}
+
+void writeLeaves(const std::vector<LeafT*>& leaves, const std::vector<LeafValues>& values, float background)
+{
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            float* dst = leaves[i]->buffer().data();
+            for (size_t k = 0; k < LeafT::SIZE; ++k) dst[k] = std::clamp(values[i][k], -background, background);
+        }
+    });
+}
+
+std::vector<LeafT*> leafList(openvdb::FloatTree& tree)
+{
+    std::vector<LeafT*> leaves;
+    leaves.reserve(tree.leafCount());
+    for (auto it = tree.beginLeaf(); it; ++it) leaves.push_back(it.getLeaf());
+    return leaves;
+}
+
+void validateTerms(const MotionTerms& t, const FieldImage& field)
+{
+    auto finiteNonNegative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+    if (t.smooth && !finiteNonNegative(t.smooth->beta)) throw InputError("smoothing coefficient must be >= 0");
+    if (t.target) {
+        if (!t.target->target) throw InputError("no target shape given");
+        if (!finiteNonNegative(t.target->alpha)) throw InputError("target speed must be >= 0");
+        const double targetH = t.target->target->transform().voxelSize()[0];
+        if (std::abs(targetH - field.voxelSize()) > 1e-9 * field.voxelSize()) {
+            throw InputError("the target's voxel size " + formatNumber(targetH) + " differs from " +
+                             formatNumber(field.voxelSize()) + "; resample it first");
+        }
+    }
+    if (t.local && !(t.local->radiusWorld > 0.0 && std::isfinite(t.local->speedWorld))) {
+        throw InputError("local speed needs a positive radius and a finite speed");
+    }
+    if (t.uniform && !std::isfinite(t.uniform->speedWorld)) throw InputError("offset speed must be finite");
+    if (t.volume && !(finiteNonNegative(t.volume->targetVolume) && finiteNonNegative(t.volume->gamma))) {
+        throw InputError("volume control needs a non-negative target volume and gain");
+    }
+}
+
+/// One TVD-RK2 (Heun) step over every leaf of `grid`; returns how far the surface moved at most.
+double rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
+{
+    auto& tree = grid.tree();
+    const auto leaves = leafList(tree);
+    std::vector<LeafValues> phi0(leaves.size()), stage(leaves.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            std::copy(leaves[i]->buffer().data(), leaves[i]->buffer().data() + LeafT::SIZE, phi0[i].begin());
+        }
+    });
+    const double moved = eulerStage(tree, leaves, c, dt, stage);
+    writeLeaves(leaves, stage, grid.background());
+    eulerStage(tree, leaves, c, dt, stage);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            for (size_t k = 0; k < LeafT::SIZE; ++k) stage[i][k] = 0.5f * (phi0[i][k] + stage[i][k]);
+        }
+    });
+    writeLeaves(leaves, stage, grid.background());
+    return moved;
+}
+
+void trackGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
+{
+    openvdb::tools::LevelSetTracker<openvdb::FloatGrid> tracker(grid);
+    tracker.setSpatialScheme(o.scheme == GradientScheme::Weno5 ? openvdb::math::HJWENO5_BIAS
+                                                               : openvdb::math::FIRST_BIAS);
+    tracker.setTemporalScheme(openvdb::math::TVD_RK1);
+    tracker.setNormCount(o.normalizeIterations);
+    tracker.track();
+}
+
+/// Origins of the leaves whose box comes within `reach` of the region's ball.
+std::vector<openvdb::Coord> leavesNear(const openvdb::FloatGrid& grid, const MotionRegion& region, double reach)
+{
+    const auto& xform = grid.transform();
+    const double radius = region.radiusWorld + reach;
+    const openvdb::Coord lo = xform.worldToIndexCellCentered(region.centreWorld - openvdb::Vec3d(radius));
+    const openvdb::Coord hi = xform.worldToIndexCellCentered(region.centreWorld + openvdb::Vec3d(radius));
+    const openvdb::Vec3d centre = xform.worldToIndex(region.centreWorld);
+    const double radiusVoxels = radius / xform.voxelSize()[0];
+    std::vector<openvdb::Coord> origins;
+    for (int x = lo.x() & ~7; x <= hi.x(); x += 8)
+        for (int y = lo.y() & ~7; y <= hi.y(); y += 8)
+            for (int z = lo.z() & ~7; z <= hi.z(); z += 8) {
+                openvdb::Vec3d nearest;
+                for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(openvdb::Coord(x, y, z)[a]), double(openvdb::Coord(x, y, z)[a] + 7));
+                if ((nearest - centre).lengthSqr() <= radiusVoxels * radiusVoxels) origins.emplace_back(x, y, z);
+            }
+    return origins;
+}
+
+/// A small grid reproducing `grid` exactly on the given leaf positions (leaves and tiles).
+openvdb::FloatGrid::Ptr extractLeaves(const openvdb::FloatGrid& grid, const std::vector<openvdb::Coord>& origins)
+{
+    auto sub = openvdb::FloatGrid::create(grid.background());
+    sub->setTransform(grid.transform().copy());
+    sub->setGridClass(openvdb::GRID_LEVEL_SET);
+    auto acc = grid.getConstAccessor();
+    for (const auto& origin : origins) {
+        if (const LeafT* leaf = acc.probeConstLeaf(origin)) {
+            sub->tree().addLeaf(new LeafT(*leaf));
+        } else {
+            sub->tree().addTile(1, origin, acc.getValue(origin), false);
+        }
+    }
+    return sub;
+}
+
+/// Copies the sub-grid's voxels within the ball (centre, reach) back into `grid`, over the given
+/// leaves; voxels outside the ball keep their values, so nothing beyond it changes.
+DirtyRegion copyBack(openvdb::FloatGrid& grid, const openvdb::FloatGrid& sub, const std::vector<openvdb::Coord>& origins,
+                     const MotionRegion& ball)
+{
+    DirtyRegion touched;
+    auto acc = grid.getAccessor();
+    auto subAcc = sub.getConstAccessor();
+    const openvdb::Vec3d centre = grid.transform().worldToIndex(ball.centreWorld);
+    const double reach = ball.radiusWorld / grid.voxelSize()[0];
+    for (const auto& origin : origins) {
+        const LeafT* from = subAcc.probeConstLeaf(origin);
+        LeafT* to = from ? acc.touchLeaf(origin) : acc.probeLeaf(origin);
+        if (!to) continue;  // neither grid has voxels here: only tiles, which the step never moves
+        bool changed = false;
+        for (auto it = to->beginValueAll(); it; ++it) {
+            if ((it.getCoord().asVec3d() - centre).lengthSqr() > reach * reach) continue;
+            const float value = subAcc.getValue(it.getCoord());
+            const bool active = subAcc.isValueOn(it.getCoord());
+            if (value == *it && active == it.isValueOn()) continue;
+            it.setValue(value);
+            it.setValueOn(active);
+            changed = true;
+        }
+        if (changed) touched.addVoxel(origin);
+    }
+    return touched;
+}
+
+DirtyRegion allLeaves(const openvdb::FloatTree& tree)
+{
+    DirtyRegion region;
+    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
+    return region;
+}
+
+} // namespace
+
+LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
+                                     std::optional<MotionRegion> region)
+    : mField(field), mTerms(std::move(terms)), mOptions(options), mRegion(region)
+{
+    validateTerms(mTerms, field);
+    if (mTerms.target && mTerms.target->clampWorld <= 0.0) {
+        mTerms.target->clampWorld = mTerms.target->target->background();
+    }
+    if (!(mOptions.cfl > 0.0 && mOptions.cfl <= 1.0)) throw InputError("CFL number must be in (0, 1]");
+}
+
+double LevelSetEvolution::maxAdvectionSpeed() const
+{
+    double speed = std::abs(mVolumeSpeed);
+    if (mTerms.target) speed += mTerms.target->alpha * mTerms.target->clampWorld;
+    if (mTerms.local) speed += std::abs(mTerms.local->speedWorld);
+    if (mTerms.uniform) speed += std::abs(mTerms.uniform->speedWorld);
+    return speed;
+}
+
+double LevelSetEvolution::stableTimeStep() const
+{
+    const double h = mField.voxelSize();
+    double dt = std::numeric_limits<double>::infinity();
+    const double speed = maxAdvectionSpeed();
+    if (speed > 0.0) dt = mOptions.cfl * h / speed;
+    if (mTerms.smooth && mTerms.smooth->beta > 0.0) dt = std::min(dt, h * h / (6.0 * mTerms.smooth->beta));
+    return dt;
+}
+
+double LevelSetEvolution::step(double maxDt)
+{
+    mVolumeSpeed = 0.0;
+    double dt = std::min(maxDt, stableTimeStep());
+    if (!std::isfinite(dt)) return 0.0;  // no term moves anything
+    if (mTerms.volume) {
+        openvdb::tools::LevelSetMeasure<openvdb::FloatGrid> measure(mField.grid());
+        const double area = measure.area(true), volume = measure.volume(true);
+        if (area > 0.0) {
+            // Proportional-integral control: the integral cancels the steady loss that
+            // curvature flow and renormalisation cause every step.
+            const double error = mTerms.volume->targetVolume - volume;
+            mVolumeErrorSum += error;
+            const double correction = mTerms.volume->gamma * error + kVolumeIntegralGain * mVolumeErrorSum;
+            const double limit = mOptions.cfl * mField.voxelSize() / dt;
+            mVolumeSpeed = std::clamp(correction / (area * dt), -limit, limit);
+            dt = std::min(maxDt, stableTimeStep());
+        }
+    }
+    applyStep(dt);
+    mTime += dt;
+    ++mSteps;
+    return dt;
+}
+
+void LevelSetEvolution::applyStep(double dt)
+{
+    openvdb::FloatGrid& grid = mField.mutableGrid();
+    StepConstants c;
+    c.h = mField.voxelSize();
+    c.invH = 1.0 / c.h;
+    c.scheme = mOptions.scheme;
+    if (mTerms.target) {
+        c.target = &mTerms.target->target->tree();
+        c.alpha = float(mTerms.target->alpha);
+        c.clampWorld = float(mTerms.target->clampWorld);
+    }
+    c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
+    c.volumeSpeed = mVolumeSpeed + (mTerms.uniform ? mTerms.uniform->speedWorld : 0.0);
+    c.local = mTerms.local;
+    c.region = mRegion;
+    c.xform = &grid.transform();
+
+    // Curvature flow diffuses the band's edge inwards by sqrt(2 beta t): rebuild before it
+    // travels a voxel, as well as before the surface may have moved trackDistance.
+    mDiffusedSinceTrack += c.beta * dt;
+    const auto trackDue = [&] {
+        return mMovedSinceTrack >= mOptions.trackDistanceVoxels * c.h ||
+               mDiffusedSinceTrack >= mOptions.trackDiffusionVoxels2 * c.h * c.h;
+    };
+    if (!mRegion) {
+        DirtyRegion touched = allLeaves(grid.tree());
+        mMovedSinceTrack += rk2Step(grid, c, dt);
+        if (trackDue()) {
+            mDiffusedSinceTrack = 0.0;
+            trackGrid(grid, mOptions);
+            mMovedSinceTrack = 0.0;
+            touched.merge(allLeaves(grid.tree()));
+        }
+        mField.markDirty(touched);
+        return;
+    }
+    // Local: move a copy of the leaves around the region, track it there, copy the inside back.
+    const double band = grid.background();
+    const auto inner = leavesNear(grid, *mRegion, band + c.h);
+    const auto outer = leavesNear(grid, *mRegion, band + c.h + 8.0 * c.h + kApron * c.h);
+    auto sub = extractLeaves(grid, outer);
+    mMovedSinceTrack += rk2Step(*sub, c, dt);
+    if (trackDue()) {
+        mDiffusedSinceTrack = 0.0;
+        trackGrid(*sub, mOptions);
+        mMovedSinceTrack = 0.0;
+    }
+    mField.markDirty(copyBack(grid, *sub, inner, {mRegion->centreWorld, mRegion->radiusWorld + band + c.h}));
+}
+
+void LevelSetEvolution::track()
+{
+    trackGrid(mField.mutableGrid(), mOptions);
+    mMovedSinceTrack = 0.0;
+    mDiffusedSinceTrack = 0.0;
+    mField.markDirty(allLeaves(mField.grid().tree()));
+}
+
+void LevelSetEvolution::advance(double duration)
+{
+    const double end = mTime + duration;
+    while (mTime < end) {
+        if (step(end - mTime) <= 0.0) break;
+    }
+}
+
+} // namespace sculpt

@@ -1,0 +1,42 @@
+#include "level_set_operations.h"
+
+#include "errors.h"
+#include "level_set_evolution.h"
+#include "text_format.h"
+
+#include <openvdb/tools/LevelSetMeasure.h>
+
+#include <cmath>
+
+namespace sculpt {
+
+void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& progress)
+{
+    if (iterations < 0) throw InputError("iterations must be >= 0 (got " + std::to_string(iterations) + ")");
+    MotionTerms terms;
+    terms.smooth = SmoothTerm{1.0};
+    if (keepVolume) terms.volume = VolumeTerm{openvdb::tools::levelSetVolume(field.grid()), 1.0};
+    LevelSetEvolution evolution(field, terms);
+    for (int i = 0; i < iterations; ++i) {
+        evolution.step();
+        report(progress, double(i + 1) / double(iterations));
+    }
+    if (iterations > 0) evolution.track();
+}
+
+void offset(FieldImage& field, double distanceWorld, const Progress& progress)
+{
+    if (!std::isfinite(distanceWorld)) throw InputError("offset distance must be finite");
+    if (distanceWorld == 0.0) return;
+    MotionTerms terms;
+    terms.uniform = UniformTerm{distanceWorld > 0.0 ? 1.0 : -1.0};
+    LevelSetEvolution evolution(field, terms);
+    const double duration = std::abs(distanceWorld);
+    while (evolution.time() < duration) {
+        evolution.step(duration - evolution.time());
+        report(progress, evolution.time() / duration);
+    }
+    evolution.track();
+}
+
+} // namespace sculpt
