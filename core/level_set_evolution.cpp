@@ -3,9 +3,10 @@
 #include "dense_gather.h"
 #include "errors.h"
 #include "text_format.h"
+#include "volume_estimate.h"
 
 #include <openvdb/math/FiniteDifference.h>
-#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetTracker.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tree/LeafManager.h>
@@ -24,7 +25,6 @@ using LeafT = openvdb::FloatTree::LeafNodeType;
 using LeafValues = std::array<float, LeafT::SIZE>;
 constexpr int kApron = 3;  // WENO5 reads three voxels on each side
 constexpr int kDim = int(LeafT::DIM) + 2 * kApron;
-constexpr double kVolumeIntegralGain = 0.3;
 
 /// A leaf and its apron, densely: at(x, y, z) for leaf-local x, y, z in [-3, 10].
 struct LeafStencil {
@@ -43,7 +43,7 @@ struct StepConstants {
     const openvdb::FloatTree* target = nullptr;
     float alpha = 0.0f, clampWorld = 0.0f;
     double beta = 0.0;
-    double volumeSpeed = 0.0;  // uniform part of the speed: volume control plus offset
+    double volumeSpeed = 0.0;  // uniform part of the speed (offset)
     std::optional<LocalTerm> local;
     std::optional<MotionRegion> region;
     const openvdb::math::Transform* xform;
@@ -97,17 +97,12 @@ public:
     /// nullopt if the voxel is outside the region and must not move.
     std::optional<double> operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
-        openvdb::Vec3d world;
-        if (c.region || c.local) world = c.xform->indexToWorld(ijk);
-        if (c.region && (world - c.region->centreWorld).lengthSqr() > c.region->radiusWorld * c.region->radiusWorld) {
+        if (c.region && (c.xform->indexToWorld(ijk) - c.region->centreWorld).lengthSqr() >
+                            c.region->radiusWorld * c.region->radiusWorld) {
             return std::nullopt;
         }
         double speed = c.volumeSpeed;
-        if (mTarget) speed -= c.alpha * std::clamp(mTarget->getValue(ijk), -c.clampWorld, c.clampWorld);
-        if (c.local) {
-            const double q = (world - c.local->centreWorld).lengthSqr() / (c.local->radiusWorld * c.local->radiusWorld);
-            if (q < 1.0) speed += c.local->speedWorld * (1.0 - q) * (1.0 - q);
-        }
+        if (mTarget || c.local) speed += extendedSpeed(s, x, y, z, ijk);
         double rate = 0.0;
         if (speed != 0.0) {
             openvdb::Vec3d minus, plus;
@@ -119,36 +114,53 @@ public:
     }
 
 private:
+    /// Target and local speeds taken at the voxel's closest surface point x - phi n, not at the
+    /// voxel: every level set then moves with the surface (a cheap velocity extension), so the
+    /// band stays a distance field instead of bunching up where the speed varies.
+    double extendedSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    {
+        openvdb::Vec3d n(s.at(x + 1, y, z) - s.at(x - 1, y, z), s.at(x, y + 1, z) - s.at(x, y - 1, z),
+                         s.at(x, y, z + 1) - s.at(x, y, z - 1));
+        const double length = n.length();
+        const openvdb::Vec3d foot = length > 1e-12 ? ijk.asVec3d() - n * (s.at(x, y, z) * c.invH / length)
+                                                   : ijk.asVec3d();
+        double speed = 0.0;
+        if (mTarget) {
+            const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
+            speed -= c.alpha * std::clamp(phiT, double(-c.clampWorld), double(c.clampWorld));
+        }
+        if (c.local) {
+            const openvdb::Vec3d world = c.xform->indexToWorld(foot);
+            const double q = (world - c.local->centreWorld).lengthSqr() / (c.local->radiusWorld * c.local->radiusWorld);
+            if (q < 1.0) speed += c.local->speedWorld * (1.0 - q) * (1.0 - q);
+        }
+        return speed;
+    }
+
+private:
     const StepConstants& c;
     std::optional<openvdb::tree::ValueAccessor<const openvdb::FloatTree>> mTarget;
 };
 
 /// One explicit Euler stage over every leaf: out[i] = phi + dt * rate (inactive voxels kept).
-/// Returns the largest change of a voxel near the surface (|phi| < h), i.e. how far it moved.
-double eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves,
-                  const StepConstants& c, double dt, std::vector<LeafValues>& out)
+void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves,
+                const StepConstants& c, double dt, std::vector<LeafValues>& out)
 {
-    return tbb::parallel_reduce(
-        tbb::blocked_range<size_t>(0, leaves.size()), 0.0,
-        [&](const tbb::blocked_range<size_t>& r, double moved) {
-            LeafStencil stencil;
-            VoxelRate rate(c);
-            for (size_t i = r.begin(); i < r.end(); ++i) {
-                const LeafT& leaf = *leaves[i];
-                std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
-                if (leaf.isEmpty()) continue;
-                stencil.gather(tree, leaf.origin());
-                for (auto it = leaf.cbeginValueOn(); it; ++it) {
-                    const openvdb::Coord local = it.getCoord() - leaf.origin();
-                    const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
-                    if (!dphi) continue;
-                    out[i][it.pos()] = float(*it + dt * *dphi);
-                    if (std::abs(*it) < c.h) moved = std::max(moved, std::abs(dt * *dphi));
-                }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
+        LeafStencil stencil;
+        VoxelRate rate(c);
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            const LeafT& leaf = *leaves[i];
+            std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
+            if (leaf.isEmpty()) continue;
+            stencil.gather(tree, leaf.origin());
+            for (auto it = leaf.cbeginValueOn(); it; ++it) {
+                const openvdb::Coord local = it.getCoord() - leaf.origin();
+                const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
+                if (dphi) out[i][it.pos()] = float(*it + dt * *dphi);
             }
-            return moved;
-        },
-        [](double a, double b) { return std::max(a, b); });
+        }
+    });
 }
 
 void writeLeaves(const std::vector<LeafT*>& leaves, const std::vector<LeafValues>& values, float background)
@@ -191,8 +203,8 @@ void validateTerms(const MotionTerms& t, const FieldImage& field)
     }
 }
 
-/// One TVD-RK2 (Heun) step over every leaf of `grid`; returns how far the surface moved at most.
-double rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
+/// One TVD-RK2 (Heun) step over every leaf of `grid`.
+void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
 {
     auto& tree = grid.tree();
     const auto leaves = leafList(tree);
@@ -202,7 +214,7 @@ double rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
             std::copy(leaves[i]->buffer().data(), leaves[i]->buffer().data() + LeafT::SIZE, phi0[i].begin());
         }
     });
-    const double moved = eulerStage(tree, leaves, c, dt, stage);
+    eulerStage(tree, leaves, c, dt, stage);
     writeLeaves(leaves, stage, grid.background());
     eulerStage(tree, leaves, c, dt, stage);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
@@ -211,7 +223,6 @@ double rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
         }
     });
     writeLeaves(leaves, stage, grid.background());
-    return moved;
 }
 
 void trackGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
@@ -312,7 +323,7 @@ LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, Evolu
 
 double LevelSetEvolution::maxAdvectionSpeed() const
 {
-    double speed = std::abs(mVolumeSpeed);
+    double speed = 0.0;
     if (mTerms.target) speed += mTerms.target->alpha * mTerms.target->clampWorld;
     if (mTerms.local) speed += std::abs(mTerms.local->speedWorld);
     if (mTerms.uniform) speed += std::abs(mTerms.uniform->speedWorld);
@@ -331,27 +342,33 @@ double LevelSetEvolution::stableTimeStep() const
 
 double LevelSetEvolution::step(double maxDt)
 {
-    mVolumeSpeed = 0.0;
-    double dt = std::min(maxDt, stableTimeStep());
-    if (!std::isfinite(dt)) return 0.0;  // no term moves anything
-    if (mTerms.volume) {
-        openvdb::tools::LevelSetMeasure<openvdb::FloatGrid> measure(mField.grid());
-        const double area = measure.area(true), volume = measure.volume(true);
-        if (area > 0.0) {
-            // Proportional-integral control: the integral cancels the steady loss that
-            // curvature flow and renormalisation cause every step.
-            const double error = mTerms.volume->targetVolume - volume;
-            mVolumeErrorSum += error;
-            const double correction = mTerms.volume->gamma * error + kVolumeIntegralGain * mVolumeErrorSum;
-            const double limit = mOptions.cfl * mField.voxelSize() / dt;
-            mVolumeSpeed = std::clamp(correction / (area * dt), -limit, limit);
-            dt = std::min(maxDt, stableTimeStep());
-        }
-    }
+    const double dt = std::min(maxDt, stableTimeStep());
+    if (!std::isfinite(dt) || dt <= 0.0) return 0.0;  // no term moves anything
     applyStep(dt);
     mTime += dt;
     ++mSteps;
+    if (mTerms.volume) restoreVolume();
     return dt;
+}
+
+void LevelSetEvolution::restoreVolume()
+{
+    const auto [volume, area] = estimateVolumeArea(mField.grid());
+    if (!(area > 0.0)) return;
+    const double budget = mOptions.cfl * mField.voxelSize();
+    const double displacement =
+        std::clamp(mTerms.volume->gamma * (mTerms.volume->targetVolume - volume) / area, -budget, budget);
+    openvdb::FloatGrid& grid = mField.mutableGrid();
+    const float background = grid.background();
+    const auto leaves = leafList(grid.tree());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            for (auto it = leaves[i]->beginValueOn(); it; ++it) {
+                it.setValue(std::clamp(float(*it - displacement), -background, background));
+            }
+        }
+    });
+    mMovedSinceTrack += std::abs(displacement);
 }
 
 void LevelSetEvolution::applyStep(double dt)
@@ -367,13 +384,16 @@ void LevelSetEvolution::applyStep(double dt)
         c.clampWorld = float(mTerms.target->clampWorld);
     }
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
-    c.volumeSpeed = mVolumeSpeed + (mTerms.uniform ? mTerms.uniform->speedWorld : 0.0);
+    c.volumeSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
     c.local = mTerms.local;
     c.region = mRegion;
     c.xform = &grid.transform();
 
-    // Curvature flow diffuses the band's edge inwards by sqrt(2 beta t): rebuild before it
-    // travels a voxel, as well as before the surface may have moved trackDistance.
+    // Every level set in the band, not only the surface, moves at up to max|F_adv|; where the
+    // speed varies (a target, a brush) they bunch up, so rebuild before any may have moved
+    // trackDistance. Curvature flow diffuses the band's edge inwards by sqrt(2 beta t): rebuild
+    // before that travels half a voxel too.
+    mMovedSinceTrack += maxAdvectionSpeed() * dt;
     mDiffusedSinceTrack += c.beta * dt;
     const auto trackDue = [&] {
         return mMovedSinceTrack >= mOptions.trackDistanceVoxels * c.h ||
@@ -381,7 +401,7 @@ void LevelSetEvolution::applyStep(double dt)
     };
     if (!mRegion) {
         DirtyRegion touched = allLeaves(grid.tree());
-        mMovedSinceTrack += rk2Step(grid, c, dt);
+        rk2Step(grid, c, dt);
         if (trackDue()) {
             mDiffusedSinceTrack = 0.0;
             trackGrid(grid, mOptions);
@@ -396,7 +416,7 @@ void LevelSetEvolution::applyStep(double dt)
     const auto inner = leavesNear(grid, *mRegion, band + c.h);
     const auto outer = leavesNear(grid, *mRegion, band + c.h + 8.0 * c.h + kApron * c.h);
     auto sub = extractLeaves(grid, outer);
-    mMovedSinceTrack += rk2Step(*sub, c, dt);
+    rk2Step(*sub, c, dt);
     if (trackDue()) {
         mDiffusedSinceTrack = 0.0;
         trackGrid(*sub, mOptions);

@@ -7,9 +7,10 @@
 /// one-sided differences (or first-order ones); the curvature part central differences; time
 /// integration is the TVD Runge-Kutta of order 2 (Heun). Steps obey the CFL limits
 /// dt <= cfl h / max|F_adv| and dt <= h^2 / (6 beta). Each leaf is processed on a dense copy
-/// with a 3-voxel apron (gatherDense), in parallel. Once the surface may have moved half a
-/// voxel, or curvature diffusion may have carried the band edge's error half a voxel
-/// (beta t >= h^2 / 2), the band is rebuilt and renormalised with openvdb::tools::LevelSetTracker.
+/// with a 3-voxel apron (gatherDense), in parallel. Once any level set of the band may have moved
+/// half a voxel (max|F_adv| t), or curvature diffusion may have carried the band edge's error half
+/// a voxel (beta t >= h^2 / 2), the band is rebuilt and renormalised with
+/// openvdb::tools::LevelSetTracker.
 ///
 /// With a MotionRegion, only the leaves around the region are copied into a small grid, moved,
 /// tracked there and copied back: OpenVDB's tracker visits every leaf of the grid it is given,
@@ -55,6 +56,9 @@ public:
 private:
     struct Work;
     void applyStep(double dt);
+    /// Volume control by operator splitting: after the other terms' step, a uniform offset
+    /// brings the volume back to its target.
+    void restoreVolume();
     double maxAdvectionSpeed() const;
 
     FieldImage& mField;
@@ -65,8 +69,6 @@ private:
     int mSteps = 0;
     double mMovedSinceTrack = 0.0;
     double mDiffusedSinceTrack = 0.0;
-    double mVolumeSpeed = 0.0;
-    double mVolumeErrorSum = 0.0;
 };
 
 } // namespace sculpt

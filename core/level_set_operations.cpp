@@ -3,8 +3,7 @@
 #include "errors.h"
 #include "level_set_evolution.h"
 #include "text_format.h"
-
-#include <openvdb/tools/LevelSetMeasure.h>
+#include "volume_estimate.h"
 
 #include <cmath>
 
@@ -15,7 +14,7 @@ void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& 
     if (iterations < 0) throw InputError("iterations must be >= 0 (got " + std::to_string(iterations) + ")");
     MotionTerms terms;
     terms.smooth = SmoothTerm{1.0};
-    if (keepVolume) terms.volume = VolumeTerm{openvdb::tools::levelSetVolume(field.grid()), 1.0};
+    if (keepVolume) terms.volume = VolumeTerm{estimateVolumeArea(field.grid()).volume, 1.0};
     LevelSetEvolution evolution(field, terms);
     for (int i = 0; i < iterations; ++i) {
         evolution.step();

@@ -24,12 +24,13 @@ struct SmoothTerm {
     double beta = 1.0;  ///< world units^2 per unit time
 };
 
-/// F_V = gamma (V* - V) / (A tau), V and A measured on the current surface each step, tau the
-/// step: a uniform normal speed that restores the volume V* (global, never local). A small
-/// integral term (the summed error) removes the steady lag of a purely proportional control.
+/// F_V = gamma (V* - V) / (A tau), V and A measured on the current surface, tau the step: a
+/// uniform normal speed that restores the volume V* (global, never local). Applied by operator
+/// splitting: after the other terms' step, the surface is offset by gamma (V* - V) / A, so the
+/// volume the other terms lost or gained in the step is restored in the same step, without lag.
 struct VolumeTerm {
-    double targetVolume = 0.0;  ///< V*, world units^3
-    double gamma = 0.5;         ///< fraction of the volume error corrected per step
+    double targetVolume = 0.0;  ///< V* at the end of the next step, world units^3
+    double gamma = 1.0;         ///< fraction of the volume error corrected per step
 };
 
 /// F_B = speed * (1 - (d/r)^2)^2 for d = |x - centre| < r, 0 beyond: a smooth local push.
