@@ -4,6 +4,7 @@
 #include "cli/commands.h"
 
 #include <errors.h>
+#include <progress.h>
 
 #include <CLI/CLI.hpp>
 
@@ -33,6 +34,9 @@ int main(int argc, char** argv)
     sculpt::cli::addNewCommand(app);
     sculpt::cli::addInfoCommand(app);
     sculpt::cli::addMeshCommand(app);
+    sculpt::cli::addSmoothCommand(app);
+    sculpt::cli::addOffsetCommand(app);
+    sculpt::cli::addMorphCommand(app);
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);
@@ -44,6 +48,9 @@ int main(int argc, char** argv)
     } catch (const CLI::ParseError& e) {
         std::cerr << "sculpt: " << e.what() << " (see 'sculpt --help')\n";
         return 2;
+    } catch (const sculpt::Cancelled&) {
+        std::cerr << "sculpt: cancelled\n";
+        return 1;
     } catch (const sculpt::InputError& e) {
         std::cerr << "sculpt: " << e.what() << "\n";
         return 2;

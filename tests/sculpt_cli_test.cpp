@@ -115,13 +115,61 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"new --shape cone -o out.vdb", "cone"},
                       BadCall{"new -o nodir/out.vdb", "nodir"},
                       BadCall{"frobnicate", "frobnicate"},
+                      BadCall{"smooth good.vdb --iterations -2 -o out.vdb", "iterations"},
+                      BadCall{"offset corrupt.vdb --distance 1 -o out.vdb", "corrupt.vdb"},
+                      BadCall{"morph good.vdb missing.vdb -o frames", "missing.vdb"},
+                      BadCall{"morph good.vdb good.vdb --frames 1 -o frames", "frames"},
                       BadCall{"", "ubcommand"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
+
+TEST(SculptCli, SmoothAndOffsetChangeTheShape)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 10 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    auto r = runSculpt("offset s.vdb --distance 2 -o grown.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NEAR(infoJson(dir, "grown.vdb")["bbox_max"][0].get<double>(), 12.0, 0.05);
+
+    r = runSculpt("smooth s.vdb --iterations 20 --keep-volume -o kept.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double v0 = infoJson(dir, "s.vdb")["volume"].get<double>();
+    EXPECT_NEAR(infoJson(dir, "kept.vdb")["volume"].get<double>(), v0, 0.005 * v0);
+    r = runSculpt("smooth s.vdb --iterations 20 -o shrunk.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_LT(infoJson(dir, "shrunk.vdb")["volume"].get<double>(), 0.99 * v0);
+}
+
+TEST(SculptCli, MorphWritesFramesAndMeshes)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 6 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape torus --radius 6 --minor-radius 2.5 --voxel-size 0.5 -o t.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("morph s.vdb t.vdb --frames 3 -o frames --mesh stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("converged"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("frame 0002 volume"), std::string::npos) << r.out;
+    for (const char* name : {"frames/frame_0000.vdb", "frames/frame_0002.vdb", "frames/frame_0002.stl"}) {
+        EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+    }
+    EXPECT_EQ(infoJson(dir, "frames/frame_0002.vdb")["euler_characteristic"], 0);
+    EXPECT_EQ(test::vtkMeshReport(dir / "frames/frame_0002.stl").boundaryEdges, 0);
+}
+
+TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 3 --voxel-size 0.5 -o a.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape torus --radius 30 --minor-radius 3 --voxel-size 0.5 -o ring.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("morph a.vdb ring.vdb --frames 2 -o frames", dir.path());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("do not overlap"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
+}
 
 TEST(SculptCli, HelpExplainsEveryCommand)
 {
     TempDir dir;
-    for (const char* command : {"new", "info", "mesh"}) {
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph"}) {
         const auto r = runSculpt(std::string(command) + " --help", dir.path());
         EXPECT_EQ(r.exitCode, 0);
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;

@@ -16,5 +16,11 @@ void addNewCommand(CLI::App& app);
 void addInfoCommand(CLI::App& app);
 /// `sculpt mesh`: export the surface as PLY, OBJ or STL.
 void addMeshCommand(CLI::App& app);
+/// `sculpt smooth`: mean-curvature smoothing, optionally keeping the volume.
+void addSmoothCommand(CLI::App& app);
+/// `sculpt offset`: move the surface along its normal.
+void addOffsetCommand(CLI::App& app);
+/// `sculpt morph`: frames of the source following the target.
+void addMorphCommand(CLI::App& app);
 
 } // namespace sculpt::cli

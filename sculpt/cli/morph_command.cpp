@@ -1,0 +1,110 @@
+#include "commands.h"
+#include "progress_bar.h"
+
+#include <atomic_file.h>
+#include <errors.h>
+#include <incremental_mesher.h>
+#include <mesh_file.h>
+#include <morph.h>
+#include <vdb_file.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace sculpt::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct MorphCommandOptions {
+    std::string source, target, directory, mesh;
+    MorphOptions morph;
+};
+
+fs::path framePath(const fs::path& dir, int index, const std::string& extension)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.%s", index, extension.c_str());
+    return dir / name;
+}
+
+void prepareDirectory(const fs::path& dir)
+{
+    std::error_code ec;
+    if (fs::is_directory(dir, ec)) return;
+    const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
+    if (!fs::is_directory(parent, ec)) {
+        throw InputError(dir.string() + ": parent directory '" + parent.string() + "' does not exist");
+    }
+    if (!fs::create_directory(dir, ec)) throw InputError(dir.string() + ": cannot create (" + ec.message() + ")");
+}
+
+void runMorph(const MorphCommandOptions& o)
+{
+    if (!o.mesh.empty()) meshFormatOf("frame." + o.mesh);
+    const FieldImage source = readFieldImage(o.source);
+    const FieldImage target = readFieldImage(o.target);
+    prepareDirectory(o.directory);
+
+    MorphSummary summary;
+    {
+        ProgressBar bar("morphing");
+        summary = morph(source, target, o.morph, [&](const MorphFrame& frame) {
+            writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
+            if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
+        }, bar.callback());
+    }
+    std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames,
+                o.directory.c_str(), o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
+    if (summary.translation != openvdb::Vec3d(0.0)) {
+        std::printf("aligned: source moved by (%g, %g, %g)\n", summary.translation.x(), summary.translation.y(),
+                    summary.translation.z());
+    }
+    std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps,
+                summary.duration, summary.finalDistanceWorld, target.units().c_str(),
+                summary.converged ? "converged" : "NOT converged: raise --max-steps or --tolerance");
+    for (size_t i = 0; i < summary.frameVolumes.size(); ++i) {
+        std::printf("frame %04zu volume %g %s^3\n", i, summary.frameVolumes[i], target.units().c_str());
+    }
+}
+
+} // namespace
+
+void addMorphCommand(CLI::App& app)
+{
+    auto options = std::make_shared<MorphCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "morph", "Morph the source shape into the target: the source surface follows the target\n"
+                 "by level-set motion (growing where the target is larger, shrinking where it is\n"
+                 "smaller, changing topology as needed). Writes DIR/frame_0000.vdb ... evenly\n"
+                 "spaced in morph time; the last frame is the converged shape.");
+    cmd->add_option("source", options->source, "the .vdb document to start from")->required();
+    cmd->add_option("target", options->target, "the .vdb document to arrive at")->required();
+    cmd->add_option("--frames", options->morph.frames, "number of frames, first and last included")
+        ->check(CLI::Range(2, 100000))
+        ->capture_default_str();
+    cmd->add_option("-o,--output", options->directory, "directory for the frames (created if missing)")
+        ->required();
+    cmd->add_option("--mesh", options->mesh, "also write a mesh per frame: ply, obj or stl")
+        ->check(CLI::IsMember({"ply", "obj", "stl"}));
+    cmd->add_flag("--keep-volume", options->morph.keepVolume,
+                  "keep each frame's volume on the straight line between the two shapes' volumes");
+    cmd->add_flag("--align", options->morph.align,
+                  "first move the source so its centroid sits on the target's (needed when the\n"
+                  "shapes do not overlap)");
+    cmd->add_option("--tolerance", options->morph.toleranceVoxels,
+                    "converged when every surface point is this near the target (voxels)")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->add_option("--max-steps", options->morph.maxSteps, "give up after this many steps")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cmd->callback([options] { runMorph(*options); });
+}
+
+} // namespace sculpt::cli
