@@ -1,9 +1,7 @@
 #include "commands.h"
-#include "progress_bar.h"
+#include "edit_document.h"
 
-#include <atomic_file.h>
 #include <level_set_operations.h>
-#include <vdb_file.h>
 
 #include <CLI/CLI.hpp>
 
@@ -21,13 +19,9 @@ struct OffsetOptions {
 
 void runOffset(const OffsetOptions& o)
 {
-    AtomicFile::checkTarget(o.output);
-    FieldImage field = readFieldImage(o.input);
-    {
-        ProgressBar bar("offsetting");
-        offset(field, o.distance, bar.callback());
-    }
-    writeFieldImage(field, o.output);
+    const FieldImage field = editDocument(o.input, o.output, "offsetting", [&](FieldImage& f, const Progress& p) {
+        offset(f, o.distance, p);
+    });
     std::cout << "wrote " << o.output << ": surface moved " << o.distance << " " << field.units()
               << " along its normal\n";
 }

@@ -1,10 +1,8 @@
 #include "commands.h"
-#include "progress_bar.h"
+#include "edit_document.h"
 
-#include <atomic_file.h>
 #include <field_measures.h>
 #include <level_set_operations.h>
-#include <vdb_file.h>
 
 #include <CLI/CLI.hpp>
 
@@ -23,14 +21,11 @@ struct SmoothOptions {
 
 void runSmooth(const SmoothOptions& o)
 {
-    AtomicFile::checkTarget(o.output);
-    FieldImage field = readFieldImage(o.input);
-    const double before = measureField(field).volume;
-    {
-        ProgressBar bar("smoothing");
-        smooth(field, o.iterations, o.keepVolume, bar.callback());
-    }
-    writeFieldImage(field, o.output);
+    double before = 0.0;
+    const FieldImage field = editDocument(o.input, o.output, "smoothing", [&](FieldImage& f, const Progress& p) {
+        before = measureField(f).volume;
+        smooth(f, o.iterations, o.keepVolume, p);
+    });
     std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume "
               << before << " -> " << measureField(field).volume << " " << field.units() << "^3\n";
 }

@@ -1,0 +1,23 @@
+#include "edit_document.h"
+
+#include "progress_bar.h"
+
+#include <atomic_file.h>
+#include <vdb_file.h>
+
+namespace sculpt::cli {
+
+FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
+                        const std::function<void(FieldImage&, const Progress&)>& edit)
+{
+    AtomicFile::checkTarget(output);
+    FieldImage field = readFieldImage(input);
+    {
+        ProgressBar bar(label);
+        edit(field, bar.callback());
+    }
+    writeFieldImage(field, output);
+    return field;
+}
+
+} // namespace sculpt::cli

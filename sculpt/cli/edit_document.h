@@ -1,0 +1,19 @@
+#pragma once
+/// @file edit_document.h
+/// @brief The shape of every editing command: read a document, change it with a progress bar,
+///        write the result atomically (the input is never touched).
+
+#include <field_image.h>
+#include <progress.h>
+
+#include <functional>
+#include <string>
+
+namespace sculpt::cli {
+
+/// Reads `input`, applies `edit` (drawing a bar labelled `label`), writes `output`; returns the
+/// edited field for the command's report. Fails before any work if `output` cannot be written.
+FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
+                        const std::function<void(FieldImage&, const Progress&)>& edit);
+
+} // namespace sculpt::cli
