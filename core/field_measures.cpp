@@ -1,5 +1,7 @@
 #include "field_measures.h"
 
+#include "incremental_mesher.h"
+
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tree/LeafManager.h>
@@ -50,6 +52,14 @@ struct CrossingBounds {
     void join(const CrossingBounds& other) { box.expand(other.box); }
 };
 
+/// V - E + F of our welded mesh, which is closed (E = 3F/2): exact topology, unlike the
+/// Gauss-Bonnet integral of LevelSetMeasure, which creases (CSG, carving) throw off.
+int meshEulerCharacteristic(const FieldImage& field)
+{
+    const TriangleMesh mesh = meshLevelSet(field);
+    return int(std::int64_t(mesh.positions.size()) - std::int64_t(mesh.triangles.size()) / 2);
+}
+
 int countSurfaceComponents(const openvdb::FloatGrid& grid)
 {
     auto crossings = openvdb::tools::extractIsosurfaceMask(grid.tree(), 0.0f);
@@ -80,7 +90,7 @@ FieldMeasures measureField(const FieldImage& field)
     openvdb::tools::LevelSetMeasure<openvdb::FloatGrid> measure(grid);
     m.area = measure.area(true);
     m.volume = measure.volume(true);
-    m.eulerCharacteristic = m.activeVoxels == 0 ? 0 : measure.eulerCharacteristic();
+    m.eulerCharacteristic = meshEulerCharacteristic(field);
     m.components = countSurfaceComponents(grid);
     return m;
 }

@@ -37,6 +37,7 @@ int main(int argc, char** argv)
     sculpt::cli::addSmoothCommand(app);
     sculpt::cli::addOffsetCommand(app);
     sculpt::cli::addMorphCommand(app);
+    sculpt::cli::addBuildCommand(app);
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);

@@ -22,5 +22,7 @@ void addSmoothCommand(CLI::App& app);
 void addOffsetCommand(CLI::App& app);
 /// `sculpt morph`: frames of the source following the target.
 void addMorphCommand(CLI::App& app);
+/// `sculpt build`: bake a primitive scene, alone or into a base document.
+void addBuildCommand(CLI::App& app);
 
 } // namespace sculpt::cli

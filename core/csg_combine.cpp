@@ -1,0 +1,95 @@
+#include "csg_combine.h"
+
+#include "errors.h"
+
+#include <openvdb/tools/Composite.h>
+
+#include <algorithm>
+
+namespace sculpt {
+
+namespace {
+
+using LeafT = openvdb::FloatTree::LeafNodeType;
+
+/// Voxel rule of the local operations, on values clamped to the sculpt's band.
+float apply(CsgOperation op, float sculpt, float shape)
+{
+    return op == CsgOperation::Union ? std::min(sculpt, shape) : std::max(sculpt, -shape);
+}
+
+/// Union or difference over the leaf-sized cells of the shape's bounding box.
+DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& shape, CsgOperation op)
+{
+    DirtyRegion touched;
+    const float background = grid.background();
+    const float outside = shape.background();  // where the shape is absent, neither op changes anything
+    openvdb::CoordBBox box;
+    shape.tree().evalLeafBoundingBox(box);
+    if (box.empty()) return touched;
+    auto acc = grid.getAccessor();
+    auto shapeAcc = shape.getConstAccessor();
+    for (int x = box.min().x() & ~7; x <= box.max().x(); x += 8)
+        for (int y = box.min().y() & ~7; y <= box.max().y(); y += 8)
+            for (int z = box.min().z() & ~7; z <= box.max().z(); z += 8) {
+                const openvdb::Coord origin(x, y, z);
+                const LeafT* from = shapeAcc.probeConstLeaf(origin);
+                if (!from && shapeAcc.getValue(origin) >= outside) continue;
+                LeafT* to = acc.touchLeaf(origin);
+                for (auto it = to->beginValueAll(); it; ++it) {
+                    const float value = std::clamp(apply(op, *it, shapeAcc.getValue(it.getCoord())), -background, background);
+                    it.setValue(value);
+                    it.setValueOn(std::abs(value) < background);
+                }
+                touched.addVoxel(origin);
+            }
+    return touched;
+}
+
+DirtyRegion allLeavesOf(const openvdb::FloatTree& tree)
+{
+    DirtyRegion region;
+    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
+    return region;
+}
+
+} // namespace
+
+CsgOperation csgFromName(const std::string& name)
+{
+    if (name == "union") return CsgOperation::Union;
+    if (name == "difference") return CsgOperation::Difference;
+    if (name == "intersection") return CsgOperation::Intersection;
+    if (name == "replace") return CsgOperation::Replace;
+    throw InputError("unknown operation '" + name + "' (expected union, difference, intersection or replace)");
+}
+
+DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation operation)
+{
+    if (sculpt.grid().transform() != shape.grid().transform()) {
+        throw InputError("the shape's voxels differ from the sculpt's (voxel size or placement)");
+    }
+    openvdb::FloatGrid& grid = sculpt.mutableGrid();
+    DirtyRegion touched;
+    switch (operation) {
+    case CsgOperation::Union:
+    case CsgOperation::Difference:
+        touched = combineLocally(grid, shape.grid(), operation);
+        break;
+    case CsgOperation::Intersection: {
+        touched = allLeavesOf(grid.tree());
+        auto copy = shape.grid().deepCopy();
+        openvdb::tools::csgIntersection(grid, *copy);
+        break;
+    }
+    case CsgOperation::Replace:
+        touched = allLeavesOf(grid.tree());
+        grid.setTree(shape.grid().tree().copy());
+        break;
+    }
+    if (operation == CsgOperation::Intersection || operation == CsgOperation::Replace) touched.merge(allLeavesOf(grid.tree()));
+    sculpt.markDirty(touched);
+    return touched;
+}
+
+} // namespace sculpt

@@ -1,0 +1,73 @@
+#include "commands.h"
+
+#include <atomic_file.h>
+#include <csg_combine.h>
+#include <errors.h>
+#include <incremental_mesher.h>
+#include <mesh_file.h>
+#include <primitive_rasterizer.h>
+#include <scene_file.h>
+#include <vdb_file.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace sculpt::cli {
+
+namespace {
+
+struct BuildOptions {
+    std::string scene, base, output, mesh;
+    double voxelSize = 0.0;
+};
+
+void runBuild(const BuildOptions& o)
+{
+    AtomicFile::checkTarget(o.output);
+    if (!o.mesh.empty()) {
+        meshFormatOf(o.mesh);
+        AtomicFile::checkTarget(o.mesh);
+    }
+    const Scene scene = readScene(o.scene);
+    FieldImage result = [&] {
+        if (!o.base.empty()) {
+            FieldImage base = readFieldImage(o.base);
+            const FieldImage shape = rasterizePrimitives(scene.primitives, base.grid().transform());
+            combine(base, shape, scene.operation);
+            return base;
+        }
+        const double h = o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5);
+        return rasterizePrimitives(scene.primitives, *openvdb::math::Transform::createLinearTransform(h));
+    }();
+    writeFieldImage(result, o.output);
+    std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
+              << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()
+              << " active voxels\n";
+    if (!o.mesh.empty()) {
+        const TriangleMesh mesh = meshLevelSet(result);
+        writeMesh(mesh, o.mesh);
+        std::cout << "wrote " << o.mesh << ": " << mesh.triangles.size() << " triangles\n";
+    }
+}
+
+} // namespace
+
+void addBuildCommand(CLI::App& app)
+{
+    auto options = std::make_shared<BuildOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "build", "Bake a scene of implicit primitives (skeletons with field kernels, blended, see\n"
+                 "data/scene.schema.json) into a document, alone or combined into a base document\n"
+                 "by the scene's operation (union, difference, intersection, replace).");
+    cmd->add_option("scene", options->scene, "the scene .json file")->required();
+    cmd->add_option("--voxel-size", options->voxelSize,
+                    "voxel size without --into (default: the scene's voxel_size, else 0.5)");
+    cmd->add_option("--into", options->base, "base .vdb document to combine the scene into");
+    cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");
+    cmd->callback([options] { runBuild(*options); });
+}
+
+} // namespace sculpt::cli
