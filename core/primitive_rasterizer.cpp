@@ -42,10 +42,12 @@ std::unique_ptr<LeafT> sampleLeaf(const PrimitiveSet& set, const std::vector<int
 {
     std::array<double, kSamples * kSamples * kSamples> g;
     auto at = [&](int x, int y, int z) -> double& { return g[size_t(((x + 1) * kSamples + (y + 1)) * kSamples + (z + 1))]; };
+    const openvdb::Mat4d worldFromIndex = xform.baseMap()->getAffineMap()->getMat4();  // no virtual call per sample
     for (int x = -1; x <= kLeafDim; ++x)
         for (int y = -1; y <= kLeafDim; ++y)
             for (int z = -1; z <= kLeafDim; ++z) {
-                at(x, y, z) = set.iso() - set.field(xform.indexToWorld(origin.offsetBy(x, y, z)), nearby);
+                const openvdb::Vec3d world = worldFromIndex.transform(origin.offsetBy(x, y, z).asVec3d());
+                at(x, y, z) = set.iso() - set.field(world, nearby);
             }
     const double h = xform.voxelSize()[0];
     auto leaf = std::make_unique<LeafT>(origin, background, false);
@@ -68,6 +70,28 @@ std::unique_ptr<LeafT> sampleLeaf(const PrimitiveSet& set, const std::vector<int
     return leaf;
 }
 
+enum class LeafClass { Outside, Inside, Surface };
+
+/// Interval bound of the field over the leaf grown by `marginWorld`: kernels decrease with
+/// distance, and a distance varies by at most the half diagonal across the box. A leaf whose
+/// grown box lies wholly on one side of the iso-value holds no band voxel.
+LeafClass classifyLeaf(const PrimitiveSet& set, const std::vector<int>& nearby, const openvdb::math::Transform& xform,
+                       const openvdb::Coord& origin, double marginWorld)
+{
+    const openvdb::Vec3d centre = xform.indexToWorld(origin.asVec3d() + openvdb::Vec3d(0.5 * (kLeafDim - 1)));
+    const double reach = 0.5 * std::sqrt(3.0) * (kLeafDim - 1) * xform.voxelSize()[0] + marginWorld;
+    double most = 0.0, least = 0.0;  // least: a lower bound valid for both blending modes
+    for (int i : nearby) {
+        const Primitive& p = set.primitives()[size_t(i)];
+        const double d = p.skeleton.distance(centre);
+        most += p.kernel.value(std::max(0.0, d - reach));
+        least = std::max(least, p.kernel.value(d + reach));
+    }
+    if (most < set.iso()) return LeafClass::Outside;
+    if (least > set.iso()) return LeafClass::Inside;
+    return LeafClass::Surface;
+}
+
 } // namespace
 
 FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform, double halfWidthVoxels)
@@ -82,15 +106,22 @@ FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Tra
     std::vector<std::pair<openvdb::Coord, const std::vector<int>*>> work;
     for (const auto& [origin, nearby] : visit) work.emplace_back(origin, &nearby);
     std::vector<std::unique_ptr<LeafT>> leaves(work.size());
+    std::vector<LeafClass> classes(work.size());
+    const double margin = background + xform.voxelSize()[0];
     tbb::parallel_for(tbb::blocked_range<size_t>(0, work.size()), [&](const auto& r) {
-        for (size_t i = r.begin(); i < r.end(); ++i) leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            classes[i] = classifyLeaf(set, *work[i].second, xform, work[i].first, margin);
+            if (classes[i] == LeafClass::Surface) leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
+        }
     });
-    for (auto& leaf : leaves) {
-        if (leaf) grid->tree().addLeaf(leaf.release());
+    for (size_t i = 0; i < work.size(); ++i) {
+        if (leaves[i]) grid->tree().addLeaf(leaves[i].release());
+        if (classes[i] == LeafClass::Inside) grid->tree().addTile(1, work[i].first, -background, false);
     }
     openvdb::tools::signedFloodFill(grid->tree());
     openvdb::tools::LevelSetTracker<openvdb::FloatGrid> tracker(*grid);
-    tracker.setNormCount(4);
+    tracker.setSpatialScheme(openvdb::math::FIRST_BIAS);
+    tracker.setNormCount(1);
     tracker.normalize();
     tracker.prune();
     return FieldImage(grid);

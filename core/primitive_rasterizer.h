@@ -3,10 +3,11 @@
 /// @brief Bakes a primitive set into a narrow-band level set.
 ///
 /// Only the leaves that meet some primitive's influence box are visited (never the whole
-/// scene); at each voxel the set's field f is evaluated from the primitives whose influence
+/// scene), and of those only the ones an interval bound of the field cannot prove wholly inside or
+/// outside the band are sampled; at each voxel the set's field f is evaluated from the primitives whose influence
 /// reaches it. g = iso - f is negative inside; g / |grad g| (central differences) is its distance
-/// to the surface to first order, and a few renormalisation sweeps of
-/// openvdb::tools::LevelSetTracker turn it into a true signed distance near the surface.
+/// to the surface to first order (exact for a linear field), and one first-order renormalisation
+/// sweep of openvdb::tools::LevelSetTracker evens out what the kernels' curvature leaves.
 
 #include "field_image.h"
 #include "primitive_set.h"

@@ -93,6 +93,9 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     TempDir dir;
     ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o good.vdb", dir.path()).exitCode, 0);
     std::ofstream(dir / "corrupt.vdb") << "garbage that is not a vdb";
+    std::ofstream(dir / "bad.json") << R"({"primitives": [{"name": "arm", "kernel": "metaball", "radius": -2,
+        "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
+    std::ofstream(dir / "broken.json") << R"({"primitives": [)";
     const auto before = dir.entries();
 
     const auto r = runSculpt(GetParam().args, dir.path());
@@ -119,6 +122,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"offset corrupt.vdb --distance 1 -o out.vdb", "corrupt.vdb"},
                       BadCall{"morph good.vdb missing.vdb -o frames", "missing.vdb"},
                       BadCall{"morph good.vdb good.vdb --frames 1 -o frames", "frames"},
+                      BadCall{"build bad.json -o out.vdb", "primitive 0 ('arm'): radius"},
+                      BadCall{"build broken.json -o out.vdb", "malformed JSON"},
+                      BadCall{"build missing.json -o out.vdb", "missing.json"},
+                      BadCall{"build bad.json --into corrupt.vdb -o out.vdb", "radius"},
                       BadCall{"", "ubcommand"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
@@ -166,10 +173,27 @@ TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
     EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
 }
 
+TEST(SculptCli, BuildBakesScenesAloneAndIntoADocument)
+{
+    TempDir dir;
+    auto r = runSculpt("build '" SCULPT_DATA_DIR "/scenes/snowman.json' -o snow.vdb --mesh snow.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(infoJson(dir, "snow.vdb")["components"], 1);
+    EXPECT_EQ(test::vtkMeshReport(dir / "snow.ply").boundaryEdges, 0);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 20 -o box.vdb", dir.path()).exitCode, 0);
+    r = runSculpt("build '" SCULPT_DATA_DIR "/scenes/carved_box.json' --into box.vdb -o carved.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double before = infoJson(dir, "box.vdb")["volume"].get<double>();
+    const double after = infoJson(dir, "carved.vdb")["volume"].get<double>();
+    EXPECT_LT(after, before - 200.0);  // a scoop of radius 8.3 off one corner: about 300 mm^3
+    EXPECT_EQ(infoJson(dir, "carved.vdb")["euler_characteristic"], 2);
+}
+
 TEST(SculptCli, HelpExplainsEveryCommand)
 {
     TempDir dir;
-    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph"}) {
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build"}) {
         const auto r = runSculpt(std::string(command) + " --help", dir.path());
         EXPECT_EQ(r.exitCode, 0);
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
