@@ -46,13 +46,6 @@ DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& s
     return touched;
 }
 
-DirtyRegion allLeavesOf(const openvdb::FloatTree& tree)
-{
-    DirtyRegion region;
-    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
-    return region;
-}
-
 } // namespace
 
 CsgOperation csgFromName(const std::string& name)
@@ -77,17 +70,17 @@ DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation op
         touched = combineLocally(grid, shape.grid(), operation);
         break;
     case CsgOperation::Intersection: {
-        touched = allLeavesOf(grid.tree());
+        touched = sculpt.allLeaves();
         auto copy = shape.grid().deepCopy();
         openvdb::tools::csgIntersection(grid, *copy);
         break;
     }
     case CsgOperation::Replace:
-        touched = allLeavesOf(grid.tree());
+        touched = sculpt.allLeaves();
         grid.setTree(shape.grid().tree().copy());
         break;
     }
-    if (operation == CsgOperation::Intersection || operation == CsgOperation::Replace) touched.merge(allLeavesOf(grid.tree()));
+    if (operation == CsgOperation::Intersection || operation == CsgOperation::Replace) touched.merge(sculpt.allLeaves());
     sculpt.markDirty(touched);
     return touched;
 }

@@ -43,6 +43,13 @@ FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
 
 double FieldImage::halfWidthVoxels() const { return double(mGrid->background()) / mVoxelSize; }
 
+DirtyRegion FieldImage::allLeaves() const
+{
+    DirtyRegion region;
+    for (auto leaf = mGrid->tree().cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
+    return region;
+}
+
 DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRegion{}); }
 
 } // namespace sculpt

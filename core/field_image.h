@@ -47,6 +47,8 @@ public:
     const DirtyRegion& dirtyRegion() const { return mDirty; }
     /// Returns the touched region and starts a new, empty one.
     DirtyRegion takeDirtyRegion();
+    /// Every leaf of the grid, for edits that change the whole field.
+    DirtyRegion allLeaves() const;
 
 private:
     openvdb::FloatGrid::Ptr mGrid;

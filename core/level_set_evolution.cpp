@@ -301,13 +301,6 @@ DirtyRegion copyBack(openvdb::FloatGrid& grid, const openvdb::FloatGrid& sub, co
     return touched;
 }
 
-DirtyRegion allLeaves(const openvdb::FloatTree& tree)
-{
-    DirtyRegion region;
-    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
-    return region;
-}
-
 } // namespace
 
 LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
@@ -400,13 +393,13 @@ void LevelSetEvolution::applyStep(double dt)
                mDiffusedSinceTrack >= mOptions.trackDiffusionVoxels2 * c.h * c.h;
     };
     if (!mRegion) {
-        DirtyRegion touched = allLeaves(grid.tree());
+        DirtyRegion touched = mField.allLeaves();
         rk2Step(grid, c, dt);
         if (trackDue()) {
             mDiffusedSinceTrack = 0.0;
             trackGrid(grid, mOptions);
             mMovedSinceTrack = 0.0;
-            touched.merge(allLeaves(grid.tree()));
+            touched.merge(mField.allLeaves());
         }
         mField.markDirty(touched);
         return;
@@ -430,7 +423,7 @@ void LevelSetEvolution::track()
     trackGrid(mField.mutableGrid(), mOptions);
     mMovedSinceTrack = 0.0;
     mDiffusedSinceTrack = 0.0;
-    mField.markDirty(allLeaves(mField.grid().tree()));
+    mField.markDirty(mField.allLeaves());
 }
 
 void LevelSetEvolution::advance(double duration)
