@@ -97,11 +97,16 @@ void BlockMesher::Scratch::configureCells()
     }
 }
 
-BlockMesher::BlockMesher(int blockVoxels)
+void BlockMesher::validateBlockSize(int blockVoxels)
 {
     if (blockVoxels < kLeafDim || blockVoxels > 64 || blockVoxels % kLeafDim != 0) {
         throw std::invalid_argument("block size must be a multiple of 8 between 8 and 64");
     }
+}
+
+BlockMesher::BlockMesher(int blockVoxels)
+{
+    validateBlockSize(blockVoxels);
     mScratch = std::make_unique<Scratch>(blockVoxels);
 }
 

@@ -22,6 +22,8 @@ public:
     /// @param blockVoxels B, a multiple of 8 between 8 and 64.
     /// @throws std::invalid_argument otherwise.
     explicit BlockMesher(int blockVoxels);
+    /// @throws std::invalid_argument unless blockVoxels is a multiple of 8 in [8, 64].
+    static void validateBlockSize(int blockVoxels);
     ~BlockMesher();
     BlockMesher(BlockMesher&&) noexcept;
 

@@ -26,23 +26,19 @@ DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& s
     const float outside = shape.background();  // where the shape is absent, neither op changes anything
     openvdb::CoordBBox box;
     shape.tree().evalLeafBoundingBox(box);
-    if (box.empty()) return touched;
     auto acc = grid.getAccessor();
     auto shapeAcc = shape.getConstAccessor();
-    for (int x = box.min().x() & ~7; x <= box.max().x(); x += 8)
-        for (int y = box.min().y() & ~7; y <= box.max().y(); y += 8)
-            for (int z = box.min().z() & ~7; z <= box.max().z(); z += 8) {
-                const openvdb::Coord origin(x, y, z);
-                const LeafT* from = shapeAcc.probeConstLeaf(origin);
-                if (!from && shapeAcc.getValue(origin) >= outside) continue;
-                LeafT* to = acc.touchLeaf(origin);
-                for (auto it = to->beginValueAll(); it; ++it) {
-                    const float value = std::clamp(apply(op, *it, shapeAcc.getValue(it.getCoord())), -background, background);
-                    it.setValue(value);
-                    it.setValueOn(std::abs(value) < background);
-                }
-                touched.addVoxel(origin);
-            }
+    for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(box)) {
+        const LeafT* from = shapeAcc.probeConstLeaf(origin);
+        if (!from && shapeAcc.getValue(origin) >= outside) continue;
+        LeafT* to = acc.touchLeaf(origin);
+        for (auto it = to->beginValueAll(); it; ++it) {
+            const float value = std::clamp(apply(op, *it, shapeAcc.getValue(it.getCoord())), -background, background);
+            it.setValue(value);
+            it.setValueOn(std::abs(value) < background);
+        }
+        touched.addVoxel(origin);
+    }
     return touched;
 }
 

@@ -32,6 +32,8 @@ public:
 
     /// Origin of the leaf (8^3 voxels) that holds voxel `ijk`.
     static openvdb::Coord leafOriginOf(const openvdb::Coord& ijk);
+    /// Origins of every leaf that overlaps the index box, x-major.
+    static std::vector<openvdb::Coord> leafOriginsIn(const openvdb::CoordBBox& box);
 
 private:
     std::set<openvdb::Coord> mLeafOrigins;

@@ -63,7 +63,7 @@ void requireKeyRange(const openvdb::FloatTree& tree)
 
 IncrementalMesher::IncrementalMesher(int blockVoxels) : mBlockVoxels(blockVoxels)
 {
-    BlockMesher check(blockVoxels);  // validates the block size
+    BlockMesher::validateBlockSize(blockVoxels);
 }
 
 void IncrementalMesher::rebuild(const FieldImage& field)

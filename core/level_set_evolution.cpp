@@ -43,7 +43,7 @@ struct StepConstants {
     const openvdb::FloatTree* target = nullptr;
     float alpha = 0.0f, clampWorld = 0.0f;
     double beta = 0.0;
-    double volumeSpeed = 0.0;  // uniform part of the speed (offset)
+    double uniformSpeed = 0.0;  // the offset term
     std::optional<LocalTerm> local;
     std::optional<MotionRegion> region;
     const openvdb::math::Transform* xform;
@@ -101,7 +101,7 @@ public:
                             c.region->radiusWorld * c.region->radiusWorld) {
             return std::nullopt;
         }
-        double speed = c.volumeSpeed;
+        double speed = c.uniformSpeed;
         if (mTarget || c.local) speed += extendedSpeed(s, x, y, z, ijk);
         double rate = 0.0;
         if (speed != 0.0) {
@@ -245,13 +245,11 @@ std::vector<openvdb::Coord> leavesNear(const openvdb::FloatGrid& grid, const Mot
     const openvdb::Vec3d centre = xform.worldToIndex(region.centreWorld);
     const double radiusVoxels = radius / xform.voxelSize()[0];
     std::vector<openvdb::Coord> origins;
-    for (int x = lo.x() & ~7; x <= hi.x(); x += 8)
-        for (int y = lo.y() & ~7; y <= hi.y(); y += 8)
-            for (int z = lo.z() & ~7; z <= hi.z(); z += 8) {
-                openvdb::Vec3d nearest;
-                for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(openvdb::Coord(x, y, z)[a]), double(openvdb::Coord(x, y, z)[a] + 7));
-                if ((nearest - centre).lengthSqr() <= radiusVoxels * radiusVoxels) origins.emplace_back(x, y, z);
-            }
+    for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(openvdb::CoordBBox(lo, hi))) {
+        openvdb::Vec3d nearest;
+        for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(origin[a]), double(origin[a] + 7));
+        if ((nearest - centre).lengthSqr() <= radiusVoxels * radiusVoxels) origins.push_back(origin);
+    }
     return origins;
 }
 
@@ -377,7 +375,7 @@ void LevelSetEvolution::applyStep(double dt)
         c.clampWorld = float(mTerms.target->clampWorld);
     }
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
-    c.volumeSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
+    c.uniformSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
     c.local = mTerms.local;
     c.region = mRegion;
     c.xform = &grid.transform();

@@ -29,9 +29,9 @@ std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set
         const openvdb::Coord lo = xform.worldToIndexCellCentered(box.min()).offsetBy(-marginVoxels);
         const openvdb::Coord hi = xform.worldToIndexCellCentered(box.max()).offsetBy(marginVoxels);
         requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float), describePrimitive(i, set.primitives()[size_t(i)].name));
-        for (int x = lo.x() & ~(kLeafDim - 1); x <= hi.x(); x += kLeafDim)
-            for (int y = lo.y() & ~(kLeafDim - 1); y <= hi.y(); y += kLeafDim)
-                for (int z = lo.z() & ~(kLeafDim - 1); z <= hi.z(); z += kLeafDim) leaves[openvdb::Coord(x, y, z)].push_back(i);
+        for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(openvdb::CoordBBox(lo, hi))) {
+            leaves[origin].push_back(i);
+        }
     }
     return leaves;
 }
