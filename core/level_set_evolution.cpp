@@ -2,6 +2,7 @@
 
 #include "dense_gather.h"
 #include "errors.h"
+#include "local_patch.h"
 #include "text_format.h"
 #include "volume_estimate.h"
 
@@ -43,10 +44,22 @@ struct StepConstants {
     const openvdb::FloatTree* target = nullptr;
     float alpha = 0.0f, clampWorld = 0.0f;
     double beta = 0.0;
+    std::optional<FalloffBall> smoothWeight;
     double uniformSpeed = 0.0;  // the offset term
     std::optional<LocalTerm> local;
     std::optional<MotionRegion> region;
     const openvdb::math::Transform* xform;
+
+    /// True if nothing can move in the leaf: only a weighted smoothing acts, and its ball
+    /// misses the leaf (a smoothing brush on a patch then costs its ball, not the patch).
+    bool leafIsStill(const openvdb::Coord& origin) const
+    {
+        if (!smoothWeight || target || local || uniformSpeed != 0.0) return false;
+        const openvdb::Vec3d centre = xform->worldToIndex(smoothWeight->centreWorld);
+        openvdb::Vec3d nearest;
+        for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(origin[a]), double(origin[a] + 7));
+        return (nearest - centre).length() * h > smoothWeight->radiusWorld;
+    }
 };
 
 /// One-sided differences along `axis` at (x, y, z): minus and plus.
@@ -109,7 +122,10 @@ public:
             for (int axis = 0; axis < 3; ++axis) oneSided(s, x, y, z, axis, c.scheme, c.invH, minus[axis], plus[axis]);
             rate -= speed * std::sqrt(openvdb::math::GodunovsNormSqrd(speed > 0.0, minus, plus));
         }
-        if (c.beta > 0.0) rate += c.beta * curvatureNormGrad(s, x, y, z, c.invH);
+        if (c.beta > 0.0) {
+            const double weight = c.smoothWeight ? c.smoothWeight->weightAt(c.xform->indexToWorld(ijk)) : 1.0;
+            if (weight > 0.0) rate += c.beta * weight * curvatureNormGrad(s, x, y, z, c.invH);
+        }
         return rate;
     }
 
@@ -152,7 +168,7 @@ void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leave
         for (size_t i = r.begin(); i < r.end(); ++i) {
             const LeafT& leaf = *leaves[i];
             std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
-            if (leaf.isEmpty()) continue;
+            if (leaf.isEmpty() || c.leafIsStill(leaf.origin())) continue;
             stencil.gather(tree, leaf.origin());
             for (auto it = leaf.cbeginValueOn(); it; ++it) {
                 const openvdb::Coord local = it.getCoord() - leaf.origin();
@@ -235,70 +251,6 @@ void trackGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
     tracker.track();
 }
 
-/// Origins of the leaves whose box comes within `reach` of the region's ball.
-std::vector<openvdb::Coord> leavesNear(const openvdb::FloatGrid& grid, const MotionRegion& region, double reach)
-{
-    const auto& xform = grid.transform();
-    const double radius = region.radiusWorld + reach;
-    const openvdb::Coord lo = xform.worldToIndexCellCentered(region.centreWorld - openvdb::Vec3d(radius));
-    const openvdb::Coord hi = xform.worldToIndexCellCentered(region.centreWorld + openvdb::Vec3d(radius));
-    const openvdb::Vec3d centre = xform.worldToIndex(region.centreWorld);
-    const double radiusVoxels = radius / xform.voxelSize()[0];
-    std::vector<openvdb::Coord> origins;
-    for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(openvdb::CoordBBox(lo, hi))) {
-        openvdb::Vec3d nearest;
-        for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(origin[a]), double(origin[a] + 7));
-        if ((nearest - centre).lengthSqr() <= radiusVoxels * radiusVoxels) origins.push_back(origin);
-    }
-    return origins;
-}
-
-/// A small grid reproducing `grid` exactly on the given leaf positions (leaves and tiles).
-openvdb::FloatGrid::Ptr extractLeaves(const openvdb::FloatGrid& grid, const std::vector<openvdb::Coord>& origins)
-{
-    auto sub = openvdb::FloatGrid::create(grid.background());
-    sub->setTransform(grid.transform().copy());
-    sub->setGridClass(openvdb::GRID_LEVEL_SET);
-    auto acc = grid.getConstAccessor();
-    for (const auto& origin : origins) {
-        if (const LeafT* leaf = acc.probeConstLeaf(origin)) {
-            sub->tree().addLeaf(new LeafT(*leaf));
-        } else {
-            sub->tree().addTile(1, origin, acc.getValue(origin), false);
-        }
-    }
-    return sub;
-}
-
-/// Copies the sub-grid's voxels within the ball (centre, reach) back into `grid`, over the given
-/// leaves; voxels outside the ball keep their values, so nothing beyond it changes.
-DirtyRegion copyBack(openvdb::FloatGrid& grid, const openvdb::FloatGrid& sub, const std::vector<openvdb::Coord>& origins,
-                     const MotionRegion& ball)
-{
-    DirtyRegion touched;
-    auto acc = grid.getAccessor();
-    auto subAcc = sub.getConstAccessor();
-    const openvdb::Vec3d centre = grid.transform().worldToIndex(ball.centreWorld);
-    const double reach = ball.radiusWorld / grid.voxelSize()[0];
-    for (const auto& origin : origins) {
-        const LeafT* from = subAcc.probeConstLeaf(origin);
-        LeafT* to = from ? acc.touchLeaf(origin) : acc.probeLeaf(origin);
-        if (!to) continue;  // neither grid has voxels here: only tiles, which the step never moves
-        bool changed = false;
-        for (auto it = to->beginValueAll(); it; ++it) {
-            if ((it.getCoord().asVec3d() - centre).lengthSqr() > reach * reach) continue;
-            const float value = subAcc.getValue(it.getCoord());
-            const bool active = subAcc.isValueOn(it.getCoord());
-            if (value == *it && active == it.isValueOn()) continue;
-            it.setValue(value);
-            it.setValueOn(active);
-            changed = true;
-        }
-        if (changed) touched.addVoxel(origin);
-    }
-    return touched;
-}
-
 } // namespace
 
 LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
@@ -375,6 +327,7 @@ void LevelSetEvolution::applyStep(double dt)
         c.clampWorld = float(mTerms.target->clampWorld);
     }
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
+    if (mTerms.smooth) c.smoothWeight = mTerms.smooth->weight;
     c.uniformSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
     c.local = mTerms.local;
     c.region = mRegion;
@@ -403,17 +356,15 @@ void LevelSetEvolution::applyStep(double dt)
         return;
     }
     // Local: move a copy of the leaves around the region, track it there, copy the inside back.
-    const double band = grid.background();
-    const auto inner = leavesNear(grid, *mRegion, band + c.h);
-    const auto outer = leavesNear(grid, *mRegion, band + c.h + 8.0 * c.h + kApron * c.h);
-    auto sub = extractLeaves(grid, outer);
-    rk2Step(*sub, c, dt);
+    LocalPatch patch(mField, Capsule::ball(mRegion->centreWorld, mRegion->radiusWorld + grid.background() + c.h));
+    openvdb::FloatGrid& copy = patch.field().mutableGrid();
+    rk2Step(copy, c, dt);
     if (trackDue()) {
         mDiffusedSinceTrack = 0.0;
-        trackGrid(*sub, mOptions);
+        trackGrid(copy, mOptions);
         mMovedSinceTrack = 0.0;
     }
-    mField.markDirty(copyBack(grid, *sub, inner, {mRegion->centreWorld, mRegion->radiusWorld + band + c.h}));
+    patch.commit(mField, nullptr);
 }
 
 void LevelSetEvolution::track()

@@ -13,7 +13,7 @@ void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& 
 {
     if (iterations < 0) throw InputError("iterations must be >= 0 (got " + std::to_string(iterations) + ")");
     MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0};
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
     if (keepVolume) terms.volume = VolumeTerm{estimateVolumeArea(field.grid()).volume, 1.0};
     LevelSetEvolution evolution(field, terms);
     for (int i = 0; i < iterations; ++i) {

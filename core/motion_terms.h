@@ -4,6 +4,8 @@
 ///        F = F_target + F_smooth + F_volume + F_local, with dphi/dt + F |grad phi| = 0 and
 ///        F > 0 moving the surface outwards.
 
+#include "falloff.h"
+
 #include <openvdb/openvdb.h>
 
 #include <optional>
@@ -22,6 +24,8 @@ struct TargetTerm {
 /// A sphere follows r(t)^2 = r0^2 - 4 beta t.
 struct SmoothTerm {
     double beta = 1.0;  ///< world units^2 per unit time
+    /// If set, beta is scaled by this ball's falloff at each voxel: a smoothing brush.
+    std::optional<FalloffBall> weight;
 };
 
 /// F_V = gamma (V* - V) / (A tau), V and A measured on the current surface, tau the step: a

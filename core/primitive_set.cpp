@@ -79,4 +79,20 @@ openvdb::BBoxd PrimitiveSet::influence(int i) const
     return box;
 }
 
+openvdb::BBoxd PrimitiveSet::influence() const
+{
+    openvdb::BBoxd box;
+    for (int i = 0; i < int(mPrimitives.size()); ++i) box.expand(influence(i));
+    return box;
+}
+
+PrimitiveSet PrimitiveSet::translated(const openvdb::Vec3d& offset) const
+{
+    PrimitiveSet moved = *this;
+    for (Primitive& primitive : moved.mPrimitives) {
+        for (openvdb::Vec3d& point : primitive.skeleton.points) point += offset;
+    }
+    return moved;
+}
+
 } // namespace sculpt

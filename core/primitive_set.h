@@ -41,6 +41,10 @@ public:
     const std::vector<Primitive>& primitives() const { return mPrimitives; }
     /// World box of primitive i's influence: its skeleton grown by its radius.
     openvdb::BBoxd influence(int i) const;
+    /// World box of the whole set's influence.
+    openvdb::BBoxd influence() const;
+    /// The same set moved by `offset` (a primitive stamp placed on the surface).
+    PrimitiveSet translated(const openvdb::Vec3d& offset) const;
 
 private:
     std::vector<Primitive> mPrimitives;

@@ -1,6 +1,7 @@
 #include "scene_file.h"
 
 #include "errors.h"
+#include "json_fields.h"
 
 #include <nlohmann/json.hpp>
 
@@ -14,32 +15,9 @@ namespace sculpt {
 namespace {
 
 using nlohmann::json;
-
-const json& field(const json& object, const char* key, const std::string& where)
-{
-    if (!object.is_object() || !object.contains(key)) throw InputError(where + ": missing field '" + key + "'");
-    return object.at(key);
-}
-
-double number(const json& object, const char* key, const std::string& where)
-{
-    const json& value = field(object, key, where);
-    if (!value.is_number() || !std::isfinite(value.get<double>())) {
-        throw InputError(where + ": field '" + key + "' must be a finite number");
-    }
-    return value.get<double>();
-}
-
-openvdb::Vec3d vec3(const json& value, const std::string& where)
-{
-    if (!value.is_array() || value.size() != 3) throw InputError(where + " must be an array of 3 numbers");
-    openvdb::Vec3d v;
-    for (int i = 0; i < 3; ++i) {
-        if (!value[size_t(i)].is_number()) throw InputError(where + " must be an array of 3 numbers");
-        v[i] = value[size_t(i)].get<double>();
-    }
-    return v;
-}
+using json_fields::field;
+using json_fields::number;
+using json_fields::vec3;
 
 openvdb::Mat3d rotationFromDegrees(const openvdb::Vec3d& degrees)
 {
@@ -123,12 +101,7 @@ std::vector<Primitive> parsePrimitives(const json& list, bool& graph, const std:
 
 Scene parseScene(const std::string& text, const std::string& source)
 {
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError(source + ": malformed JSON (" + e.what() + ")");
-    }
+    const json root = json_fields::parse(text, source);
     if (!root.is_object()) throw InputError(source + ": a scene must be a JSON object");
     bool graph = false;
     std::vector<Primitive> primitives = parsePrimitives(field(root, "primitives", source), graph, source);

@@ -38,6 +38,7 @@ int main(int argc, char** argv)
     sculpt::cli::addOffsetCommand(app);
     sculpt::cli::addMorphCommand(app);
     sculpt::cli::addBuildCommand(app);
+    sculpt::cli::addApplyCommand(app);
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);

@@ -31,7 +31,7 @@ TEST(LevelSetEvolution, MeanCurvatureFlowShrinksSphereAsR2Minus4BetaT)
     const double r0 = 20.0, beta = 1.0;
     FieldImage field = makeSphere(r0, 1.0);
     MotionTerms terms;
-    terms.smooth = SmoothTerm{beta};
+    terms.smooth = SmoothTerm{beta, std::nullopt};
     LevelSetEvolution evolution(field, terms);
     const double end = (r0 * r0 - 0.25 * r0 * r0) / (4.0 * beta);  // until r = r0 / 2
     for (double t = end / 5.0; t <= end + 1e-9; t += end / 5.0) {
@@ -96,7 +96,7 @@ TEST(LevelSetEvolution, RegionStepLeavesTheRestBitIdentical)
     const FieldImage before(field.grid().deepCopy());
     const MotionRegion region{{17.0, 0.0, 0.0}, 7.0};
     MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0};
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
     LevelSetEvolution evolution(field, terms, {}, region);
     const double k0 = test::curvatureVariance(field, std::make_pair(region.centreWorld, region.radiusWorld));
     field.takeDirtyRegion();
@@ -123,7 +123,7 @@ TEST(LevelSetEvolution, RejectsBadCoefficients)
 {
     FieldImage field = makeSphere(8.0, 1.0);
     MotionTerms terms;
-    terms.smooth = SmoothTerm{-1.0};
+    terms.smooth = SmoothTerm{-1.0, std::nullopt};
     EXPECT_THROW(LevelSetEvolution(field, terms), InputError);
     EXPECT_THROW(smooth(field, -3), InputError);
     EXPECT_THROW(offset(field, std::nan("")), InputError);

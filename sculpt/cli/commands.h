@@ -24,5 +24,7 @@ void addOffsetCommand(CLI::App& app);
 void addMorphCommand(CLI::App& app);
 /// `sculpt build`: bake a primitive scene, alone or into a base document.
 void addBuildCommand(CLI::App& app);
+/// `sculpt apply`: replay a stroke script on a document.
+void addApplyCommand(CLI::App& app);
 
 } // namespace sculpt::cli

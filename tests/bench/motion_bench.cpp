@@ -25,7 +25,7 @@ void BM_OursSmoothStep(benchmark::State& state)
 {
     FieldImage field = makeSphere(double(state.range(0)), 1.0);
     MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0};
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
     LevelSetEvolution evolution(field, terms);
     for (auto _ : state) evolution.step();
 }
@@ -42,7 +42,7 @@ void BM_OursRegionSmoothStep(benchmark::State& state)
     const double radius = double(state.range(0));
     FieldImage field = makeSphere(radius, 1.0);
     MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0};
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
     LevelSetEvolution evolution(field, terms, {}, MotionRegion{{radius, 0.0, 0.0}, 16.0});
     for (auto _ : state) evolution.step();
 }
