@@ -57,12 +57,81 @@ openvdb::Vec3d vec3(const json& value, const std::string& what)
     return v;
 }
 
+namespace {
+
+/// Follows where a SAX parse is (events[3].samples[0][1]) to say where malformed JSON fails.
+class PathTracker : public nlohmann::json_sax<json> {
+public:
+    std::string path() const
+    {
+        std::string text;
+        for (const Level& level : mStack) {
+            if (level.array) text += "[" + std::to_string(level.index) + "]";
+            else if (!level.key.empty()) text += (text.empty() ? "" : ".") + level.key;
+        }
+        return text;
+    }
+    const std::string& error() const { return mError; }
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(false); }
+    bool key(string_t& key) override
+    {
+        mStack.back().key = key;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(true); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override
+    {
+        mError = e.what();
+        return false;
+    }
+
+private:
+    struct Level {
+        bool array;
+        std::size_t index = 0;
+        std::string key;
+    };
+    bool value()
+    {
+        if (!mStack.empty() && mStack.back().array) ++mStack.back().index;
+        return true;
+    }
+    bool open(bool array)
+    {
+        mStack.push_back({array, 0, {}});
+        return true;
+    }
+    bool close()
+    {
+        mStack.pop_back();
+        return value();
+    }
+    std::vector<Level> mStack;
+    std::string mError;
+};
+
+} // namespace
+
 json parse(const std::string& text, const std::string& source)
 {
     try {
         return json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw InputError(source + ": malformed JSON (" + e.what() + ")");
+    } catch (const json::exception& e) {
+        PathTracker tracker;
+        json::sax_parse(text, &tracker);
+        const std::string where = tracker.path();
+        throw InputError(source + ": malformed JSON" + (where.empty() ? "" : " at " + where) + " (" +
+                         (tracker.error().empty() ? e.what() : tracker.error()) + ")");
     }
 }
 
