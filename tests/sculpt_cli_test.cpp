@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 
 namespace sculpt {
 namespace {
@@ -18,6 +19,12 @@ namespace {
 using test::runSculpt;
 using test::TempDir;
 constexpr double kPi = 3.14159265358979323846;
+
+std::string fileBytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
 
 nlohmann::json infoJson(const TempDir& dir, const std::string& file)
 {
@@ -96,13 +103,22 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "bad.json") << R"({"primitives": [{"name": "arm", "kernel": "metaball", "radius": -2,
         "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
     std::ofstream(dir / "broken.json") << R"({"primitives": [)";
+    const std::string stroke = R"({"tool": "add", "radius": 1, "samples": [[5, 0, 0]]})";
+    std::ofstream(dir / "s_ok.json") << R"({"events": [)" << stroke << "]}";
+    std::ofstream(dir / "s_tool.json") << R"({"events": [)" << stroke << R"(, {"tool": "sponge", "radius": 1, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_field.json") << R"({"events": [{"tool": "add", "radius": 1}]})";
+    std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
+    std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
     const auto before = dir.entries();
+    const auto goodBytes = fileBytes(dir / "good.vdb");
 
     const auto r = runSculpt(GetParam().args, dir.path());
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_NE(r.err.find(GetParam().mentions), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_EQ(dir.entries(), before);
+    EXPECT_EQ(fileBytes(dir / "good.vdb"), goodBytes);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -126,6 +142,14 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"build broken.json -o out.vdb", "malformed JSON"},
                       BadCall{"build missing.json -o out.vdb", "missing.json"},
                       BadCall{"build bad.json --into corrupt.vdb -o out.vdb", "radius"},
+                      BadCall{"apply good.vdb s_tool.json -o out.vdb", "s_tool.json: events[1] ('sponge' stroke): unknown tool"},
+                      BadCall{"apply good.vdb s_field.json -o out.vdb", "events[0] ('add' stroke): missing field 'samples'"},
+                      BadCall{"apply good.vdb s_inf.json -o out.vdb", "malformed JSON at events[0].samples[0][2]"},
+                      BadCall{"apply good.vdb s_radius.json -o out.vdb", "events[0] ('carve' stroke): field 'radius' must be a positive"},
+                      BadCall{"apply good.vdb s_huge.json -o out.vdb", "events[1] ('inflate' stroke): field 'radius' (90) is larger than the model"},
+                      BadCall{"apply corrupt.vdb s_ok.json -o out.vdb", "corrupt.vdb"},
+                      BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
+                      BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
                       BadCall{"", "ubcommand"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
@@ -190,10 +214,32 @@ TEST(SculptCli, BuildBakesScenesAloneAndIntoADocument)
     EXPECT_EQ(infoJson(dir, "carved.vdb")["euler_characteristic"], 2);
 }
 
+TEST(SculptCli, ApplyReplaysTheFaceScriptOnTheClayBall)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
+    const std::string script = "'" SCULPT_DATA_DIR "/strokes/face.json'";
+    auto r = runSculpt("apply clay.vdb " + script + " -o face.vdb --mesh face.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("2 undo, 1 redo"), std::string::npos) << r.out;
+    const auto face = infoJson(dir, "face.vdb");
+    const double clay = infoJson(dir, "clay.vdb")["volume"].get<double>();
+    EXPECT_EQ(face["components"], 1);
+    EXPECT_GT(std::abs(face["volume"].get<double>() - clay), 100.0);  // sculpted, not the ball
+    const auto vtk = test::vtkMeshReport(dir / "face.ply");
+    EXPECT_EQ(vtk.boundaryEdges, 0);
+    EXPECT_EQ(vtk.nonManifoldEdges, 0);
+    EXPECT_NEAR(vtk.volume, face["volume"].get<double>(), 0.01 * face["volume"].get<double>());
+
+    r = runSculpt("apply clay.vdb " + script + " -o again.vdb --threads 1", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(infoJson(dir, "again.vdb"), face);
+}
+
 TEST(SculptCli, HelpExplainsEveryCommand)
 {
     TempDir dir;
-    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build"}) {
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply"}) {
         const auto r = runSculpt(std::string(command) + " --help", dir.path());
         EXPECT_EQ(r.exitCode, 0);
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
