@@ -47,10 +47,9 @@ std::vector<openvdb::Coord> blocksReading(const DirtyRegion& dirty, int B)
     return {origins.begin(), origins.end()};
 }
 
-void requireKeyRange(const openvdb::FloatTree& tree)
+/// Edge keys pack index coordinates in 20 bits each: refuse boxes beyond that range.
+void requireKeyRange(const openvdb::CoordBBox& box)
 {
-    openvdb::CoordBBox box;
-    tree.evalLeafBoundingBox(box);
     constexpr int limit = (1 << 19) - 128;
     for (int axis = 0; axis < 3 && !box.empty(); ++axis) {
         if (box.min()[axis] < -limit || box.max()[axis] > limit) {
@@ -68,7 +67,9 @@ IncrementalMesher::IncrementalMesher(int blockVoxels) : mBlockVoxels(blockVoxels
 
 void IncrementalMesher::rebuild(const FieldImage& field)
 {
-    requireKeyRange(field.grid().tree());
+    openvdb::CoordBBox box;
+    field.grid().tree().evalLeafBoundingBox(box);
+    requireKeyRange(box);
     const auto origins = blocksWithLeaves(field.grid().tree(), mBlockVoxels);
     std::map<openvdb::Coord, BlockMesh> previous;
     previous.swap(mBlocks);
@@ -80,7 +81,9 @@ void IncrementalMesher::rebuild(const FieldImage& field)
 
 std::size_t IncrementalMesher::update(const FieldImage& field, const DirtyRegion& dirty)
 {
-    requireKeyRange(field.grid().tree());
+    openvdb::CoordBBox box;  // of the dirty leaves only: the rest was checked when meshed
+    for (const openvdb::Coord& origin : dirty.leafOrigins()) box.expand(openvdb::CoordBBox::createCube(origin, 8));
+    requireKeyRange(box);
     const auto origins = blocksReading(dirty, mBlockVoxels);
     remesh(field, origins);
     return origins.size();

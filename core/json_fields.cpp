@@ -57,6 +57,18 @@ openvdb::Vec3d vec3(const json& value, const std::string& what)
     return v;
 }
 
+void onlyFields(const json& object, std::initializer_list<const char*> allowed, const std::string& where)
+{
+    for (const auto& item : object.items()) {
+        bool known = false;
+        for (const char* name : allowed) known = known || item.key() == name;
+        if (known) continue;
+        std::string list;
+        for (const char* name : allowed) list += std::string(list.empty() ? "" : ", ") + name;
+        throw InputError(where + ": unknown field '" + item.key() + "' (expected " + list + ")");
+    }
+}
+
 namespace {
 
 /// Follows where a SAX parse is (events[3].samples[0][1]) to say where malformed JSON fails.

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <initializer_list>
 #include <string>
 
 namespace sculpt::json_fields {
@@ -25,6 +26,9 @@ std::string textOr(const nlohmann::json& object, const char* key, const std::str
 bool flagOr(const nlohmann::json& object, const char* key, bool fallback, const std::string& where);
 /// An array of 3 finite numbers; `what` names it in messages.
 openvdb::Vec3d vec3(const nlohmann::json& value, const std::string& what);
+/// InputError naming the first field of `object` not in `allowed` (a typo would otherwise be
+/// silently ignored).
+void onlyFields(const nlohmann::json& object, std::initializer_list<const char*> allowed, const std::string& where);
 /// Parses text, or InputError "<source>: malformed JSON (...)".
 nlohmann::json parse(const std::string& text, const std::string& source);
 

@@ -34,6 +34,7 @@ StrokeSample parseSample(const json& j, const std::string& where)
         s.positionWorld = vec3(j, where + ": field 'position'");
         return s;
     }
+    onlyFields(j, {"position", "pressure", "view"}, where);
     s.positionWorld = vec3(field(j, "position", where), where + ": field 'position'");
     s.pressure = numberOr(j, "pressure", 1.0, where);
     if (j.contains("view")) s.viewDirection = vec3(j["view"], where + ": field 'view'");
@@ -71,6 +72,8 @@ std::shared_ptr<const PrimitiveStamp> parsePrimitives(const json& j, const std::
 
 Stroke parseStroke(const json& j, const std::string& where, const std::filesystem::path& baseDir)
 {
+    onlyFields(j, {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives"},
+               where);
     Stroke stroke;
     BrushSettings& brush = stroke.brush;
     try {
@@ -102,6 +105,7 @@ ScriptEvent parseEvent(const json& j, const std::string& where, const std::files
 {
     if (!j.is_object()) throw InputError(where + " must be an object");
     if (j.contains("action")) {
+        onlyFields(j, {"action"}, where);
         const std::string action = textOr(j, "action", "", where);
         if (action == "undo") return {ScriptEvent::Kind::Undo, {}};
         if (action == "redo") return {ScriptEvent::Kind::Redo, {}};
@@ -117,6 +121,7 @@ StrokeScript parseStrokeScript(const std::string& text, const std::string& sourc
 {
     const json root = parse(text, source);
     if (!root.is_object()) throw InputError(source + ": a stroke script must be a JSON object");
+    onlyFields(root, {"format", "version", "description", "events"}, source);
     if (textOr(root, "format", kFormat, source) != kFormat) {
         throw InputError(source + ": field 'format' must be \"" + std::string(kFormat) + "\"");
     }

@@ -257,6 +257,8 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
     EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
               "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
     EXPECT_NE(parseError("[{").find("malformed JSON"), std::string::npos);
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "strenght": 1, )" + ok + "}]").substr(0, 68),
+              "s.json: events[0] ('add' stroke): unknown field 'strenght' (expected");
     EXPECT_NE(parseError(R"([{"tool": "add", "radius": 1, "symmetry": ["w"], )" + ok + "}]").find("'symmetry'"),
               std::string::npos);
 }
