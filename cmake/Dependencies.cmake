@@ -2,7 +2,7 @@
 # VTK must come before anything that loads OpenVDB's FindTBB.cmake, otherwise
 # CMake stops with "Some (but not all) targets in this export set were already defined".
 find_package(VTK 9 REQUIRED COMPONENTS
-  CommonCore CommonDataModel FiltersCore IOGeometry IOPLY)
+  CommonCore CommonDataModel FiltersCore FiltersSources IOGeometry IOImage IOPLY ImagingCore ImagingGeneral)
 
 list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
 # Debian's FindOpenVDB.cmake asks for Boost iostreams (libboost-iostreams-dev).

@@ -10,6 +10,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  mricron-data
 )
 
 missing=()

@@ -39,6 +39,7 @@ int main(int argc, char** argv)
     sculpt::cli::addMorphCommand(app);
     sculpt::cli::addBuildCommand(app);
     sculpt::cli::addApplyCommand(app);
+    sculpt::cli::addImportCommand(app);
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);

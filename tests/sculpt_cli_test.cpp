@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -110,6 +111,8 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
     std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
     std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "junk.nii") << "not a NIfTI header, just some words";
+    std::ofstream(dir / "tiny.raw") << "tiny";
     const auto before = dir.entries();
     const auto goodBytes = fileBytes(dir / "good.vdb");
 
@@ -150,6 +153,11 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCall{"apply corrupt.vdb s_ok.json -o out.vdb", "corrupt.vdb"},
                       BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
                       BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
+                      BadCall{"import junk.nii -o out.vdb", "junk.nii"},
+                      BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
+                      BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
+                      BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
+                      BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
                       BadCall{"", "ubcommand"}),
     [](const auto& info) { return "case" + std::to_string(info.index); });
 
@@ -236,10 +244,37 @@ TEST(SculptCli, ApplyReplaysTheFaceScriptOnTheClayBall)
     EXPECT_EQ(infoJson(dir, "again.vdb"), face);
 }
 
+TEST(SculptCli, ImportMeshesAndScansAndMorphTowardsAMesh)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.25 -o ball.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("mesh ball.vdb -o ball.stl", dir.path()).exitCode, 0);
+    auto r = runSculpt("import ball.stl --voxel-size 0.25 -o back.vdb --mesh back.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double original = infoJson(dir, "ball.vdb")["volume"].get<double>();
+    EXPECT_NEAR(infoJson(dir, "back.vdb")["volume"].get<double>(), original, 0.01 * original);
+    EXPECT_EQ(test::vtkMeshReport(dir / "back.ply").boundaryEdges, 0);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 4 --voxel-size 0.25 -o box.vdb", dir.path()).exitCode, 0);
+    r = runSculpt("morph box.vdb ball.stl --frames 2 -o frames", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "frames/frame_0001.vdb"));
+
+    const char* mri = "/usr/share/mricron/templates/ch2bet.nii.gz";
+    if (!std::filesystem::exists(mri)) GTEST_SKIP() << mri << " missing: apt-get install mricron-data";
+    r = runSculpt(std::string("import ") + mri + " --largest-component -o brain.vdb --mesh brain.stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("(Otsu)"), std::string::npos) << r.out;
+    EXPECT_EQ(infoJson(dir, "brain.vdb")["components"], 1);
+    const auto brain = test::vtkMeshReport(dir / "brain.stl");
+    EXPECT_EQ(brain.boundaryEdges, 0);
+    EXPECT_GT(brain.volume, 1.0e6);  // a human brain: well over a litre in mm^3
+}
+
 TEST(SculptCli, HelpExplainsEveryCommand)
 {
     TempDir dir;
-    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply"}) {
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply", "import"}) {
         const auto r = runSculpt(std::string(command) + " --help", dir.path());
         EXPECT_EQ(r.exitCode, 0);
         EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;

@@ -26,5 +26,7 @@ void addMorphCommand(CLI::App& app);
 void addBuildCommand(CLI::App& app);
 /// `sculpt apply`: replay a stroke script on a document.
 void addApplyCommand(CLI::App& app);
+/// `sculpt import`: a scan or a mesh as a new document.
+void addImportCommand(CLI::App& app);
 
 } // namespace sculpt::cli

@@ -6,6 +6,7 @@
 #include <incremental_mesher.h>
 #include <mesh_file.h>
 #include <morph.h>
+#include <shape_import.h>
 #include <vdb_file.h>
 
 #include <CLI/CLI.hpp>
@@ -47,8 +48,14 @@ void prepareDirectory(const fs::path& dir)
 void runMorph(const MorphCommandOptions& o)
 {
     if (!o.mesh.empty()) meshFormatOf("frame." + o.mesh);
-    const FieldImage source = readFieldImage(o.source);
-    const FieldImage target = readFieldImage(o.target);
+    // Documents keep their voxels; a scan or mesh takes the other shape's voxel size.
+    std::vector<std::string> warnings;
+    const bool sourceIsDocument = fs::path(o.source).extension() == ".vdb";
+    const FieldImage first = loadShape(sourceIsDocument ? o.source : o.target, std::nullopt, warnings);
+    const FieldImage second = loadShape(sourceIsDocument ? o.target : o.source, first.voxelSize(), warnings);
+    const FieldImage& source = sourceIsDocument ? first : second;
+    const FieldImage& target = sourceIsDocument ? second : first;
+    for (const std::string& warning : warnings) std::cerr << "sculpt: warning: " << warning << "\n";
     prepareDirectory(o.directory);
 
     MorphSummary summary;
@@ -83,8 +90,8 @@ void addMorphCommand(CLI::App& app)
                  "by level-set motion (growing where the target is larger, shrinking where it is\n"
                  "smaller, changing topology as needed). Writes DIR/frame_0000.vdb ... evenly\n"
                  "spaced in morph time; the last frame is the converged shape.");
-    cmd->add_option("source", options->source, "the .vdb document to start from")->required();
-    cmd->add_option("target", options->target, "the .vdb document to arrive at")->required();
+    cmd->add_option("source", options->source, "the shape to start from: a .vdb document, a scan or a mesh (as for import)")->required();
+    cmd->add_option("target", options->target, "the shape to arrive at: a .vdb document, a scan or a mesh")->required();
     cmd->add_option("--frames", options->morph.frames, "number of frames, first and last included")
         ->check(CLI::Range(2, 100000))
         ->capture_default_str();

@@ -1,0 +1,124 @@
+#include "commands.h"
+#include "progress_bar.h"
+
+#include <atomic_file.h>
+#include <errors.h>
+#include <field_measures.h>
+#include <incremental_mesher.h>
+#include <mesh_file.h>
+#include <shape_import.h>
+#include <vdb_file.h>
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace sculpt::cli {
+
+namespace {
+
+struct ImportCommandOptions {
+    std::string input, output, mesh;
+    double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
+    bool autoIso = false, largest = false;
+    std::vector<int> crop;
+    std::vector<int> rawDims;
+    std::string rawType = "uint8";
+    std::vector<double> rawSpacing{1.0, 1.0, 1.0}, rawOrigin{0.0, 0.0, 0.0};
+    bool rawBigEndian = false;
+    std::size_t rawHeader = 0;
+    CLI::Option* isoOption = nullptr;
+    CLI::Option* voxelOption = nullptr;
+};
+
+ImportOptions toImportOptions(const ImportCommandOptions& o)
+{
+    ImportOptions options;
+    if (o.isoOption->count()) options.iso = o.iso;
+    if (o.voxelOption->count()) options.voxelSize = o.voxelSize;
+    if (!o.crop.empty()) {
+        options.crop = openvdb::CoordBBox(openvdb::Coord(o.crop[0], o.crop[1], o.crop[2]),
+                                          openvdb::Coord(o.crop[3], o.crop[4], o.crop[5]));
+    }
+    options.smoothSigma = o.smooth;
+    options.largestComponent = o.largest;
+    if (!o.rawDims.empty()) {
+        RawLayout raw;
+        raw.dims = openvdb::Coord(o.rawDims[0], o.rawDims[1], o.rawDims[2]);
+        raw.type = o.rawType;
+        raw.spacing = openvdb::Vec3d(o.rawSpacing[0], o.rawSpacing[1], o.rawSpacing[2]);
+        raw.origin = openvdb::Vec3d(o.rawOrigin[0], o.rawOrigin[1], o.rawOrigin[2]);
+        raw.bigEndian = o.rawBigEndian;
+        raw.headerBytes = o.rawHeader;
+        options.raw = raw;
+    }
+    return options;
+}
+
+void runImport(const ImportCommandOptions& o)
+{
+    AtomicFile::checkTarget(o.output);
+    if (!o.mesh.empty()) {
+        meshFormatOf(o.mesh);
+        AtomicFile::checkTarget(o.mesh);
+    }
+    ImportReport report;
+    const FieldImage field = [&] {
+        ProgressBar bar("importing");
+        return importShape(o.input, toImportOptions(o), report, bar.callback());
+    }();
+    for (const std::string& warning : report.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
+    writeFieldImage(field, o.output);
+    const FieldMeasures m = measureField(field);
+    std::cout << "imported " << o.input << " (" << report.kind << ")";
+    if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
+    std::cout << ", voxel size " << report.voxelSize;
+    if (o.largest) std::cout << ", " << report.componentsDropped << " smaller pieces dropped";
+    std::cout << "\nwrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
+              << " components\n";
+    if (!o.mesh.empty()) {
+        const TriangleMesh mesh = meshLevelSet(field);
+        writeMesh(mesh, o.mesh);
+        std::cout << "wrote " << o.mesh << ": " << mesh.triangles.size() << " triangles\n";
+    }
+}
+
+} // namespace
+
+void addImportCommand(CLI::App& app)
+{
+    auto o = std::make_shared<ImportCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "import", "Turn a medical scan or a mesh into an editable document.\n"
+                  "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), a DICOM\n"
+                  "series (a directory of slices), or raw samples (--raw-dims ...). The surface is where\n"
+                  "the samples cross the iso-value (inside: above it); spacing, origin and orientation\n"
+                  "are kept, so the surface sits where the scan says.\n"
+                  "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
+    cmd->add_option("input", o->input, "the scan file, DICOM directory or mesh file")->required();
+    o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");
+    cmd->add_flag("--auto-iso", o->autoIso, "choose the iso-value by Otsu's method (the default without --iso)")
+        ->excludes(o->isoOption);
+    o->voxelOption = cmd->add_option("--voxel-size", o->voxelSize,
+                                     "voxel size of the document (default: the scan's smallest spacing; a mesh's longest side / 256)");
+    cmd->add_option("--crop", o->crop, "scan sample box x0,y0,z0,x1,y1,z1 (indices, inclusive)")
+        ->delimiter(',')
+        ->expected(6);
+    cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--largest-component", o->largest, "keep only the largest connected piece (drops islands)");
+    cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);
+    cmd->add_option("--raw-type", o->rawType, "raw input: uint8, int8, uint16, int16, uint32, int32, float32, float64")
+        ->capture_default_str();
+    cmd->add_option("--raw-spacing", o->rawSpacing, "raw input: voxel size along x,y,z")->delimiter(',')->expected(3);
+    cmd->add_option("--raw-origin", o->rawOrigin, "raw input: world position of the first sample")->delimiter(',')->expected(3);
+    cmd->add_flag("--raw-big-endian", o->rawBigEndian, "raw input: most significant byte first");
+    cmd->add_option("--raw-header", o->rawHeader, "raw input: bytes to skip before the samples");
+    cmd->add_option("-o,--output", o->output, "the .vdb document to write")->required();
+    cmd->add_option("--mesh", o->mesh, "also write the surface as .ply, .obj or .stl");
+    cmd->callback([o] { runImport(*o); });
+}
+
+} // namespace sculpt::cli
