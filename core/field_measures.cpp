@@ -2,7 +2,6 @@
 
 #include "incremental_mesher.h"
 
-#include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tree/LeafManager.h>
 
@@ -52,12 +51,27 @@ struct CrossingBounds {
     void join(const CrossingBounds& other) { box.expand(other.box); }
 };
 
-/// V - E + F of our welded mesh, which is closed (E = 3F/2): exact topology, unlike the
-/// Gauss-Bonnet integral of LevelSetMeasure, which creases (CSG, carving) throw off.
-int meshEulerCharacteristic(const FieldImage& field)
+/// Volume (divergence theorem), area and V - E + F of our welded mesh. It is closed (E = 3F/2),
+/// so the Euler characteristic is exact, unlike the Gauss-Bonnet integral of LevelSetMeasure,
+/// which creases (CSG, carving) throw off; and volume and area are those of the surface the
+/// user exports, whatever |grad phi| is (LevelSetMeasure assumes 1: imported scans keep the
+/// scanner's crossings, where it is not).
+void measureMesh(const FieldImage& field, FieldMeasures& m)
 {
     const TriangleMesh mesh = meshLevelSet(field);
-    return int(std::int64_t(mesh.positions.size()) - std::int64_t(mesh.triangles.size()) / 2);
+    double volume = 0.0, area = 0.0;
+    for (const auto& t : mesh.triangles) {
+        const auto at = [&](std::uint32_t i) {
+            const auto& p = mesh.positions[i];
+            return openvdb::Vec3d(p[0], p[1], p[2]);
+        };
+        const openvdb::Vec3d a = at(t[0]), b = at(t[1]), c = at(t[2]);
+        volume += a.dot(b.cross(c)) / 6.0;
+        area += 0.5 * (b - a).cross(c - a).length();
+    }
+    m.volume = volume;
+    m.area = area;
+    m.eulerCharacteristic = int(std::int64_t(mesh.positions.size()) - std::int64_t(mesh.triangles.size()) / 2);
 }
 
 int countSurfaceComponents(const openvdb::FloatGrid& grid)
@@ -87,10 +101,7 @@ FieldMeasures measureField(const FieldImage& field)
         m.bboxMax = grid.transform().indexToWorld(bounds.box.max());
     }
 
-    openvdb::tools::LevelSetMeasure<openvdb::FloatGrid> measure(grid);
-    m.area = measure.area(true);
-    m.volume = measure.volume(true);
-    m.eulerCharacteristic = meshEulerCharacteristic(field);
+    measureMesh(field, m);
     m.components = countSurfaceComponents(grid);
     return m;
 }

@@ -15,14 +15,14 @@ struct FieldMeasures {
     std::uint64_t memoryBytes = 0;     ///< in-core size of the grid's tree
     openvdb::Vec3d bboxMin{0.0};       ///< world bounding box of the surface (empty shape: 0)
     openvdb::Vec3d bboxMax{0.0};
-    double volume = 0.0;               ///< enclosed volume, world units^3 (LevelSetMeasure)
-    double area = 0.0;                 ///< surface area, world units^2 (LevelSetMeasure)
+    double volume = 0.0;               ///< enclosed volume, world units^3 (of the welded mesh)
+    double area = 0.0;                 ///< surface area, world units^2 (of the welded mesh)
     int eulerCharacteristic = 0;       ///< 2 - 2 genus per closed component (of the mesh)
     int components = 0;                ///< connected pieces of surface
 };
 
-/// Measures a field image. Volume and area come from openvdb::tools::LevelSetMeasure; the Euler
-/// characteristic is V - E + F of the welded marching-cubes mesh (exact); the bounding box is that of the zero crossings found by
+/// Measures a field image. Volume, area and Euler characteristic (V - E + F) are those of the
+/// welded marching-cubes mesh (closed, exact topology); the bounding box is that of the zero crossings found by
 /// linear interpolation between neighbouring voxels; components are connected sets of voxels
 /// adjacent to the surface. Cost: linear in the band size, parallel.
 FieldMeasures measureField(const FieldImage& field);

@@ -6,6 +6,7 @@
 
 #include <openvdb/tools/FastSweeping.h>
 #include <openvdb/tools/LevelSetUtil.h>
+#include <openvdb/tools/Morphology.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
 #include <tbb/parallel_for.h>
@@ -125,7 +126,9 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
                          std::to_string(dim.y()) + " x " + std::to_string(dim.z()) + " voxels");
     }
 
-    auto fog = openvdb::FloatGrid::create(0.0f);
+    // The band holds iso - f (negative inside, like a distance); every voxel off the band must
+    // say which side it is on too, or fast sweeping sees a false surface at the band's edge.
+    auto fog = openvdb::FloatGrid::create(float(hi - lo) + 1.0f);
     fog->setTransform(openvdb::math::Transform::createLinearTransform(h));
     const auto& xform = fog->transform();
     SliceWindow window(scan);
@@ -134,6 +137,9 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
     std::vector<float> slab;
     auto acc = fog->getAccessor();
     std::vector<unsigned char> inBand;
+    std::vector<float> crossingDistance;
+    auto interface = openvdb::FloatGrid::create(0.0f);  // first-order distances at the seeds
+    auto interfaceAcc = interface->getAccessor();
     for (int z0 = box.min().z(); z0 <= box.max().z(); z0 += kSlabLayers) {
         const int z1 = std::min(z0 + kSlabLayers - 1, box.max().z());
         const int layers = z1 - z0 + 3;
@@ -148,27 +154,34 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
                 }
             }
         });
-        // Band voxels: within the band by the first-order distance, or next to a crossing.
+        // Seeds: the voxels next to a crossing of the iso-value.
         inBand.assign(size_t(nx) * ny * layers, 0);
+        crossingDistance.assign(size_t(nx) * ny * layers, 0.0f);
         tbb::parallel_for(1, layers - 1, [&](int l) {
             for (int y = 1; y < ny - 1; ++y) {
                 for (int x = 1; x < nx - 1; ++x) {
-                    const float f = slab[index(x, y, l)];
-                    const float n[6] = {slab[index(x - 1, y, l)], slab[index(x + 1, y, l)], slab[index(x, y - 1, l)],
-                                        slab[index(x, y + 1, l)], slab[index(x, y, l - 1)], slab[index(x, y, l + 1)]};
+                    const bool inside = slab[index(x, y, l)] > iso;
+                    const size_t neighbours[6] = {index(x - 1, y, l), index(x + 1, y, l), index(x, y - 1, l),
+                                                  index(x, y + 1, l), index(x, y, l - 1), index(x, y, l + 1)};
                     bool crossing = false;
-                    for (float v : n) crossing = crossing || ((v > iso) != (f > iso));
-                    const double gx = (n[1] - n[0]) / (2 * h), gy = (n[3] - n[2]) / (2 * h), gz = (n[5] - n[4]) / (2 * h);
-                    const double gradient = std::sqrt(gx * gx + gy * gy + gz * gz);
-                    const bool near = gradient > 0.0 && std::abs(f - iso) / gradient < (halfWidth + 1.0) * h;
-                    inBand[index(x, y, l)] = crossing || near;
+                    for (size_t n : neighbours) crossing = crossing || ((slab[n] > iso) != inside);
+                    inBand[index(x, y, l)] = crossing;
+                    if (crossing) {
+                        const double gx = slab[neighbours[1]] - slab[neighbours[0]], gy = slab[neighbours[3]] - slab[neighbours[2]],
+                                     gz = slab[neighbours[5]] - slab[neighbours[4]];
+                        const double gradient = std::sqrt(gx * gx + gy * gy + gz * gz) / (2.0 * h);
+                        crossingDistance[index(x, y, l)] = float((iso - slab[index(x, y, l)]) / gradient);
+                    }
                 }
             }
         });
         for (int l = 1; l < layers - 1; ++l) {
             for (int y = 1; y < ny - 1; ++y) {
                 for (int x = 1; x < nx - 1; ++x) {
-                    if (inBand[index(x, y, l)]) acc.setValueOn(box.min().offsetBy(x, y, z0 - 1 + l - box.min().z()), slab[index(x, y, l)]);
+                    if (!inBand[index(x, y, l)]) continue;
+                    const openvdb::Coord ijk = box.min().offsetBy(x, y, z0 - 1 + l - box.min().z());
+                    acc.setValueOn(ijk, float(iso) - slab[index(x, y, l)]);
+                    interfaceAcc.setValueOn(ijk, crossingDistance[index(x, y, l)]);
                 }
             }
         }
@@ -178,11 +191,14 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
     slab = {};
     inBand = {};
 
-    openvdb::FloatGrid::Ptr sdf = openvdb::tools::fogToSdf(*fog, float(iso));
+    // Signs everywhere, then the band around the seeds, whose distances fast sweeping computes.
+    openvdb::tools::signedFloodFill(fog->tree());
+    openvdb::tools::dilateActiveValues(fog->tree(), int(halfWidth) + 1, openvdb::tools::NN_FACE_EDGE_VERTEX,
+                                       openvdb::tools::IGNORE_TILES);
+    openvdb::FloatGrid::Ptr sdf = openvdb::tools::sdfToSdf(*fog, 0.0f);
     fog.reset();
     report(progress, 0.95);
-    // Copy the band into a clean level set (fogToSdf leaves the fog's inactive values behind),
-    // then give the inside its sign.
+    // Copy the band into a clean level set, then give the inside its sign.
     const float background = float(halfWidth * h);
     auto band = openvdb::FloatGrid::create(background);
     band->setTransform(sdf->transform().copy());
@@ -192,6 +208,12 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
         if (std::abs(*it) < background) out.setValueOn(it.getCoord(), *it);
     }
     sdf.reset();
+    // Voxels next to a crossing take (iso - f) / |grad f| instead of the sweep's distance to a
+    // plane through the crossings: the mesher then finds the crossings where the scan has them
+    // (as FlyingEdges does) instead of smoothing voxel-scale detail away (4% of a brain's area).
+    for (auto it = interface->cbeginValueOn(); it; ++it) {
+        if (std::isfinite(*it) && std::abs(*it) < h) out.setValueOn(it.getCoord(), *it);
+    }
     openvdb::tools::signedFloodFill(band->tree());
     report(progress, 1.0);
     return FieldImage(band);

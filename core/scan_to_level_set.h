@@ -4,12 +4,13 @@
 ///
 /// The scan is resampled (trilinear, in its own index space, so spacing, orientation and origin
 /// are honoured) onto an axis-aligned world grid of the chosen voxel size, one slab of 8 output
-/// layers at a time: only voxels within the band of the iso-surface (by the first-order distance
-/// |f - iso| / |grad f|, or next to a crossing) enter a sparse fog grid, and
-/// openvdb::tools::fogToSdf turns that band into signed distances by fast sweeping. Peak memory:
-/// the scan, the few slices a slab reads, and the band. Inside is where samples exceed the iso
-/// value (bright tissue on CT and T1 MRI); the scan's outside counts as outside, so surfaces
-/// cut by the scan's border are capped there.
+/// layers at a time. Only the voxels next to a crossing of the iso-value keep iso - f in a sparse
+/// grid; a signed flood fill gives every other voxel its side, the band is dilated around those
+/// seeds, and openvdb::tools::sdfToSdf computes its distances by fast sweeping from the crossings
+/// (fogToSdf would take the band's inactive inside for outside and see a false surface at the
+/// band's edge). Peak memory: the scan, the few slices a slab reads, and the band. Inside is
+/// where samples exceed the iso value (bright tissue on CT and T1 MRI); the scan's outside counts
+/// as outside, so surfaces cut by the scan's border are capped there.
 
 #include "field_image.h"
 #include "progress.h"
