@@ -1,6 +1,7 @@
 // Importing scans (core/scan_volume.h, core/scan_to_level_set.h): every format, world placement,
 // agreement with VTK on a real MRI, and refusal of bad files.
 
+#include "support/dicom_writer.h"
 #include "support/mesh_checks.h"
 #include "support/temp_dir.h"
 
@@ -202,6 +203,78 @@ TEST(ScanImport, BadScansAreRefusedNamingTheFile)
     expectError([&] { readScan(dir / "ball.xyz"); }, "ball.xyz");
     const ScanVolume scan = readScan(dir / "ball.nii");
     expectError([&] { scanToLevelSet(scan, 500.0, 1.0); }, "outside the samples' range");
+}
+
+/// A DICOM series of the synthetic ball: axial slices 2 apart, written in shuffled file order,
+/// with patient orientation (x along rows, y down columns).
+std::vector<std::filesystem::path> writeBallSeries(const std::filesystem::path& dir, const SyntheticBall& ball,
+                                                   const std::string& seriesUid = "1.2.3")
+{
+    std::vector<std::filesystem::path> files;
+    for (int k = 0; k < ball.dims.z(); ++k) {
+        test::DicomSliceSpec slice;
+        slice.rows = ball.dims.y();
+        slice.columns = ball.dims.x();
+        slice.rowSpacing = ball.spacing.y();
+        slice.columnSpacing = ball.spacing.x();
+        slice.sliceThickness = ball.spacing.z();
+        slice.position = ball.origin + openvdb::Vec3d(0, 0, k * ball.spacing.z());
+        slice.instanceNumber = k + 1;
+        slice.seriesUid = seriesUid;
+        for (int r = 0; r < slice.rows; ++r) {
+            for (int c = 0; c < slice.columns; ++c) {
+                const openvdb::Vec3d world = slice.position + openvdb::Vec3d(c * ball.spacing.x(), r * ball.spacing.y(), 0);
+                const double d = (world - ball.centre).length() - ball.radius;
+                slice.pixels.push_back(std::uint16_t(std::clamp(100.0 - 40.0 * d, 0.0, 200.0)));
+            }
+        }
+        // File names out of slice order: the reader must sort by position, not by name.
+        files.push_back(dir / ("im" + std::to_string((k * 7) % ball.dims.z() + 100) + ".dcm"));
+        test::writeDicomSlice(files.back(), slice);
+    }
+    return files;
+}
+
+TEST(ScanImport, DicomSeriesKeepsSliceOrderSpacingAndPosition)
+{
+    test::TempDir dir;
+    SyntheticBall ball;
+    ball.centre = ball.origin + openvdb::Vec3d(19.5, 15.0, 26.0);  // off-centre in y and z
+    writeBallSeries(dir.path(), ball);
+    const ScanVolume series = readScan(dir.path());
+    EXPECT_EQ(series.dims(), ball.dims);
+    expectBallAt(series, ball, "DICOM");
+}
+
+TEST(ScanImport, DicomSeriesWithGapsOrMixedSeriesIsRefused)
+{
+    test::TempDir gap, mixed;
+    const SyntheticBall ball;
+    const auto files = writeBallSeries(gap.path(), ball);
+    std::filesystem::remove(files[5]);  // a slice in the middle
+    try {
+        readScan(gap.path());
+        ADD_FAILURE() << "no error for a series with a missing slice";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("missing slices"), std::string::npos) << e.what();
+    }
+    writeBallSeries(mixed.path(), ball, "1.2.3");
+    SyntheticBall other = ball;
+    other.origin = ball.origin + openvdb::Vec3d(0, 0, 1);  // a second series interleaved
+    for (int k = 0; k < 3; ++k) {
+        test::DicomSliceSpec slice;
+        slice.rows = 20;
+        slice.columns = 20;
+        slice.position = other.origin + openvdb::Vec3d(0, 0, 2 * k);
+        slice.pixels.assign(400, 50);
+        test::writeDicomSlice(mixed.path() / ("other" + std::to_string(k) + ".dcm"), slice);
+    }
+    try {
+        readScan(mixed.path());
+        ADD_FAILURE() << "no error for mixed series";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("mixed series"), std::string::npos) << e.what();
+    }
 }
 
 TEST(ScanImport, RealMriAgreesWithFlyingEdgesAndMassProperties)
