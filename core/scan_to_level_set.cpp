@@ -4,9 +4,11 @@
 #include "memory_budget.h"
 #include "text_format.h"
 
+#include <openvdb/tools/ChangeBackground.h>
 #include <openvdb/tools/FastSweeping.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/Morphology.h>
+#include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
 #include <tbb/parallel_for.h>
@@ -95,6 +97,96 @@ openvdb::CoordBBox outputBox(const ScanVolume& scan, double h)
     return box;
 }
 
+/// The voxels next to a crossing of the iso-value, holding their first-order distance
+/// (iso - f) / |grad f| (negative inside), sampled one slab of output layers at a time.
+openvdb::FloatGrid::Ptr seedCrossings(const ScanVolume& scan, double iso, double h, const openvdb::CoordBBox& box,
+                                      const Progress& progress)
+{
+    const double halfWidth = FieldImage::kDefaultHalfWidthVoxels;
+    auto seeds = openvdb::FloatGrid::create(float((halfWidth + 2.0) * h));
+    seeds->setTransform(openvdb::math::Transform::createLinearTransform(h));
+    const auto& xform = seeds->transform();
+    SliceWindow window(scan);
+    const int nx = box.dim().x(), ny = box.dim().y();
+    std::vector<float> slab, distance;  // one slab plus a layer each side (for the gradient), x fastest
+    auto acc = seeds->getAccessor();
+    for (int z0 = box.min().z(); z0 <= box.max().z(); z0 += kSlabLayers) {
+        const int z1 = std::min(z0 + kSlabLayers - 1, box.max().z());
+        const int layers = z1 - z0 + 3;
+        const auto index = [&](int x, int y, int l) { return (size_t(l) * ny + size_t(y)) * nx + size_t(x); };
+        const auto coord = [&](int x, int y, int l) { return openvdb::Coord(box.min().x() + x, box.min().y() + y, z0 - 1 + l); };
+        window.load(openvdb::BBoxd(xform.indexToWorld(coord(0, 0, 0)), xform.indexToWorld(coord(nx - 1, ny - 1, layers - 1))));
+        slab.assign(size_t(nx) * ny * layers, window.outside());
+        tbb::parallel_for(0, layers, [&](int l) {
+            for (int y = 0; y < ny; ++y) {
+                for (int x = 0; x < nx; ++x) slab[index(x, y, l)] = window(xform.indexToWorld(coord(x, y, l)));
+            }
+        });
+        distance.assign(slab.size(), std::numeric_limits<float>::quiet_NaN());  // NaN: not a seed
+        tbb::parallel_for(1, layers - 1, [&](int l) {
+            for (int y = 1; y < ny - 1; ++y) {
+                for (int x = 1; x < nx - 1; ++x) {
+                    const float f = slab[index(x, y, l)];
+                    const float n[6] = {slab[index(x - 1, y, l)], slab[index(x + 1, y, l)], slab[index(x, y - 1, l)],
+                                        slab[index(x, y + 1, l)], slab[index(x, y, l - 1)], slab[index(x, y, l + 1)]};
+                    bool crossing = false;
+                    for (float v : n) crossing = crossing || ((v > iso) != (f > iso));
+                    if (!crossing) continue;
+                    const double gradient = std::sqrt(double(n[1] - n[0]) * (n[1] - n[0]) + double(n[3] - n[2]) * (n[3] - n[2]) +
+                                                      double(n[5] - n[4]) * (n[5] - n[4])) / (2.0 * h);
+                    // A crossing voxel is within a voxel of the surface whatever the estimate says.
+                    distance[index(x, y, l)] = float(std::clamp((iso - f) / gradient, -h, h));
+                }
+            }
+        });
+        for (int l = 1; l < layers - 1; ++l) {
+            for (int y = 1; y < ny - 1; ++y) {
+                for (int x = 1; x < nx - 1; ++x) {
+                    const float d = distance[index(x, y, l)];
+                    if (!std::isnan(d)) acc.setValueOn(coord(x, y, l), d);
+                }
+            }
+        }
+        report(progress, 0.8 * double(z1 - box.min().z() + 1) / box.dim().z());
+    }
+    return seeds;
+}
+
+/// The narrow band around the seeds: signs everywhere (signed flood fill), the band's voxels
+/// (dilation), their distances by fast sweeping from the crossings (sdfToSdf), then the seeds'
+/// own values back: the mesher finds the crossings where the scan has them (as FlyingEdges
+/// does), where the sweep's distance to a plane through them would round voxel-scale detail off
+/// (4% of a brain's area). The sweep's grid becomes the result, trimmed in place.
+openvdb::FloatGrid::Ptr sweepBand(openvdb::FloatGrid& seeds, double halfWidth)
+{
+    const double h = seeds.voxelSize()[0];
+    // Seeds whose estimate is within a voxel; the others (a steep or flat f) keep the sweep's.
+    const openvdb::MaskGrid::Ptr seedMask = openvdb::MaskGrid::create();
+    auto mask = seedMask->getAccessor();
+    for (auto it = seeds.cbeginValueOn(); it; ++it) {
+        if (std::abs(*it) < h) mask.setValueOn(it.getCoord());
+    }
+    openvdb::tools::signedFloodFill(seeds.tree());
+    openvdb::tools::dilateActiveValues(seeds.tree(), int(halfWidth), openvdb::tools::NN_FACE_EDGE, openvdb::tools::IGNORE_TILES);
+    openvdb::FloatGrid::Ptr band = openvdb::tools::sdfToSdf(seeds, 0.0f);
+    auto out = band->getAccessor();
+    const auto seedValues = seeds.getConstAccessor();
+    for (auto it = seedMask->cbeginValueOn(); it; ++it) out.setValueOn(it.getCoord(), seedValues.getValue(it.getCoord()));
+    const float background = float(halfWidth * h);
+    for (auto leaf = band->tree().beginLeaf(); leaf; ++leaf) {
+        for (auto it = leaf->beginValueOn(); it; ++it) {
+            if (std::abs(*it) < background) continue;
+            it.setValue(*it < 0.0f ? -background : background);
+            it.setValueOff();
+        }
+    }
+    openvdb::tools::changeLevelSetBackground(band->tree(), background);
+    band->setGridClass(openvdb::GRID_LEVEL_SET);
+    openvdb::tools::signedFloodFill(band->tree());
+    openvdb::tools::pruneLevelSet(band->tree());
+    return band;
+}
+
 } // namespace
 
 double nativeVoxelSize(const ScanVolume& scan)
@@ -126,97 +218,11 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
                          std::to_string(dim.y()) + " x " + std::to_string(dim.z()) + " voxels");
     }
 
-    // The band holds iso - f (negative inside, like a distance); every voxel off the band must
-    // say which side it is on too, or fast sweeping sees a false surface at the band's edge.
-    auto fog = openvdb::FloatGrid::create(float(hi - lo) + 1.0f);
-    fog->setTransform(openvdb::math::Transform::createLinearTransform(h));
-    const auto& xform = fog->transform();
-    SliceWindow window(scan);
-    // Samples of one slab plus one layer each side (for the gradient), x fastest.
-    const int nx = dim.x(), ny = dim.y();
-    std::vector<float> slab;
-    auto acc = fog->getAccessor();
-    std::vector<unsigned char> inBand;
-    std::vector<float> crossingDistance;
-    auto interface = openvdb::FloatGrid::create(0.0f);  // first-order distances at the seeds
-    auto interfaceAcc = interface->getAccessor();
-    for (int z0 = box.min().z(); z0 <= box.max().z(); z0 += kSlabLayers) {
-        const int z1 = std::min(z0 + kSlabLayers - 1, box.max().z());
-        const int layers = z1 - z0 + 3;
-        window.load(openvdb::BBoxd(xform.indexToWorld(openvdb::Coord(box.min().x(), box.min().y(), z0 - 1)),
-                                   xform.indexToWorld(openvdb::Coord(box.max().x(), box.max().y(), z1 + 1))));
-        slab.assign(size_t(nx) * ny * layers, window.outside());
-        const auto index = [&](int x, int y, int l) { return (size_t(l) * ny + size_t(y)) * nx + size_t(x); };
-        tbb::parallel_for(0, layers, [&](int l) {
-            for (int y = 0; y < ny; ++y) {
-                for (int x = 0; x < nx; ++x) {
-                    slab[index(x, y, l)] = window(xform.indexToWorld(box.min().offsetBy(x, y, 0) + openvdb::Coord(0, 0, z0 - 1 + l - box.min().z())));
-                }
-            }
-        });
-        // Seeds: the voxels next to a crossing of the iso-value.
-        inBand.assign(size_t(nx) * ny * layers, 0);
-        crossingDistance.assign(size_t(nx) * ny * layers, 0.0f);
-        tbb::parallel_for(1, layers - 1, [&](int l) {
-            for (int y = 1; y < ny - 1; ++y) {
-                for (int x = 1; x < nx - 1; ++x) {
-                    const bool inside = slab[index(x, y, l)] > iso;
-                    const size_t neighbours[6] = {index(x - 1, y, l), index(x + 1, y, l), index(x, y - 1, l),
-                                                  index(x, y + 1, l), index(x, y, l - 1), index(x, y, l + 1)};
-                    bool crossing = false;
-                    for (size_t n : neighbours) crossing = crossing || ((slab[n] > iso) != inside);
-                    inBand[index(x, y, l)] = crossing;
-                    if (crossing) {
-                        const double gx = slab[neighbours[1]] - slab[neighbours[0]], gy = slab[neighbours[3]] - slab[neighbours[2]],
-                                     gz = slab[neighbours[5]] - slab[neighbours[4]];
-                        const double gradient = std::sqrt(gx * gx + gy * gy + gz * gz) / (2.0 * h);
-                        crossingDistance[index(x, y, l)] = float((iso - slab[index(x, y, l)]) / gradient);
-                    }
-                }
-            }
-        });
-        for (int l = 1; l < layers - 1; ++l) {
-            for (int y = 1; y < ny - 1; ++y) {
-                for (int x = 1; x < nx - 1; ++x) {
-                    if (!inBand[index(x, y, l)]) continue;
-                    const openvdb::Coord ijk = box.min().offsetBy(x, y, z0 - 1 + l - box.min().z());
-                    acc.setValueOn(ijk, float(iso) - slab[index(x, y, l)]);
-                    interfaceAcc.setValueOn(ijk, crossingDistance[index(x, y, l)]);
-                }
-            }
-        }
-        report(progress, 0.8 * double(z1 - box.min().z() + 1) / dim.z());
-    }
-    if (fog->activeVoxelCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
-    slab = {};
-    inBand = {};
-
-    // Signs everywhere, then the band around the seeds, whose distances fast sweeping computes.
-    openvdb::tools::signedFloodFill(fog->tree());
-    openvdb::tools::dilateActiveValues(fog->tree(), int(halfWidth) + 1, openvdb::tools::NN_FACE_EDGE_VERTEX,
-                                       openvdb::tools::IGNORE_TILES);
-    openvdb::FloatGrid::Ptr sdf = openvdb::tools::sdfToSdf(*fog, 0.0f);
-    fog.reset();
-    report(progress, 0.95);
-    // Copy the band into a clean level set, then give the inside its sign.
-    const float background = float(halfWidth * h);
-    auto band = openvdb::FloatGrid::create(background);
-    band->setTransform(sdf->transform().copy());
-    band->setGridClass(openvdb::GRID_LEVEL_SET);
-    auto out = band->getAccessor();
-    for (auto it = sdf->cbeginValueOn(); it; ++it) {
-        if (std::abs(*it) < background) out.setValueOn(it.getCoord(), *it);
-    }
-    sdf.reset();
-    // Voxels next to a crossing take (iso - f) / |grad f| instead of the sweep's distance to a
-    // plane through the crossings: the mesher then finds the crossings where the scan has them
-    // (as FlyingEdges does) instead of smoothing voxel-scale detail away (4% of a brain's area).
-    for (auto it = interface->cbeginValueOn(); it; ++it) {
-        if (std::isfinite(*it) && std::abs(*it) < h) out.setValueOn(it.getCoord(), *it);
-    }
-    openvdb::tools::signedFloodFill(band->tree());
+    auto seeds = seedCrossings(scan, iso, h, box, progress);
+    if (seeds->activeVoxelCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
+    FieldImage field(sweepBand(*seeds, halfWidth));
     report(progress, 1.0);
-    return FieldImage(band);
+    return field;
 }
 
 std::size_t keepLargestComponent(FieldImage& field)
