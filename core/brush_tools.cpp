@@ -296,6 +296,7 @@ DirtyRegion smoothUnder(FieldImage& field, const BrushSettings& brush, const Bru
     // patch (cheaply, locally) every beta t = h^2 / 2 instead of the evolution's whole-grid tracker.
     EvolutionOptions options;
     options.trackDistanceVoxels = options.trackDiffusionVoxels2 = std::numeric_limits<double>::infinity();
+    options.firstOrderTime = true;
     const double duration = brush.strength * stamp.pressure;
     const int chunks = std::max(1, int(std::ceil(duration / kSmoothChunk - 1e-9)));
     for (int i = 0; i < chunks; ++i) {

@@ -15,6 +15,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -45,6 +46,7 @@ struct StepConstants {
     float alpha = 0.0f, clampWorld = 0.0f;
     double beta = 0.0;
     std::optional<FalloffBall> smoothWeight;
+    bool firstOrderTime = false;
     double uniformSpeed = 0.0;  // the offset term
     std::optional<LocalTerm> local;
     std::optional<MotionRegion> region;
@@ -168,7 +170,7 @@ void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leave
         for (size_t i = r.begin(); i < r.end(); ++i) {
             const LeafT& leaf = *leaves[i];
             std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
-            if (leaf.isEmpty() || c.leafIsStill(leaf.origin())) continue;
+            if (leaf.isEmpty()) continue;
             stencil.gather(tree, leaf.origin());
             for (auto it = leaf.cbeginValueOn(); it; ++it) {
                 const openvdb::Coord local = it.getCoord() - leaf.origin();
@@ -223,7 +225,16 @@ void validateTerms(const MotionTerms& t, const FieldImage& field)
 void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
 {
     auto& tree = grid.tree();
-    const auto leaves = leafList(tree);
+    auto leaves = leafList(tree);
+    // Leaves that cannot move are neither copied nor written (a brush on a patch).
+    leaves.erase(std::remove_if(leaves.begin(), leaves.end(), [&](const LeafT* leaf) { return c.leafIsStill(leaf->origin()); }),
+                 leaves.end());
+    if (c.firstOrderTime) {
+        std::vector<LeafValues> next(leaves.size());
+        eulerStage(tree, leaves, c, dt, next);
+        writeLeaves(leaves, next, grid.background());
+        return;
+    }
     std::vector<LeafValues> phi0(leaves.size()), stage(leaves.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
         for (size_t i = r.begin(); i < r.end(); ++i) {
@@ -321,6 +332,7 @@ void LevelSetEvolution::applyStep(double dt)
     c.h = mField.voxelSize();
     c.invH = 1.0 / c.h;
     c.scheme = mOptions.scheme;
+    c.firstOrderTime = mOptions.firstOrderTime;
     if (mTerms.target) {
         c.target = &mTerms.target->target->tree();
         c.alpha = float(mTerms.target->alpha);

@@ -31,6 +31,9 @@ struct EvolutionOptions {
     double trackDistanceVoxels = 0.5;   ///< rebuild the band once the surface may have moved this far
     double trackDiffusionVoxels2 = 0.5; ///< ... or once beta t (curvature diffusion) reaches this h^2
     int normalizeIterations = 1;        ///< LevelSetTracker normalisation sweeps per rebuild
+    /// Forward Euler instead of TVD-RK2: half the work, for motions whose path in time does not
+    /// matter, only where they lead (a smoothing brush); same stability limit for diffusion.
+    bool firstOrderTime = false;
 };
 
 class LevelSetEvolution {

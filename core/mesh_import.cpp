@@ -3,12 +3,12 @@
 #include "errors.h"
 #include "memory_budget.h"
 #include "text_format.h"
+#include "vtk_error_catcher.h"
 
 #include <openvdb/tools/MeshToVolume.h>
 
 #include <vtkCellArray.h>
 #include <vtkCleanPolyData.h>
-#include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
@@ -35,21 +35,11 @@ std::string lowerExtension(const fs::path& path)
     return ext;
 }
 
-class ErrorCatcher : public vtkCommand {
-public:
-    static ErrorCatcher* New() { return new ErrorCatcher; }
-    void Execute(vtkObject*, unsigned long, void* data) override
-    {
-        if (message.empty() && data) message = static_cast<const char*>(data);
-    }
-    std::string message;
-};
-
 /// Runs a VTK mesh reader, then triangulates and merges coincident points.
 TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
 {
     vtkObject::GlobalWarningDisplayOff();
-    vtkNew<ErrorCatcher> catcher;
+    vtkNew<VtkErrorCatcher> catcher;
     reader->AddObserver(vtkCommand::ErrorEvent, catcher);
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputConnection(reader->GetOutputPort());

@@ -3,8 +3,8 @@
 #include "errors.h"
 #include "memory_budget.h"
 #include "text_format.h"
+#include "vtk_error_catcher.h"
 
-#include <vtkCommand.h>
 #include <vtkDICOMImageReader.h>
 #include <vtkExtractVOI.h>
 #include <vtkFloatArray.h>
@@ -40,17 +40,6 @@ struct ScanVolume::Impl {
 
 namespace {
 
-/// Collects the first error a VTK object reports, instead of letting it print to stderr.
-class ErrorCatcher : public vtkCommand {
-public:
-    static ErrorCatcher* New() { return new ErrorCatcher; }
-    void Execute(vtkObject*, unsigned long, void* data) override
-    {
-        if (message.empty() && data) message = static_cast<const char*>(data);
-    }
-    std::string message;
-};
-
 /// The last line of a VTK error message, without VTK's file/line prefix.
 std::string cleanMessage(std::string text)
 {
@@ -65,7 +54,7 @@ std::string cleanMessage(std::string text)
 vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source)
 {
     vtkObject::GlobalWarningDisplayOff();
-    vtkNew<ErrorCatcher> catcher;
+    vtkNew<VtkErrorCatcher> catcher;
     reader->AddObserver(vtkCommand::ErrorEvent, catcher);
     reader->AddObserver(vtkCommand::WarningEvent, catcher);
     reader->UpdateInformation();

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job, from a fresh Debian 12 machine: install what is missing, build, then make the
-# default clay ball, measure it and export it as a printable mesh into out/.
+# default clay ball, sculpt a face on it by replaying a stroke script, measure it and export it
+# as a printable mesh into out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -9,9 +10,11 @@ bash scripts/build.sh
 mkdir -p out
 sculpt=build/sculpt/sculpt
 "$sculpt" new -o out/clay.vdb
-"$sculpt" info out/clay.vdb
-"$sculpt" mesh out/clay.vdb -o out/clay.ply
+"$sculpt" apply out/clay.vdb data/strokes/face.json -o out/face.vdb
+"$sculpt" info out/face.vdb
+"$sculpt" mesh out/face.vdb -o out/face.ply
 echo
 echo "Files:"
-echo "  document: $(realpath out/clay.vdb)"
-echo "  mesh:     $(realpath out/clay.ply)"
+echo "  clay ball: $(realpath out/clay.vdb)"
+echo "  sculpted:  $(realpath out/face.vdb)"
+echo "  mesh:      $(realpath out/face.ply)"
