@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace sculpt {
@@ -78,16 +79,16 @@ double godunovGradient(const DenseBox& d, const std::vector<float>& v, int x, in
     return std::sqrt(sum);
 }
 
-/// Applies `update(x, y, z, i)` -> new value to the zone's interior voxels, x-slabs in parallel,
-/// reading `from` and writing `to`.
+/// Writes `update(x, y, z)` (when it returns a value) to `to` for the box's interior voxels
+/// inside the zone, x-slabs in parallel. Updates test their cheap conditions before calling
+/// `inZone`, which most voxels of the box (far from the band) never need.
 template <typename UpdateFn>
-void sweep(const DenseBox& d, const Capsule& indexZone, std::vector<float>& to, const UpdateFn& update)
+void sweep(const DenseBox& d, std::vector<float>& to, const UpdateFn& update)
 {
     tbb::parallel_for(1, d.dim.x() - 1, [&](int x) {
         for (int y = 1; y < d.dim.y() - 1; ++y) {
             for (int z = 1; z < d.dim.z() - 1; ++z) {
-                if (!indexZone.contains(d.coord(x, y, z).asVec3d())) continue;
-                to[d.index(x, y, z)] = update(x, y, z);
+                if (const std::optional<float> value = update(x, y, z)) to[d.index(x, y, z)] = *value;
             }
         }
     });
@@ -109,19 +110,21 @@ void redistanceBand(openvdb::FloatGrid& grid, const Capsule& zone)
 
     const Capsule indexZone = zone.inIndexSpace(xform);
     std::vector<float> normalised = d.values;
-    sweep(d, indexZone, normalised, [&](int x, int y, int z) {
+    const auto inZone = [&](int x, int y, int z) { return indexZone.contains(d.coord(x, y, z).asVec3d()); };
+    sweep(d, normalised, [&](int x, int y, int z) -> std::optional<float> {
         const float phi = d.values[d.index(x, y, z)];
-        if (std::abs(phi) >= background) return phi;
+        if (std::abs(phi) >= background || !inZone(x, y, z)) return std::nullopt;
         const double sign = phi / std::sqrt(double(phi) * phi + h * h);
         return float(phi - 0.3 * h * sign * (godunovGradient(d, d.values, x, y, z, sign, invH) - 1.0));
     });
     std::vector<float> extended = normalised;
-    sweep(d, indexZone, extended, [&](int x, int y, int z) {
+    sweep(d, extended, [&](int x, int y, int z) -> std::optional<float> {
         const float phi = normalised[d.index(x, y, z)];
-        if (std::abs(phi) < background) return phi;
+        if (std::abs(phi) < background) return std::nullopt;
         const bool inside = phi < 0.0f;
-        const double u = eikonal(upwindMagnitudes(d, normalised, x, y, z, inside), h);
-        const float magnitude = float(std::min(u, double(background)));
+        const openvdb::Vec3d upwind = upwindMagnitudes(d, normalised, x, y, z, inside);
+        if (std::min({upwind[0], upwind[1], upwind[2]}) >= background || !inZone(x, y, z)) return std::nullopt;
+        const float magnitude = float(std::min(eikonal(upwind, h), double(background)));
         return inside ? -magnitude : magnitude;
     });
 

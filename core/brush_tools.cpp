@@ -70,9 +70,10 @@ void remapActive(LocalPatch& patch, const Capsule& region, const ValueFn& value)
 
 /// Sets every voxel inside `region` (active or not) to combine(world, phi), activating the ones
 /// that enter the band and deactivating the ones that leave it. Values in parallel, then the
-/// tree's structure in one thread.
+/// tree's structure in one thread. Tiles of value `keptTile` are skipped: combine never changes
+/// them (the inside, for a union).
 template <typename CombineFn>
-void combineVoxels(LocalPatch& patch, const Capsule& region, const CombineFn& combine)
+void combineVoxels(LocalPatch& patch, const Capsule& region, float keptTile, const CombineFn& combine)
 {
     openvdb::FloatGrid& grid = patch.field().mutableGrid();
     const auto& xform = grid.transform();
@@ -84,6 +85,7 @@ void combineVoxels(LocalPatch& patch, const Capsule& region, const CombineFn& co
     tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size()), [&](const auto& range) {
         const ConstAccessor acc = grid.getConstAccessor();
         for (size_t i = range.begin(); i < range.end(); ++i) {
+            if (!acc.probeConstLeaf(origins[i]) && acc.getValue(origins[i]) == keptTile) continue;
             for (auto ijk = openvdb::CoordBBox::createCube(origins[i], LeafT::DIM).begin(); ijk; ++ijk) {
                 const float old = acc.getValue(*ijk);
                 const float value = indexRegion.contains((*ijk).asVec3d())
@@ -266,7 +268,8 @@ DirtyRegion sweepBall(FieldImage& field, const BrushSettings& brush, const Brush
     const double fillet = std::min(filletFraction(brush.falloff) * radius, background - h);
     const Capsule ball{stamp.previousWorld, stamp.centreWorld, radius};
     LocalPatch patch(field, ball.grownBy(fillet + background + h));
-    combineVoxels(patch, patch.region(), [&](const Vec3d& world, float phi) {
+    const float keptTile = float(mode == CsgMode::Add ? -background : background);
+    combineVoxels(patch, patch.region(), keptTile, [&](const Vec3d& world, float phi) {
         const double d = ball.axisDistance(world) - radius;
         return mode == CsgMode::Add ? smoothMin(phi, d, fillet) : -smoothMin(-phi, d, fillet);
     });
