@@ -421,7 +421,7 @@ ScanVolume readScan(const fs::path& path)
     if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
     if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);
     throw InputError(path.string() + ": unknown scan format '" + ext +
-                     "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw with --raw)");
+                     "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw samples with --raw-dims)");
 }
 
 ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
