@@ -2,6 +2,7 @@
 
 #include "atomic_file.h"
 #include "errors.h"
+#include "file_extension.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -85,8 +86,7 @@ bool writeFormat(MeshFormat format, vtkPolyData* polyData, const fs::path& path)
 
 MeshFormat meshFormatOf(const fs::path& path)
 {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string ext = lowerExtension(path);
     if (ext == ".ply") return MeshFormat::Ply;
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".stl") return MeshFormat::Stl;

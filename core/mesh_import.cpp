@@ -1,6 +1,7 @@
 #include "mesh_import.h"
 
 #include "errors.h"
+#include "file_extension.h"
 #include "memory_budget.h"
 #include "text_format.h"
 #include "vtk_error_catcher.h"
@@ -27,13 +28,6 @@ namespace sculpt {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lowerExtension(const fs::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 /// Runs a VTK mesh reader, then triangulates and merges coincident points.
 TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)

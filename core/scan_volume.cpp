@@ -1,6 +1,7 @@
 #include "scan_volume.h"
 
 #include "errors.h"
+#include "file_extension.h"
 #include "memory_budget.h"
 #include "text_format.h"
 #include "vtk_error_catcher.h"
@@ -122,22 +123,13 @@ ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d indexToW
     return ScanVolume(impl);
 }
 
-/// Lower-case extension, with ".gz" joined to the one before it.
-std::string extensionOf(const fs::path& path)
-{
-    std::string ext = path.extension().string();
-    if (ext == ".gz") ext = path.stem().extension().string() + ext;
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 ScanVolume readNifti(const fs::path& path)
 {
     vtkNew<vtkNIFTIImageReader> reader;
     reader->SetFileName(path.string().c_str());
     vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
     // VTK fills a short uncompressed file with zeros without a word: check its length.
-    if (extensionOf(path) == ".nii") {
+    if (lowerExtension(path) == ".nii") {
         const double needed = double(reader->GetNIFTIHeader()->GetVoxOffset()) +
                               double(image->GetNumberOfPoints()) * image->GetScalarSize();
         if (double(fs::file_size(path)) < needed) {
@@ -408,7 +400,7 @@ double ScanVolume::otsuThreshold() const
 bool isScanPath(const fs::path& path)
 {
     static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
-    const std::string ext = extensionOf(path);
+    const std::string ext = lowerExtension(path);
     return fs::is_directory(path) || std::find(known.begin(), known.end(), ext) != known.end();
 }
 
@@ -416,7 +408,7 @@ ScanVolume readScan(const fs::path& path)
 {
     if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
     if (fs::is_directory(path)) return readDicomSeries(path);
-    const std::string ext = extensionOf(path);
+    const std::string ext = lowerExtension(path);
     if (ext == ".nii" || ext == ".nii.gz") return readNifti(path);
     if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
     if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);

@@ -45,8 +45,8 @@ SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBu
 
 double SculptSession::modelSize() const
 {
-    const openvdb::CoordBBox box = mField.grid().evalActiveVoxelBoundingBox();
-    if (box.empty()) return 0.0;
+    openvdb::CoordBBox box;  // of the leaves: a voxel-exact box would visit every voxel per stroke
+    if (!mField.grid().tree().evalLeafBoundingBox(box)) return 0.0;
     return double(box.dim().asVec3d().length()) * mField.voxelSize();
 }
 

@@ -1,6 +1,7 @@
 #include "shape_import.h"
 
 #include <errors.h>
+#include <file_extension.h>
 #include <mesh_import.h>
 #include <scan_to_level_set.h>
 #include <text_format.h>
@@ -56,8 +57,7 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
 
 FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings)
 {
-    std::string ext = input.extension().string();
-    if (ext == ".vdb" || ext == ".VDB") return readFieldImage(input);
+    if (lowerExtension(input) == ".vdb") return readFieldImage(input);
     ImportOptions options;
     options.voxelSize = voxelSize;
     ImportReport report;

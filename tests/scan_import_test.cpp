@@ -77,6 +77,17 @@ struct SyntheticBall {
     vtkSmartPointer<vtkImageData> image() const { return ballImage(dims, spacing, origin, centre, radius); }
 };
 
+/// MetaImage, uncompressed; a .mhd header keeps its samples in a .raw beside it (read raw too).
+void writeMetaImage(vtkImageData* image, const std::filesystem::path& path)
+{
+    vtkNew<vtkMetaImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(path.c_str());
+    if (path.extension() == ".mhd") writer->SetRAWFileName(path.parent_path().append(path.stem().string() + ".raw").c_str());
+    writer->SetCompression(false);
+    writer->Write();
+}
+
 void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::string& format)
 {
     const FieldImage field = scanToLevelSet(scan, 100.0, nativeVoxelSize(scan));
@@ -107,12 +118,7 @@ TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
         expectBallAt(readScan(dir / "ball.nii.gz"), ball, "NIfTI");
     }
     {
-        vtkNew<vtkMetaImageWriter> writer;
-        writer->SetInputData(image);
-        writer->SetFileName((dir / "ball.mhd").c_str());
-        writer->SetRAWFileName((dir / "ball.raw").c_str());
-        writer->SetCompression(false);
-        writer->Write();
+        writeMetaImage(image, dir / "ball.mhd");
         expectBallAt(readScan(dir / "ball.mhd"), ball, "MetaImage");
     }
     {
@@ -140,10 +146,7 @@ TEST(ScanImport, OtsuSplitsTheTwoMaterials)
 {
     test::TempDir dir;
     const SyntheticBall ball;
-    vtkNew<vtkMetaImageWriter> writer;
-    writer->SetInputData(ball.image());
-    writer->SetFileName((dir / "ball.mha").c_str());
-    writer->Write();
+    writeMetaImage(ball.image(), dir / "ball.mha");
     const double iso = readScan(dir / "ball.mha").otsuThreshold();
     EXPECT_GT(iso, 20.0);
     EXPECT_LT(iso, 180.0);
@@ -153,10 +156,7 @@ TEST(ScanImport, CropSmoothAndLargestComponent)
 {
     test::TempDir dir;
     const SyntheticBall ball;
-    vtkNew<vtkMetaImageWriter> writer;
-    writer->SetInputData(ball.image());
-    writer->SetFileName((dir / "ball.mha").c_str());
-    writer->Write();
+    writeMetaImage(ball.image(), dir / "ball.mha");
     const ScanVolume scan = readScan(dir / "ball.mha");
     // The lower half in z (samples 0..10 of 22): a capped half ball, still placed in the world.
     const FieldImage half = scanToLevelSet(scan.cropped(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(39, 39, 10))), 100.0, 1.0);

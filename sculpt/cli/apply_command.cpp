@@ -1,9 +1,7 @@
 #include "commands.h"
+#include "mesh_output.h"
 #include "edit_document.h"
 
-#include <atomic_file.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
 #include <stroke_script.h>
 #include <text_format.h>
 
@@ -28,10 +26,7 @@ void runApply(const ApplyOptions& o)
 {
     std::optional<tbb::global_control> threadLimit;
     if (o.threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
-    if (!o.mesh.empty()) {
-        meshFormatOf(o.mesh);
-        AtomicFile::checkTarget(o.mesh);
-    }
+    checkMeshOutput(o.mesh);
     const StrokeScript script = readStrokeScript(o.script);  // every error before any work
     ReplayReport done;
     std::size_t historyBytes = 0;
@@ -43,11 +38,7 @@ void runApply(const ApplyOptions& o)
     });
     std::cout << "wrote " << o.output << ": " << done.strokes << " strokes (" << done.stamps << " stamps), "
               << done.undos << " undo, " << done.redos << " redo; undo history " << formatBytes(historyBytes) << "\n";
-    if (!o.mesh.empty()) {
-        const TriangleMesh mesh = meshLevelSet(result);
-        writeMesh(mesh, o.mesh);
-        std::cout << "wrote " << o.mesh << ": " << mesh.triangles.size() << " triangles\n";
-    }
+    writeMeshOutput(result, o.mesh);
 }
 
 } // namespace

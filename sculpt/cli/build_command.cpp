@@ -1,10 +1,9 @@
 #include "commands.h"
+#include "mesh_output.h"
 
 #include <atomic_file.h>
 #include <csg_combine.h>
 #include <errors.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
 #include <primitive_rasterizer.h>
 #include <scene_file.h>
 #include <vdb_file.h>
@@ -26,10 +25,7 @@ struct BuildOptions {
 void runBuild(const BuildOptions& o)
 {
     AtomicFile::checkTarget(o.output);
-    if (!o.mesh.empty()) {
-        meshFormatOf(o.mesh);
-        AtomicFile::checkTarget(o.mesh);
-    }
+    checkMeshOutput(o.mesh);
     const Scene scene = readScene(o.scene);
     FieldImage result = [&] {
         if (!o.base.empty()) {
@@ -45,11 +41,7 @@ void runBuild(const BuildOptions& o)
     std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
               << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()
               << " active voxels\n";
-    if (!o.mesh.empty()) {
-        const TriangleMesh mesh = meshLevelSet(result);
-        writeMesh(mesh, o.mesh);
-        std::cout << "wrote " << o.mesh << ": " << mesh.triangles.size() << " triangles\n";
-    }
+    writeMeshOutput(result, o.mesh);
 }
 
 } // namespace

@@ -1,11 +1,10 @@
 #include "commands.h"
+#include "mesh_output.h"
 #include "progress_bar.h"
 
 #include <atomic_file.h>
 #include <errors.h>
 #include <field_measures.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
 #include <shape_import.h>
 #include <vdb_file.h>
 
@@ -60,10 +59,7 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
 void runImport(const ImportCommandOptions& o)
 {
     AtomicFile::checkTarget(o.output);
-    if (!o.mesh.empty()) {
-        meshFormatOf(o.mesh);
-        AtomicFile::checkTarget(o.mesh);
-    }
+    checkMeshOutput(o.mesh);
     ImportReport report;
     const FieldImage field = [&] {
         ProgressBar bar("importing");
@@ -78,11 +74,7 @@ void runImport(const ImportCommandOptions& o)
     if (o.largest) std::cout << ", " << report.componentsDropped << " smaller pieces dropped";
     std::cout << "\nwrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
               << " components\n";
-    if (!o.mesh.empty()) {
-        const TriangleMesh mesh = meshLevelSet(field);
-        writeMesh(mesh, o.mesh);
-        std::cout << "wrote " << o.mesh << ": " << mesh.triangles.size() << " triangles\n";
-    }
+    writeMeshOutput(field, o.mesh);
 }
 
 } // namespace

@@ -1,0 +1,26 @@
+#include "mesh_output.h"
+
+#include <atomic_file.h>
+#include <incremental_mesher.h>
+#include <mesh_file.h>
+
+#include <iostream>
+
+namespace sculpt::cli {
+
+void checkMeshOutput(const std::string& path)
+{
+    if (path.empty()) return;
+    meshFormatOf(path);
+    AtomicFile::checkTarget(path);
+}
+
+void writeMeshOutput(const FieldImage& field, const std::string& path)
+{
+    if (path.empty()) return;
+    const TriangleMesh mesh = meshLevelSet(field);
+    writeMesh(mesh, path);
+    std::cout << "wrote " << path << ": " << mesh.triangles.size() << " triangles\n";
+}
+
+} // namespace sculpt::cli
