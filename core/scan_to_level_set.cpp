@@ -1,86 +1,215 @@
 #include "scan_to_level_set.h"
 
 #include "errors.h"
+#include "fast_marching.h"
 #include "memory_budget.h"
 #include "text_format.h"
 
-#include <openvdb/tools/ChangeBackground.h>
-#include <openvdb/tools/FastSweeping.h>
 #include <openvdb/tools/LevelSetUtil.h>
-#include <openvdb/tools/Morphology.h>
-#include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 #include <vector>
 
 namespace sculpt {
 
 namespace {
 
-constexpr int kSlabLayers = 8;  // output z layers per slab: one leaf
+using Leaf = openvdb::FloatGrid::TreeType::LeafNodeType;
+using LeafList = std::vector<std::unique_ptr<Leaf>>;
 
-/// Trilinear samples of the scan for world points, from the slices [k0, k1] held as floats.
-class SliceWindow {
+constexpr int kBlock = 8;                      // scan samples per edge of a range block
+const openvdb::Coord kTile(32, 32, 16);        // output voxels per tile: 4 x 4 x 2 leaves
+constexpr int kHalo = 5;                       // tile margin: the band (3), marching slack (1), gradient (1)
+constexpr double kMaxBoxVoxels = double(1LL << 37);  // about 5000^3: beyond, ask for a larger voxel size
+
+/// The smallest and largest sample of every 8^3 block of the scan: a tile whose samples all lie
+/// on one side of the iso-value holds no surface and is not sampled at all.
+class BlockRanges {
 public:
-    SliceWindow(const ScanVolume& scan) : mScan(scan), mDims(scan.dims()), mWorldToIndex(scan.indexToWorld().inverse())
+    explicit BlockRanges(const ScanVolume& scan) : mDims(scan.dims())
     {
-        mOutside = float(scan.range().first) - 1.0f;
+        for (int a = 0; a < 3; ++a) mBlocks[a] = (mDims[a] + kBlock - 1) / kBlock;
+        mRanges.assign(size_t(mBlocks.x()) * mBlocks.y() * mBlocks.z(), {std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()});
+        tbb::parallel_for(0, mBlocks.z(), [&](int bz) {  // each task owns one layer of blocks
+            std::vector<float> slice(size_t(mDims.x()) * size_t(mDims.y()));
+            for (int k = bz * kBlock; k < std::min((bz + 1) * kBlock, mDims.z()); ++k) {
+                scan.readSlice(k, slice.data());
+                for (int j = 0; j < mDims.y(); ++j) {
+                    for (int i = 0; i < mDims.x(); ++i) {
+                        auto& r = mRanges[index(i / kBlock, j / kBlock, bz)];
+                        const float v = slice[size_t(j) * size_t(mDims.x()) + size_t(i)];
+                        r.first = std::min(r.first, v);
+                        r.second = std::max(r.second, v);
+                    }
+                }
+            }
+        });
     }
 
-    /// Loads the slices a box of world points can touch.
-    void load(const openvdb::BBoxd& world)
+    /// The range of the samples trilinear interpolation reads for index-space points in `box`,
+    /// widened to `outside` if the box reaches off the lattice.
+    std::pair<float, float> range(const openvdb::BBoxd& box, float outside) const
     {
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-        for (int c = 0; c < 8; ++c) {
-            const openvdb::Vec3d corner((c & 1) ? world.max().x() : world.min().x(), (c & 2) ? world.max().y() : world.min().y(),
-                                        (c & 4) ? world.max().z() : world.min().z());
-            const double k = mWorldToIndex.transform(corner).z();
-            lo = std::min(lo, k);
-            hi = std::max(hi, k);
+        std::pair<float, float> r{std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+        openvdb::Coord lo, hi;
+        for (int a = 0; a < 3; ++a) {
+            if (box.max()[a] < 0.0 || box.min()[a] > mDims[a] - 1) return {outside, outside};
+            if (box.min()[a] < 0.0 || box.max()[a] > mDims[a] - 1) r.first = outside;
+            lo[a] = std::max(int(std::floor(box.min()[a])), 0) / kBlock;
+            hi[a] = std::min(int(std::ceil(box.max()[a])), mDims[a] - 1) / kBlock;
         }
-        mK0 = std::clamp(int(std::floor(lo)), 0, mDims.z() - 1);
-        const int k1 = std::clamp(int(std::ceil(hi)) + 1, 0, mDims.z() - 1);
-        const size_t slice = size_t(mDims.x()) * size_t(mDims.y());
-        mSlices.resize(slice * size_t(k1 - mK0 + 1));
-        for (int k = mK0; k <= k1; ++k) mScan.readSlice(k, mSlices.data() + size_t(k - mK0) * slice);
-        mK1 = k1;
-    }
-
-    /// The sample at a world point; below every sample outside the scan.
-    float operator()(const openvdb::Vec3d& world) const
-    {
-        const openvdb::Vec3d p = mWorldToIndex.transform(world);
-        if (p.x() < 0.0 || p.y() < 0.0 || p.z() < 0.0 || p.x() > mDims.x() - 1 || p.y() > mDims.y() - 1 ||
-            p.z() > mDims.z() - 1) {
-            return mOutside;
+        for (int bz = lo.z(); bz <= hi.z(); ++bz) {
+            for (int by = lo.y(); by <= hi.y(); ++by) {
+                for (int bx = lo.x(); bx <= hi.x(); ++bx) {
+                    const auto& b = mRanges[index(bx, by, bz)];
+                    r = {std::min(r.first, b.first), std::max(r.second, b.second)};
+                }
+            }
         }
-        const int i = std::min(int(p.x()), std::max(mDims.x() - 2, 0)), j = std::min(int(p.y()), std::max(mDims.y() - 2, 0)),
-                  k = std::clamp(int(p.z()), mK0, std::max(mK1 - 1, mK0));
-        const double fx = p.x() - i, fy = p.y() - j, fz = p.z() - k;
-        const auto at = [&](int di, int dj, int dk) {
-            const int ii = std::min(i + di, mDims.x() - 1), jj = std::min(j + dj, mDims.y() - 1), kk = std::min(k + dk, mK1);
-            return double(mSlices[(size_t(kk - mK0) * size_t(mDims.y()) + size_t(jj)) * size_t(mDims.x()) + size_t(ii)]);
-        };
-        const double c00 = at(0, 0, 0) * (1 - fx) + at(1, 0, 0) * fx, c10 = at(0, 1, 0) * (1 - fx) + at(1, 1, 0) * fx;
-        const double c01 = at(0, 0, 1) * (1 - fx) + at(1, 0, 1) * fx, c11 = at(0, 1, 1) * (1 - fx) + at(1, 1, 1) * fx;
-        return float((c00 * (1 - fy) + c10 * fy) * (1 - fz) + (c01 * (1 - fy) + c11 * fy) * fz);
+        return r;
     }
-
-    float outside() const { return mOutside; }
 
 private:
-    const ScanVolume& mScan;
-    openvdb::Coord mDims;
-    openvdb::Mat4d mWorldToIndex;
-    std::vector<float> mSlices;
-    int mK0 = 0, mK1 = 0;
-    float mOutside = 0.0f;
+    size_t index(int bx, int by, int bz) const { return (size_t(bz) * mBlocks.y() + size_t(by)) * mBlocks.x() + size_t(bx); }
+
+    openvdb::Coord mDims, mBlocks;
+    std::vector<std::pair<float, float>> mRanges;
 };
 
-/// The output lattice: the scan's world box, one voxel of outside around it.
+/// Turns one tile of the output lattice into the band's leaves: samples the scan on the tile
+/// and a margin, seeds the voxels next to a crossing with their distance to it, marches
+/// distances out to the band's width and keeps the leaves the band touches. One per thread:
+/// it owns the scratch buffers.
+class TileConverter {
+public:
+    TileConverter(const ScanVolume& scan, const BlockRanges& ranges, double iso, double h)
+        : mScan(scan), mRanges(ranges), mIso(float(iso)), mH(float(h)),
+          mBackground(float(FieldImage::kDefaultHalfWidthVoxels * h)), mOutside(float(scan.range().first) - 1.0f)
+    {
+        mOutputToScan = openvdb::Mat4d::identity();
+        mOutputToScan.preScale(openvdb::Vec3d(h));
+        mOutputToScan = mOutputToScan * scan.indexToWorld().inverse();
+        mDims = kTile + openvdb::Coord(2 * kHalo);
+    }
+
+    /// Appends the leaves of the tile whose first voxel is `origin` (output index space).
+    void convert(const openvdb::Coord& origin, LeafList& leaves)
+    {
+        mLow = origin - openvdb::Coord(kHalo);
+        if (!mayCross()) return;
+        sample();
+        if (!seed()) return;
+        mMarching.run(mDims, mH, mBackground, mDistance);
+        for (int z = 0; z < kTile.z(); z += int(Leaf::DIM)) {
+            for (int y = 0; y < kTile.y(); y += int(Leaf::DIM)) {
+                for (int x = 0; x < kTile.x(); x += int(Leaf::DIM)) emitLeaf(origin + openvdb::Coord(x, y, z), leaves);
+            }
+        }
+    }
+
+private:
+    size_t index(const openvdb::Coord& local) const
+    {
+        return (size_t(local.z()) * size_t(mDims.y()) + size_t(local.y())) * size_t(mDims.x()) + size_t(local.x());
+    }
+
+    /// False if every sample the window's interpolation reads is on one side of the iso-value.
+    bool mayCross() const
+    {
+        openvdb::BBoxd box;
+        for (int c = 0; c < 8; ++c) {
+            const openvdb::Coord corner((c & 1) ? mDims.x() - 1 : 0, (c & 2) ? mDims.y() - 1 : 0, (c & 4) ? mDims.z() - 1 : 0);
+            box.expand(mOutputToScan.transform((mLow + corner).asVec3d()));
+        }
+        const auto [lo, hi] = mRanges.range(box, mOutside);
+        return lo <= mIso && hi > mIso;
+    }
+
+    void sample()
+    {
+        mSamples.resize(size_t(mDims.x()) * mDims.y() * mDims.z());
+        mPoints.resize(size_t(mDims.x()));
+        for (int z = 0; z < mDims.z(); ++z) {
+            for (int y = 0; y < mDims.y(); ++y) {
+                for (int x = 0; x < mDims.x(); ++x) mPoints[size_t(x)] = mOutputToScan.transform((mLow + openvdb::Coord(x, y, z)).asVec3d());
+                mScan.sample(mPoints.data(), mPoints.size(), mOutside, &mSamples[index(openvdb::Coord(0, y, z))]);
+            }
+        }
+    }
+
+    /// Gives the voxels next to a crossing their distance to it; false if there is none. The
+    /// estimate |iso - f| / |grad f| keeps the surface's voxel-scale detail (the mesher then finds
+    /// the crossings where the scan has them, as FlyingEdges does); where it exceeds a voxel (a
+    /// gradient that central differences flatten) the distance to the plane through the voxel's
+    /// edge crossings is used instead, as fast sweeping's initialisation does.
+    bool seed()
+    {
+        mDistance.assign(mSamples.size(), std::numeric_limits<float>::infinity());
+        const std::ptrdiff_t step[3] = {1, mDims.x(), std::ptrdiff_t(mDims.x()) * mDims.y()};
+        bool any = false;
+        for (int z = 1; z < mDims.z() - 1; ++z) {
+            for (int y = 1; y < mDims.y() - 1; ++y) {
+                for (int x = 1; x < mDims.x() - 1; ++x) {
+                    const size_t i = index(openvdb::Coord(x, y, z));
+                    const double f = mSamples[i];
+                    double gradient2 = 0.0, inverseEdge2 = 0.0;  // sum over axes of 1 / (crossing distance along it)^2
+                    for (int a = 0; a < 3; ++a) {
+                        const double below = mSamples[i - size_t(step[a])], above = mSamples[i + size_t(step[a])];
+                        gradient2 += (above - below) * (above - below);
+                        double nearest = std::numeric_limits<double>::infinity();  // in voxels
+                        for (const double n : {below, above}) {
+                            if ((n > mIso) != (f > mIso)) nearest = std::min(nearest, (mIso - f) / (n - f));
+                        }
+                        inverseEdge2 += 1.0 / (nearest * nearest);
+                    }
+                    if (inverseEdge2 == 0.0) continue;  // no crossing
+                    const double estimate = std::abs(mIso - f) / (std::sqrt(gradient2) / (2.0 * mH));
+                    mDistance[i] = float(estimate < mH ? estimate : mH / std::sqrt(inverseEdge2));
+                    any = true;
+                }
+            }
+        }
+        return any;
+    }
+
+    /// The leaf at `origin` if the band reaches it: distances signed by the samples (negative
+    /// where they exceed the iso-value), active within the band, +-background elsewhere.
+    void emitLeaf(const openvdb::Coord& origin, LeafList& leaves) const
+    {
+        std::unique_ptr<Leaf> leaf;
+        for (openvdb::Index n = 0; n < Leaf::SIZE; ++n) {
+            const size_t i = index(Leaf::offsetToLocalCoord(n) + origin - mLow);
+            if (mDistance[i] < mBackground && !leaf) leaf = std::make_unique<Leaf>(origin, mBackground, false);
+        }
+        if (!leaf) return;
+        for (openvdb::Index n = 0; n < Leaf::SIZE; ++n) {
+            const size_t i = index(Leaf::offsetToLocalCoord(n) + origin - mLow);
+            const float sign = mSamples[i] > mIso ? -1.0f : 1.0f;
+            const bool band = mDistance[i] < mBackground;
+            leaf->setValueOnly(n, sign * (band ? mDistance[i] : mBackground));
+            leaf->setActiveState(n, band);
+        }
+        leaves.push_back(std::move(leaf));
+    }
+
+    const ScanVolume& mScan;
+    const BlockRanges& mRanges;
+    float mIso, mH, mBackground, mOutside;
+    openvdb::Mat4d mOutputToScan;  // output voxel index -> scan sample index
+    openvdb::Coord mDims, mLow;    // the window: the tile and its margin
+    std::vector<openvdb::Vec3d> mPoints;
+    std::vector<float> mSamples, mDistance;
+    FastMarching mMarching;
+};
+
+/// The output lattice: the scan's world box, two voxels of outside around it.
 openvdb::CoordBBox outputBox(const ScanVolume& scan, double h)
 {
     openvdb::BBoxd world;
@@ -97,94 +226,14 @@ openvdb::CoordBBox outputBox(const ScanVolume& scan, double h)
     return box;
 }
 
-/// The voxels next to a crossing of the iso-value, holding their first-order distance
-/// (iso - f) / |grad f| (negative inside), sampled one slab of output layers at a time.
-openvdb::FloatGrid::Ptr seedCrossings(const ScanVolume& scan, double iso, double h, const openvdb::CoordBBox& box,
-                                      const Progress& progress)
+/// The tiles' first voxels in one layer of tiles (z fixed), x fastest.
+std::vector<openvdb::Coord> tileLayer(const openvdb::CoordBBox& box, int z)
 {
-    const double halfWidth = FieldImage::kDefaultHalfWidthVoxels;
-    auto seeds = openvdb::FloatGrid::create(float((halfWidth + 2.0) * h));
-    seeds->setTransform(openvdb::math::Transform::createLinearTransform(h));
-    const auto& xform = seeds->transform();
-    SliceWindow window(scan);
-    const int nx = box.dim().x(), ny = box.dim().y();
-    std::vector<float> slab, distance;  // one slab plus a layer each side (for the gradient), x fastest
-    auto acc = seeds->getAccessor();
-    for (int z0 = box.min().z(); z0 <= box.max().z(); z0 += kSlabLayers) {
-        const int z1 = std::min(z0 + kSlabLayers - 1, box.max().z());
-        const int layers = z1 - z0 + 3;
-        const auto index = [&](int x, int y, int l) { return (size_t(l) * ny + size_t(y)) * nx + size_t(x); };
-        const auto coord = [&](int x, int y, int l) { return openvdb::Coord(box.min().x() + x, box.min().y() + y, z0 - 1 + l); };
-        window.load(openvdb::BBoxd(xform.indexToWorld(coord(0, 0, 0)), xform.indexToWorld(coord(nx - 1, ny - 1, layers - 1))));
-        slab.assign(size_t(nx) * ny * layers, window.outside());
-        tbb::parallel_for(0, layers, [&](int l) {
-            for (int y = 0; y < ny; ++y) {
-                for (int x = 0; x < nx; ++x) slab[index(x, y, l)] = window(xform.indexToWorld(coord(x, y, l)));
-            }
-        });
-        distance.assign(slab.size(), std::numeric_limits<float>::quiet_NaN());  // NaN: not a seed
-        tbb::parallel_for(1, layers - 1, [&](int l) {
-            for (int y = 1; y < ny - 1; ++y) {
-                for (int x = 1; x < nx - 1; ++x) {
-                    const float f = slab[index(x, y, l)];
-                    const float n[6] = {slab[index(x - 1, y, l)], slab[index(x + 1, y, l)], slab[index(x, y - 1, l)],
-                                        slab[index(x, y + 1, l)], slab[index(x, y, l - 1)], slab[index(x, y, l + 1)]};
-                    bool crossing = false;
-                    for (float v : n) crossing = crossing || ((v > iso) != (f > iso));
-                    if (!crossing) continue;
-                    const double gradient = std::sqrt(double(n[1] - n[0]) * (n[1] - n[0]) + double(n[3] - n[2]) * (n[3] - n[2]) +
-                                                      double(n[5] - n[4]) * (n[5] - n[4])) / (2.0 * h);
-                    // A crossing voxel is within a voxel of the surface whatever the estimate says.
-                    distance[index(x, y, l)] = float(std::clamp((iso - f) / gradient, -h, h));
-                }
-            }
-        });
-        for (int l = 1; l < layers - 1; ++l) {
-            for (int y = 1; y < ny - 1; ++y) {
-                for (int x = 1; x < nx - 1; ++x) {
-                    const float d = distance[index(x, y, l)];
-                    if (!std::isnan(d)) acc.setValueOn(coord(x, y, l), d);
-                }
-            }
-        }
-        report(progress, 0.8 * double(z1 - box.min().z() + 1) / box.dim().z());
+    std::vector<openvdb::Coord> origins;
+    for (int y = box.min().y(); y <= box.max().y(); y += kTile.y()) {
+        for (int x = box.min().x(); x <= box.max().x(); x += kTile.x()) origins.emplace_back(x, y, z);
     }
-    return seeds;
-}
-
-/// The narrow band around the seeds: signs everywhere (signed flood fill), the band's voxels
-/// (dilation), their distances by fast sweeping from the crossings (sdfToSdf), then the seeds'
-/// own values back: the mesher finds the crossings where the scan has them (as FlyingEdges
-/// does), where the sweep's distance to a plane through them would round voxel-scale detail off
-/// (4% of a brain's area). The sweep's grid becomes the result, trimmed in place.
-openvdb::FloatGrid::Ptr sweepBand(openvdb::FloatGrid& seeds, double halfWidth)
-{
-    const double h = seeds.voxelSize()[0];
-    // Seeds whose estimate is within a voxel; the others (a steep or flat f) keep the sweep's.
-    const openvdb::MaskGrid::Ptr seedMask = openvdb::MaskGrid::create();
-    auto mask = seedMask->getAccessor();
-    for (auto it = seeds.cbeginValueOn(); it; ++it) {
-        if (std::abs(*it) < h) mask.setValueOn(it.getCoord());
-    }
-    openvdb::tools::signedFloodFill(seeds.tree());
-    openvdb::tools::dilateActiveValues(seeds.tree(), int(halfWidth), openvdb::tools::NN_FACE_EDGE, openvdb::tools::IGNORE_TILES);
-    openvdb::FloatGrid::Ptr band = openvdb::tools::sdfToSdf(seeds, 0.0f);
-    auto out = band->getAccessor();
-    const auto seedValues = seeds.getConstAccessor();
-    for (auto it = seedMask->cbeginValueOn(); it; ++it) out.setValueOn(it.getCoord(), seedValues.getValue(it.getCoord()));
-    const float background = float(halfWidth * h);
-    for (auto leaf = band->tree().beginLeaf(); leaf; ++leaf) {
-        for (auto it = leaf->beginValueOn(); it; ++it) {
-            if (std::abs(*it) < background) continue;
-            it.setValue(*it < 0.0f ? -background : background);
-            it.setValueOff();
-        }
-    }
-    openvdb::tools::changeLevelSetBackground(band->tree(), background);
-    band->setGridClass(openvdb::GRID_LEVEL_SET);
-    openvdb::tools::signedFloodFill(band->tree());
-    openvdb::tools::pruneLevelSet(band->tree());
-    return band;
+    return origins;
 }
 
 } // namespace
@@ -208,21 +257,35 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
                          formatNumber(lo) + " .. " + formatNumber(hi) + "): nothing would be inside");
     }
     if (!(h > 0.0) || !std::isfinite(h)) throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
-    const openvdb::CoordBBox box = outputBox(scan, h);
-    const double halfWidth = FieldImage::kDefaultHalfWidthVoxels;
+    openvdb::CoordBBox box = outputBox(scan, h);
     const openvdb::Coord dim = box.dim();
-    // The band is at most a few layers of the box's faces' worth per slice; refuse absurd boxes.
-    requireMemory(double(dim.x()) * dim.y() * (kSlabLayers + 2) * 4.0 * 2.0, "the resampled scan at voxel size " + formatNumber(h));
-    if (double(dim.x()) * dim.y() * dim.z() > double(1LL << 40)) {
+    if (double(dim.x()) * dim.y() * dim.z() > kMaxBoxVoxels) {
         throw InputError(scan.source() + ": voxel size " + formatNumber(h) + " would give " + std::to_string(dim.x()) + " x " +
-                         std::to_string(dim.y()) + " x " + std::to_string(dim.z()) + " voxels");
+                         std::to_string(dim.y()) + " x " + std::to_string(dim.z()) + " voxels; choose a larger --voxel-size");
     }
+    for (int a = 0; a < 3; ++a) box.min()[a] &= ~(kTile[a] - 1);  // tiles on leaf boundaries (kTile: powers of two)
 
-    auto seeds = seedCrossings(scan, iso, h, box, progress);
-    if (seeds->activeVoxelCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
-    FieldImage field(sweepBand(*seeds, halfWidth));
+    const BlockRanges ranges(scan);
+    report(progress, 0.05);
+    auto grid = openvdb::FloatGrid::create(float(FieldImage::kDefaultHalfWidthVoxels * h));
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(h));
+    grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    tbb::enumerable_thread_specific<TileConverter> converters(TileConverter(scan, ranges, iso, h));
+    for (int z = box.min().z(); z <= box.max().z(); z += kTile.z()) {
+        const std::vector<openvdb::Coord> tiles = tileLayer(box, z);
+        std::vector<LeafList> leaves(tiles.size());
+        tbb::parallel_for(size_t(0), tiles.size(), [&](size_t t) { converters.local().convert(tiles[t], leaves[t]); });
+        for (auto& list : leaves) {
+            for (auto& leaf : list) grid->tree().addLeaf(leaf.release());
+        }
+        // The band grows with the surface, which the header cannot tell: stop before it outgrows memory.
+        requireMemory(2.0 * double(grid->tree().leafCount()) * (sizeof(Leaf) + Leaf::SIZE * sizeof(float)), scan.source() + "'s surface at voxel size " + formatNumber(h));
+        report(progress, 0.05 + 0.95 * double(z + kTile.z() - box.min().z()) / box.dim().z());
+    }
+    if (grid->tree().leafCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
+    openvdb::tools::signedFloodFill(grid->tree());
     report(progress, 1.0);
-    return field;
+    return FieldImage(grid);
 }
 
 std::size_t keepLargestComponent(FieldImage& field)

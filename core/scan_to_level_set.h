@@ -2,15 +2,16 @@
 /// @file scan_to_level_set.h
 /// @brief A scan's iso-surface as an editable field image.
 ///
-/// The scan is resampled (trilinear, in its own index space, so spacing, orientation and origin
-/// are honoured) onto an axis-aligned world grid of the chosen voxel size, one slab of 8 output
-/// layers at a time. Only the voxels next to a crossing of the iso-value keep iso - f in a sparse
-/// grid; a signed flood fill gives every other voxel its side, the band is dilated around those
-/// seeds, and openvdb::tools::sdfToSdf computes its distances by fast sweeping from the crossings
-/// (fogToSdf would take the band's inactive inside for outside and see a false surface at the
-/// band's edge). Peak memory: the scan, the few slices a slab reads, and the band. Inside is
-/// where samples exceed the iso value (bright tissue on CT and T1 MRI); the scan's outside counts
-/// as outside, so surfaces cut by the scan's border are capped there.
+/// The output lattice (axis-aligned, the chosen voxel size) is cut into tiles of 32 x 32 x 16
+/// voxels, converted in parallel and independently: a tile whose scan samples all lie on one side
+/// of the iso-value (known from the samples' range per 8^3 block) is skipped; the others are
+/// resampled with a 5-voxel margin (trilinear, in the scan's own index space, so spacing,
+/// orientation and origin are honoured), the voxels next to a crossing get their distance to it,
+/// fast marching carries distances out to the band's width, and the leaves the band touches go
+/// into the grid. A signed flood fill then gives the untouched inside its sign. Peak memory: the
+/// scan, the band, and a few hundred KiB per thread. Inside is where samples exceed the iso-value
+/// (bright tissue on CT and T1 MRI); the scan's outside counts as outside, so surfaces cut by the
+/// scan's border are capped there.
 
 #include "field_image.h"
 #include "progress.h"

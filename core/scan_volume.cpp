@@ -280,6 +280,39 @@ void copyRow(const void* src, size_t count, float* out)
     for (size_t i = 0; i < count; ++i) out[i] = float(p[i]);
 }
 
+/// Trilinear interpolation in the samples of a dims-sized lattice; an axis of one sample has
+/// stride 0, so its single layer is read for both corners.
+template <typename T>
+void sampleTrilinear(const void* src, const openvdb::Coord& dims, const openvdb::Vec3d* points, size_t count, float outside,
+                     float* out)
+{
+    const T* data = static_cast<const T*>(src);
+    const size_t step[3] = {1, size_t(dims.x()), size_t(dims.x()) * size_t(dims.y())};
+    size_t stride[3];
+    for (int a = 0; a < 3; ++a) stride[a] = dims[a] > 1 ? step[a] : 0;
+    for (size_t n = 0; n < count; ++n) {
+        const openvdb::Vec3d& p = points[n];
+        size_t base = 0;
+        double f[3];
+        bool inside = true;
+        for (int a = 0; a < 3; ++a) {
+            inside = inside && p[a] >= 0.0 && p[a] <= dims[a] - 1;
+            const int i = std::clamp(int(p[a]), 0, std::max(dims[a] - 2, 0));
+            f[a] = p[a] - i;
+            base += size_t(i) * step[a];
+        }
+        if (!inside) {
+            out[n] = outside;
+            continue;
+        }
+        const auto at = [&](int dx, int dy, int dz) { return double(data[base + dx * stride[0] + dy * stride[1] + dz * stride[2]]); };
+        const double c00 = at(0, 0, 0) + f[0] * (at(1, 0, 0) - at(0, 0, 0)), c10 = at(0, 1, 0) + f[0] * (at(1, 1, 0) - at(0, 1, 0));
+        const double c01 = at(0, 0, 1) + f[0] * (at(1, 0, 1) - at(0, 0, 1)), c11 = at(0, 1, 1) + f[0] * (at(1, 1, 1) - at(0, 1, 1));
+        const double c0 = c00 + f[1] * (c10 - c00), c1 = c01 + f[1] * (c11 - c01);
+        out[n] = float(c0 + f[2] * (c1 - c0));
+    }
+}
+
 } // namespace
 
 ScanVolume::ScanVolume(std::shared_ptr<const Impl> impl) : mImpl(std::move(impl)) {}
@@ -315,6 +348,15 @@ void ScanVolume::readSlice(int k, float* out) const
                       size_t(k) * count * size_t(mImpl->image->GetScalarSize());
     switch (mImpl->image->GetScalarType()) {
         vtkTemplateMacro(copyRow<VTK_TT>(src, count, out));
+    default: throw InputError(source() + ": unsupported sample type");
+    }
+}
+
+void ScanVolume::sample(const openvdb::Vec3d* points, std::size_t count, float outside, float* out) const
+{
+    const void* src = mImpl->image->GetScalarPointer();
+    switch (mImpl->image->GetScalarType()) {
+        vtkTemplateMacro(sampleTrilinear<VTK_TT>(src, dims(), points, count, outside, out));
     default: throw InputError(source() + ": unsupported sample type");
     }
 }

@@ -7,7 +7,8 @@
 /// MetaImage (.mha, .mhd), a DICOM series (a directory of slices, sorted by position along the
 /// slice normal, with patient orientation), and raw samples with a layout given by the user.
 /// The samples stay in the file's type (an 8-bit scan costs one byte per voxel) and are read a
-/// slice at a time as floats, so converting a scan never needs a float copy of all of it.
+/// slice or a few points at a time as floats, so converting a scan never needs a float copy of
+/// all of it.
 
 #include <openvdb/openvdb.h>
 
@@ -45,6 +46,9 @@ public:
 
     /// Copies slice k (dims.x * dims.y samples, x fastest) into `out` as floats.
     void readSlice(int k, float* out) const;
+    /// Trilinear samples at points given in index space (i, j, k); `outside` for points off the
+    /// lattice. Thread-safe.
+    void sample(const openvdb::Vec3d* points, std::size_t count, float outside, float* out) const;
 
     /// The samples of an index box (inclusive), placed where they were.
     /// @throws InputError if the box does not overlap the scan.

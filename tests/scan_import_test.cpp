@@ -7,6 +7,7 @@
 
 #include <errors.h>
 #include <field_measures.h>
+#include <grid_checksum.h>
 #include <incremental_mesher.h>
 #include <scan_to_level_set.h>
 #include <scan_volume.h>
@@ -23,6 +24,8 @@
 #include <vtkTriangleFilter.h>
 
 #include <gtest/gtest.h>
+
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <filesystem>
@@ -140,6 +143,33 @@ TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
         layout.origin = ball.origin;
         expectBallAt(readRawScan(dir / "ball.raw", layout), ball, "raw");
     }
+}
+
+TEST(ScanImport, BandHoldsTheDistanceToTheSurfaceAcrossTiles)
+{
+    // The ball spans several of the converter's tiles (32 x 32 x 16 voxels) in every axis.
+    test::TempDir dir;
+    const SyntheticBall ball;
+    writeMetaImage(ball.image(), dir / "ball.mha");
+    const ScanVolume scan = readScan(dir / "ball.mha");
+    const FieldImage field = scanToLevelSet(scan, 100.0, 1.0);
+    const auto& grid = field.grid();
+    double worst = 0.0, sum = 0.0;
+    size_t count = 0;
+    for (auto it = grid.cbeginValueOn(); it; ++it) {
+        const double exact = (grid.transform().indexToWorld(it.getCoord()) - ball.centre).length() - ball.radius;
+        worst = std::max(worst, std::abs(*it - exact));
+        sum += std::abs(*it - exact);
+        ++count;
+    }
+    EXPECT_LT(worst, 0.25) << "voxels";
+    EXPECT_LT(sum / double(count), 0.1) << "voxels";
+    EXPECT_DOUBLE_EQ(grid.background(), 3.0);
+    EXPECT_GT(count, size_t(6 * 4 * M_PI * ball.radius * ball.radius * 0.9)) << "a band 3 voxels deep each side";
+
+    // Tiles are converted in parallel but written in order: one thread gives the same bits.
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(gridChecksum(scanToLevelSet(scan, 100.0, 1.0).grid()), gridChecksum(grid));
 }
 
 TEST(ScanImport, OtsuSplitsTheTwoMaterials)
