@@ -5,7 +5,6 @@
 #include "memory_budget.h"
 #include "text_format.h"
 
-#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -286,23 +285,6 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
     openvdb::tools::signedFloodFill(grid->tree());
     report(progress, 1.0);
     return FieldImage(grid);
-}
-
-std::size_t keepLargestComponent(FieldImage& field)
-{
-    std::vector<openvdb::FloatGrid::Ptr> pieces;
-    openvdb::tools::segmentSDF(field.grid(), pieces);
-    if (pieces.size() < 2) return 0;
-    // The piece with the most band voxels: the largest surface, which for scans' islands and
-    // the organ they surround is also the largest volume.
-    size_t best = 0;
-    for (size_t i = 1; i < pieces.size(); ++i) {
-        if (pieces[i]->activeVoxelCount() > pieces[best]->activeVoxelCount()) best = i;
-    }
-    const std::string units = field.units();
-    field = FieldImage(pieces[best], units);
-    field.markDirty(field.allLeaves());
-    return pieces.size() - 1;
 }
 
 } // namespace sculpt

@@ -27,8 +27,4 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double voxelSizeWo
 /// The smallest distance between neighbouring samples: the scan's native voxel size.
 double nativeVoxelSize(const ScanVolume& scan);
 
-/// Keeps only the connected piece with the largest surface (scans are full of islands).
-/// @return the number of pieces dropped.
-std::size_t keepLargestComponent(FieldImage& field);
-
 } // namespace sculpt

@@ -2,6 +2,7 @@
 
 #include <errors.h>
 #include <file_extension.h>
+#include <largest_component.h>
 #include <mesh_import.h>
 #include <scan_to_level_set.h>
 #include <text_format.h>

@@ -9,6 +9,7 @@
 #include <field_measures.h>
 #include <grid_checksum.h>
 #include <incremental_mesher.h>
+#include <largest_component.h>
 #include <scan_to_level_set.h>
 #include <scan_volume.h>
 
@@ -39,10 +40,11 @@ namespace {
 
 const char* kMri = "/usr/share/mricron/templates/ch2bet.nii.gz";
 
-/// A ball of radius `radius` (world units) centred at `centre`, sampled 0 outside .. 200 inside
-/// with a linear ramp across the surface, on a lattice with the given spacing and origin.
-vtkSmartPointer<vtkImageData> ballImage(const openvdb::Coord& dims, const openvdb::Vec3d& spacing,
-                                        const openvdb::Vec3d& origin, const openvdb::Vec3d& centre, double radius)
+/// A shape given by its signed distance (world units, negative inside) sampled 0 outside .. 200
+/// inside with a linear ramp across the surface (100 on it), on a lattice with the given spacing
+/// and origin.
+vtkSmartPointer<vtkImageData> sampledImage(const openvdb::Coord& dims, const openvdb::Vec3d& spacing,
+                                           const openvdb::Vec3d& origin, const std::function<double(const openvdb::Vec3d&)>& sdf)
 {
     auto image = vtkSmartPointer<vtkImageData>::New();
     image->SetDimensions(dims.x(), dims.y(), dims.z());
@@ -53,8 +55,7 @@ vtkSmartPointer<vtkImageData> ballImage(const openvdb::Coord& dims, const openvd
     for (int k = 0; k < dims.z(); ++k) {
         for (int j = 0; j < dims.y(); ++j) {
             for (int i = 0; i < dims.x(); ++i) {
-                const openvdb::Vec3d world = origin + openvdb::Vec3d(i * spacing.x(), j * spacing.y(), k * spacing.z());
-                const double d = (world - centre).length() - radius;  // 100 on the surface
+                const double d = sdf(origin + openvdb::Vec3d(i * spacing.x(), j * spacing.y(), k * spacing.z()));
                 *p++ = short(std::clamp(100.0 - 40.0 * d, 0.0, 200.0));
             }
         }
@@ -79,7 +80,10 @@ struct SyntheticBall {
     openvdb::Vec3d origin{-13.0, 7.0, 31.0};
     openvdb::Vec3d centre = origin + openvdb::Vec3d(19.5, 21.0, 20.0);
     double radius = 12.0;
-    vtkSmartPointer<vtkImageData> image() const { return ballImage(dims, spacing, origin, centre, radius); }
+    vtkSmartPointer<vtkImageData> image() const
+    {
+        return sampledImage(dims, spacing, origin, [&](const openvdb::Vec3d& p) { return (p - centre).length() - radius; });
+    }
 };
 
 /// MetaImage, uncompressed; a .mhd header keeps its samples in a .raw beside it (read raw too).
@@ -209,6 +213,33 @@ TEST(ScanImport, CropSmoothAndLargestComponent)
     // Smoothing keeps a ball a ball.
     EXPECT_NEAR(sphereOf(scanToLevelSet(scan.smoothed(1.0), 100.0, 1.0)).first, ball.radius, 0.6);
     EXPECT_THROW(scan.cropped(openvdb::CoordBBox(openvdb::Coord(100), openvdb::Coord(120))), InputError);
+}
+
+TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
+{
+    // A hollow ball (radius 14, cavity 8, the wall 6 voxels: wider than the band), a ball floating
+    // in the cavity (3), and one beside it (5) within the big ball's band (a 3-voxel gap).
+    const openvdb::Vec3d centre(24.0, 24.0, 24.0), beside(46.0, 24.0, 24.0);
+    const auto sdf = [&](const openvdb::Vec3d& p) {
+        const double r = (p - centre).length();
+        return std::min({std::max(r - 14.0, 8.0 - r), r - 3.0, (p - beside).length() - 5.0});
+    };
+    test::TempDir dir;
+    writeMetaImage(sampledImage(openvdb::Coord(56, 48, 48), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), sdf), dir / "pieces.mha");
+    FieldImage field = scanToLevelSet(readScan(dir / "pieces.mha"), 100.0, 1.0);
+    EXPECT_EQ(test::meshTopology(meshLevelSet(field)).eulerCharacteristic(), 8) << "four sphere-like surfaces";
+
+    EXPECT_EQ(keepLargestComponent(field), 3u);
+    const TriangleMesh mesh = meshLevelSet(field);
+    EXPECT_TRUE(test::meshTopology(mesh).closedManifold());
+    EXPECT_EQ(test::meshTopology(mesh).eulerCharacteristic(), 2) << "one closed shell";
+    const double ball = 4.0 / 3.0 * M_PI * std::pow(14.0, 3);
+    EXPECT_NEAR(test::meshVolume(mesh), ball, 0.02 * ball);
+    const auto& values = field.grid().tree();
+    EXPECT_GT(values.getValue(openvdb::Coord(46, 24, 24)), 0.0f) << "the island beside is outside";
+    EXPECT_LT(values.getValue(openvdb::Coord(24, 24, 24)), 0.0f) << "the cavity and its island are inside";
+    EXPECT_LT(values.getValue(openvdb::Coord(30, 24, 24)), 0.0f);
+    EXPECT_EQ(keepLargestComponent(field), 0u) << "one piece left";
 }
 
 TEST(ScanImport, BadScansAreRefusedNamingTheFile)
