@@ -100,7 +100,7 @@ void addImportCommand(CLI::App& app)
         ->expected(6);
     cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_flag("--largest-component", o->largest, "keep only the largest connected piece (drops islands)");
+    cmd->add_flag("--largest-component", o->largest, "keep only the largest surface: drops islands, fills closed cavities");
     cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);
     cmd->add_option("--raw-type", o->rawType, "raw input: uint8, int8, uint16, int16, uint32, int32, float32, float64")
         ->capture_default_str();
