@@ -41,11 +41,12 @@ public:
             for (int k = bz * kBlock; k < std::min((bz + 1) * kBlock, mDims.z()); ++k) {
                 scan.readSlice(k, slice.data());
                 for (int j = 0; j < mDims.y(); ++j) {
-                    for (int i = 0; i < mDims.x(); ++i) {
-                        auto& r = mRanges[index(i / kBlock, j / kBlock, bz)];
-                        const float v = slice[size_t(j) * size_t(mDims.x()) + size_t(i)];
-                        r.first = std::min(r.first, v);
-                        r.second = std::max(r.second, v);
+                    const float* row = slice.data() + size_t(j) * size_t(mDims.x());
+                    for (int bx = 0; bx < mBlocks.x(); ++bx) {
+                        const float* first = row + bx * kBlock;
+                        const auto [lo, hi] = std::minmax_element(first, row + std::min((bx + 1) * kBlock, mDims.x()));
+                        auto& r = mRanges[index(bx, j / kBlock, bz)];
+                        r = {std::min(r.first, *lo), std::max(r.second, *hi)};
                     }
                 }
             }
@@ -122,23 +123,64 @@ private:
     /// False if every sample the window's interpolation reads is on one side of the iso-value.
     bool mayCross() const
     {
-        openvdb::BBoxd box;
-        for (int c = 0; c < 8; ++c) {
-            const openvdb::Coord corner((c & 1) ? mDims.x() - 1 : 0, (c & 2) ? mDims.y() - 1 : 0, (c & 4) ? mDims.z() - 1 : 0);
-            box.expand(mOutputToScan.transform((mLow + corner).asVec3d()));
-        }
-        const auto [lo, hi] = mRanges.range(box, mOutside);
+        const auto [lo, hi] = range(openvdb::CoordBBox(openvdb::Coord(0), mDims.offsetBy(-1)));
         return lo <= mIso && hi > mIso;
     }
 
+    /// The window's samples, chunk by chunk: a chunk with no crossing within two voxels of it
+    /// (so its values serve only as a side, never in a seed's estimate) is filled with one value
+    /// from the right side instead of being interpolated.
     void sample()
     {
         mSamples.resize(size_t(mDims.x()) * mDims.y() * mDims.z());
-        mPoints.resize(size_t(mDims.x()));
-        for (int z = 0; z < mDims.z(); ++z) {
-            for (int y = 0; y < mDims.y(); ++y) {
-                for (int x = 0; x < mDims.x(); ++x) mPoints[size_t(x)] = mOutputToScan.transform((mLow + openvdb::Coord(x, y, z)).asVec3d());
-                mScan.sample(mPoints.data(), mPoints.size(), mOutside, &mSamples[index(openvdb::Coord(0, y, z))]);
+        constexpr int kChunk = 8, kReach = 2;
+        for (int z0 = 0; z0 < mDims.z(); z0 += kChunk) {
+            for (int y0 = 0; y0 < mDims.y(); y0 += kChunk) {
+                for (int x0 = 0; x0 < mDims.x(); x0 += kChunk) {
+                    const openvdb::CoordBBox chunk(openvdb::Coord(x0, y0, z0),
+                                                   openvdb::Coord::minComponent(openvdb::Coord(x0, y0, z0).offsetBy(kChunk - 1), mDims.offsetBy(-1)));
+                    const auto [lo, hi] = range(openvdb::CoordBBox(chunk.min().offsetBy(-kReach), chunk.max().offsetBy(kReach)));
+                    if (lo > mIso || hi <= mIso) {
+                        fill(chunk, lo > mIso ? lo : hi);
+                    } else {
+                        interpolate(chunk);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The range of the samples interpolation reads for a box of window voxels.
+    std::pair<float, float> range(const openvdb::CoordBBox& local) const
+    {
+        openvdb::BBoxd box;
+        for (int c = 0; c < 8; ++c) {
+            const openvdb::Coord corner((c & 1) ? local.max().x() : local.min().x(), (c & 2) ? local.max().y() : local.min().y(),
+                                        (c & 4) ? local.max().z() : local.min().z());
+            box.expand(mOutputToScan.transform((mLow + corner).asVec3d()));
+        }
+        return mRanges.range(box, mOutside);
+    }
+
+    void fill(const openvdb::CoordBBox& chunk, float value)
+    {
+        for (int z = chunk.min().z(); z <= chunk.max().z(); ++z) {
+            for (int y = chunk.min().y(); y <= chunk.max().y(); ++y) {
+                const size_t row = index(openvdb::Coord(chunk.min().x(), y, z));
+                std::fill_n(&mSamples[row], chunk.dim().x(), value);
+            }
+        }
+    }
+
+    void interpolate(const openvdb::CoordBBox& chunk)
+    {
+        mPoints.resize(size_t(chunk.dim().x()));
+        for (int z = chunk.min().z(); z <= chunk.max().z(); ++z) {
+            for (int y = chunk.min().y(); y <= chunk.max().y(); ++y) {
+                for (int x = 0; x < chunk.dim().x(); ++x) {
+                    mPoints[size_t(x)] = mOutputToScan.transform((mLow + openvdb::Coord(chunk.min().x() + x, y, z)).asVec3d());
+                }
+                mScan.sample(mPoints.data(), mPoints.size(), mOutside, &mSamples[index(openvdb::Coord(chunk.min().x(), y, z))]);
             }
         }
     }
