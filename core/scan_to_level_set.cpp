@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -97,6 +98,7 @@ public:
         mOutputToScan.preScale(openvdb::Vec3d(h));
         mOutputToScan = mOutputToScan * scan.indexToWorld().inverse();
         mDims = kTile + openvdb::Coord(2 * kHalo);
+        mStep = {1, size_t(mDims.x()), size_t(mDims.x()) * size_t(mDims.y())};
     }
 
     /// Appends the leaves of the tile whose first voxel is `origin` (output index space).
@@ -193,31 +195,43 @@ private:
     bool seed()
     {
         mDistance.assign(mSamples.size(), std::numeric_limits<float>::infinity());
-        const std::ptrdiff_t step[3] = {1, mDims.x(), std::ptrdiff_t(mDims.x()) * mDims.y()};
         bool any = false;
         for (int z = 1; z < mDims.z() - 1; ++z) {
             for (int y = 1; y < mDims.y() - 1; ++y) {
                 for (int x = 1; x < mDims.x() - 1; ++x) {
                     const size_t i = index(openvdb::Coord(x, y, z));
-                    const double f = mSamples[i];
-                    double gradient2 = 0.0, inverseEdge2 = 0.0;  // sum over axes of 1 / (crossing distance along it)^2
-                    for (int a = 0; a < 3; ++a) {
-                        const double below = mSamples[i - size_t(step[a])], above = mSamples[i + size_t(step[a])];
-                        gradient2 += (above - below) * (above - below);
-                        double nearest = std::numeric_limits<double>::infinity();  // in voxels
-                        for (const double n : {below, above}) {
-                            if ((n > mIso) != (f > mIso)) nearest = std::min(nearest, (mIso - f) / (n - f));
-                        }
-                        inverseEdge2 += 1.0 / (nearest * nearest);
-                    }
-                    if (inverseEdge2 == 0.0) continue;  // no crossing
-                    const double estimate = std::abs(mIso - f) / (std::sqrt(gradient2) / (2.0 * mH));
-                    mDistance[i] = float(estimate < mH ? estimate : mH / std::sqrt(inverseEdge2));
+                    if (!crossing(i)) continue;
+                    mDistance[i] = distanceToCrossing(i);
                     any = true;
                 }
             }
         }
         return any;
+    }
+
+    bool crossing(size_t i) const
+    {
+        const bool inside = mSamples[i] > mIso;
+        bool crosses = false;
+        for (const size_t step : mStep) crosses |= (mSamples[i - step] > mIso) != inside || (mSamples[i + step] > mIso) != inside;
+        return crosses;
+    }
+
+    float distanceToCrossing(size_t i) const
+    {
+        const double f = mSamples[i];
+        double gradient2 = 0.0, inverseEdge2 = 0.0;  // sum over axes of 1 / (crossing distance along it)^2
+        for (const size_t step : mStep) {
+            const double below = mSamples[i - step], above = mSamples[i + step];
+            gradient2 += (above - below) * (above - below);
+            double nearest = std::numeric_limits<double>::infinity();  // in voxels
+            for (const double n : {below, above}) {
+                if ((n > mIso) != (f > mIso)) nearest = std::min(nearest, (mIso - f) / (n - f));
+            }
+            inverseEdge2 += 1.0 / (nearest * nearest);
+        }
+        const double estimate = std::abs(mIso - f) / (std::sqrt(gradient2) / (2.0 * mH));
+        return float(estimate < mH ? estimate : mH / std::sqrt(inverseEdge2));
     }
 
     /// The leaf at `origin` if the band reaches it: distances signed by the samples (negative
@@ -245,6 +259,7 @@ private:
     float mIso, mH, mBackground, mOutside;
     openvdb::Mat4d mOutputToScan;  // output voxel index -> scan sample index
     openvdb::Coord mDims, mLow;    // the window: the tile and its margin
+    std::array<size_t, 3> mStep;   // index offsets of a voxel's neighbours along x, y, z
     std::vector<openvdb::Vec3d> mPoints;
     std::vector<float> mSamples, mDistance;
     FastMarching mMarching;
