@@ -238,14 +238,13 @@ private:
     /// where they exceed the iso-value), active within the band, +-background elsewhere.
     void emitLeaf(const openvdb::Coord& origin, LeafList& leaves) const
     {
-        std::unique_ptr<Leaf> leaf;
+        const auto at = [&](openvdb::Index n) { return index(Leaf::offsetToLocalCoord(n) + origin - mLow); };
+        openvdb::Index first = 0;
+        while (first < Leaf::SIZE && !(mDistance[at(first)] < mBackground)) ++first;
+        if (first == Leaf::SIZE) return;
+        auto leaf = std::make_unique<Leaf>(origin, mBackground, false);
         for (openvdb::Index n = 0; n < Leaf::SIZE; ++n) {
-            const size_t i = index(Leaf::offsetToLocalCoord(n) + origin - mLow);
-            if (mDistance[i] < mBackground && !leaf) leaf = std::make_unique<Leaf>(origin, mBackground, false);
-        }
-        if (!leaf) return;
-        for (openvdb::Index n = 0; n < Leaf::SIZE; ++n) {
-            const size_t i = index(Leaf::offsetToLocalCoord(n) + origin - mLow);
+            const size_t i = at(n);
             const float sign = mSamples[i] > mIso ? -1.0f : 1.0f;
             const bool band = mDistance[i] < mBackground;
             leaf->setValueOnly(n, sign * (band ? mDistance[i] : mBackground));
@@ -335,8 +334,9 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
             for (auto& leaf : list) grid->tree().addLeaf(leaf.release());
         }
         // The band grows with the surface, which the header cannot tell: stop before it outgrows memory.
-        requireMemory(2.0 * double(grid->tree().leafCount()) * (sizeof(Leaf) + Leaf::SIZE * sizeof(float)), scan.source() + "'s surface at voxel size " + formatNumber(h));
-        report(progress, 0.05 + 0.95 * double(z + kTile.z() - box.min().z()) / box.dim().z());
+        requireMemory(2.0 * double(grid->tree().leafCount()) * (sizeof(Leaf) + Leaf::SIZE * sizeof(float)),
+                      scan.source() + "'s surface at voxel size " + formatNumber(h));
+        report(progress, 0.05 + 0.95 * std::min(1.0, double(z + kTile.z() - box.min().z()) / box.dim().z()));
     }
     if (grid->tree().leafCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
     openvdb::tools::signedFloodFill(grid->tree());
