@@ -1,11 +1,11 @@
 #include "largest_component.h"
 
 #include <openvdb/tools/LevelSetUtil.h>
-#include <openvdb/tools/Morphology.h>
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tree/LeafManager.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace sculpt {
@@ -40,7 +40,7 @@ openvdb::BoolTree crossingVoxels(const openvdb::FloatTree& tree)
 /// no crossing: those whose distances refer to it. Such voxels have all neighbours on their own
 /// side, so the reach never enters another surface's inside. One segmentation of the crossing and
 /// open voxels finds it (growing it by dilation, a voxel per pass, was 5x slower on a brain).
-openvdb::BoolTree bandOf(const openvdb::BoolTree& surface, const openvdb::FloatTree& tree, const openvdb::BoolTree& crossing)
+openvdb::BoolTree::Ptr bandOf(const openvdb::BoolTree& surface, const openvdb::FloatTree& tree, const openvdb::BoolTree& crossing)
 {
     openvdb::BoolTree reachable(tree, false, openvdb::TopologyCopy());
     reachable.topologyDifference(crossing);
@@ -48,10 +48,8 @@ openvdb::BoolTree bandOf(const openvdb::BoolTree& surface, const openvdb::FloatT
     std::vector<openvdb::BoolTree::Ptr> regions;
     openvdb::tools::extractActiveVoxelSegmentMasks(reachable, regions);
     const openvdb::Coord seed = surface.cbeginValueOn().getCoord();
-    for (const auto& region : regions) {
-        if (region->isValueOn(seed)) return std::move(*region);
-    }
-    return surface;
+    // Every voxel of `reachable`, so the seed too, is in exactly one region.
+    return *std::find_if(regions.begin(), regions.end(), [&](const auto& region) { return region->isValueOn(seed); });
 }
 
 } // namespace
@@ -64,12 +62,12 @@ std::size_t keepLargestComponent(FieldImage& field)
     openvdb::tools::extractActiveVoxelSegmentMasks(crossing, surfaces);
     if (surfaces.size() < 2) return 0;
     const std::size_t dropped = surfaces.size() - 1;
-    const openvdb::BoolTree kept = bandOf(*surfaces.front(), tree, crossing);
+    const openvdb::BoolTree::Ptr kept = bandOf(*surfaces.front(), tree, crossing);
     surfaces.clear();
 
     openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
     leaves.foreach([&](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
-        const openvdb::tree::ValueAccessor<const openvdb::BoolTree> keep(kept);
+        const openvdb::tree::ValueAccessor<const openvdb::BoolTree> keep(*kept);
         for (auto it = leaf.beginValueOn(); it; ++it) {
             if (!keep.isValueOn(it.getCoord())) it.setValueOff();
         }
