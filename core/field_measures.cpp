@@ -2,10 +2,12 @@
 
 #include "incremental_mesher.h"
 
-#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tree/LeafManager.h>
 
 #include <tbb/parallel_reduce.h>
+
+#include <numeric>
+#include <vector>
 
 namespace sculpt {
 
@@ -51,11 +53,29 @@ struct CrossingBounds {
     void join(const CrossingBounds& other) { box.expand(other.box); }
 };
 
-/// Volume (divergence theorem), area and V - E + F of our welded mesh. It is closed (E = 3F/2),
-/// so the Euler characteristic is exact, unlike the Gauss-Bonnet integral of LevelSetMeasure,
-/// which creases (CSG, carving) throw off; and volume and area are those of the surface the
-/// user exports, whatever |grad phi| is (LevelSetMeasure assumes 1: imported scans keep the
-/// scanner's crossings, where it is not).
+/// The number of shells of a welded mesh: sets of triangles connected through shared vertices.
+int countShells(const TriangleMesh& mesh)
+{
+    std::vector<std::uint32_t> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto root = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];  // path halving
+        return v;
+    };
+    for (const auto& t : mesh.triangles) {
+        for (int k = 1; k < 3; ++k) parent[root(t[size_t(k)])] = root(t[0]);
+    }
+    int shells = 0;
+    for (std::uint32_t v = 0; v < parent.size(); ++v) shells += parent[v] == v;
+    return shells;
+}
+
+/// Volume (divergence theorem), area, V - E + F and shells of our welded mesh. It is closed
+/// (E = 3F/2), so the Euler characteristic is exact, unlike the Gauss-Bonnet integral of
+/// LevelSetMeasure, which creases (CSG, carving) throw off; and volume and area are those of the
+/// surface the user exports, whatever |grad phi| is (LevelSetMeasure assumes 1: imported scans
+/// keep the scanner's crossings, where it is not). Shells are counted on the mesh too: voxel
+/// connectivity joins shells that come within a voxel (an eyeball in its socket).
 void measureMesh(const FieldImage& field, FieldMeasures& m)
 {
     const TriangleMesh mesh = meshLevelSet(field);
@@ -72,14 +92,7 @@ void measureMesh(const FieldImage& field, FieldMeasures& m)
     m.volume = volume;
     m.area = area;
     m.eulerCharacteristic = int(std::int64_t(mesh.positions.size()) - std::int64_t(mesh.triangles.size()) / 2);
-}
-
-int countSurfaceComponents(const openvdb::FloatGrid& grid)
-{
-    auto crossings = openvdb::tools::extractIsosurfaceMask(grid.tree(), 0.0f);
-    std::vector<openvdb::BoolTree::Ptr> segments;
-    openvdb::tools::extractActiveVoxelSegmentMasks(*crossings, segments);
-    return int(segments.size());
+    m.components = countShells(mesh);
 }
 
 } // namespace
@@ -102,7 +115,6 @@ FieldMeasures measureField(const FieldImage& field)
     }
 
     measureMesh(field, m);
-    m.components = countSurfaceComponents(grid);
     return m;
 }
 

@@ -18,13 +18,13 @@ struct FieldMeasures {
     double volume = 0.0;               ///< enclosed volume, world units^3 (of the welded mesh)
     double area = 0.0;                 ///< surface area, world units^2 (of the welded mesh)
     int eulerCharacteristic = 0;       ///< 2 - 2 genus per closed component (of the mesh)
-    int components = 0;                ///< connected pieces of surface
+    int components = 0;                ///< closed shells (of the mesh)
 };
 
-/// Measures a field image. Volume, area and Euler characteristic (V - E + F) are those of the
-/// welded marching-cubes mesh (closed, exact topology); the bounding box is that of the zero crossings found by
-/// linear interpolation between neighbouring voxels; components are connected sets of voxels
-/// adjacent to the surface. Cost: linear in the band size, parallel.
+/// Measures a field image. Volume, area, Euler characteristic (V - E + F) and components (shells)
+/// are those of the welded marching-cubes mesh (closed, exact topology); the bounding box is that
+/// of the zero crossings found by linear interpolation between neighbouring voxels. Cost: linear
+/// in the band size, parallel.
 FieldMeasures measureField(const FieldImage& field);
 
 } // namespace sculpt

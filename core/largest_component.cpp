@@ -1,82 +1,79 @@
 #include "largest_component.h"
 
+#include "mask_regions.h"
+
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/Prune.h>
-#include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tree/LeafManager.h>
-
-#include <algorithm>
-#include <vector>
 
 namespace sculpt {
 
 namespace {
 
-/// The active voxels with a face neighbour on the other side of the surface.
-openvdb::BoolTree crossingVoxels(const openvdb::FloatTree& tree)
+/// The inside and every pocket of outside it encloses: all but the outside that reaches the
+/// border of a box one voxel larger than the inside. Counts the pockets.
+openvdb::BoolTree::Ptr filledSolid(const openvdb::BoolTree& inside, std::size_t& pockets)
 {
-    openvdb::BoolTree crossing(tree, false, openvdb::TopologyCopy());
-    openvdb::tree::LeafManager<openvdb::BoolTree> leaves(crossing);
-    leaves.foreach([&](openvdb::BoolTree::LeafNodeType& leaf, size_t) {
-        const openvdb::tree::ValueAccessor<const openvdb::FloatTree> values(tree);
-        for (auto it = leaf.beginValueOn(); it; ++it) {
-            const openvdb::Coord xyz = it.getCoord();
-            const bool inside = values.getValue(xyz) < 0.0f;
-            bool crosses = false;
-            for (int a = 0; a < 3 && !crosses; ++a) {
-                for (const int side : {-1, 1}) {
-                    openvdb::Coord n = xyz;
-                    n[a] += side;
-                    crosses = crosses || (values.getValue(n) < 0.0f) != inside;
-                }
-            }
-            if (!crosses) leaf.setValueOff(it.pos());
-        }
-    });
-    return crossing;
+    openvdb::CoordBBox box;
+    inside.evalActiveVoxelBoundingBox(box);
+    box.expand(1);
+    auto solid = std::make_shared<openvdb::BoolTree>(false);
+    solid->fill(box, true, true);
+    openvdb::BoolTree outside(*solid);
+    outside.topologyDifference(inside);
+    const openvdb::BoolTree::Ptr exterior = connectedRegion(outside, box.min());  // the box's border is exterior
+    outside.topologyDifference(*exterior);
+    solid->topologyDifference(*exterior);
+    pockets = 0;
+    forEachConnectedRegion(outside, [&](openvdb::BoolTree::Ptr) { ++pockets; });
+    return solid;
 }
 
-/// The band voxels reached from `surface`'s crossing voxels through active voxels that are next to
-/// no crossing: those whose distances refer to it. Such voxels have all neighbours on their own
-/// side, so the reach never enters another surface's inside. One segmentation of the crossing and
-/// open voxels finds it (growing it by dilation, a voxel per pass, was 5x slower on a brain).
-openvdb::BoolTree::Ptr bandOf(const openvdb::BoolTree& surface, const openvdb::FloatTree& tree, const openvdb::BoolTree& crossing)
+/// Makes the field's inside exactly `kept`: band voxels on the wrong side leave the band (their
+/// distances referred to a surface that is gone), every other value takes kept's side.
+void keepOnly(openvdb::FloatTree& tree, const openvdb::BoolTree& kept)
 {
-    openvdb::BoolTree reachable(tree, false, openvdb::TopologyCopy());
-    reachable.topologyDifference(crossing);
-    reachable.topologyUnion(surface);
-    std::vector<openvdb::BoolTree::Ptr> regions;
-    openvdb::tools::extractActiveVoxelSegmentMasks(reachable, regions);
-    const openvdb::Coord seed = surface.cbeginValueOn().getCoord();
-    // Every voxel of `reachable`, so the seed too, is in exactly one region.
-    return *std::find_if(regions.begin(), regions.end(), [&](const auto& region) { return region->isValueOn(seed); });
+    const float background = tree.background();
+    openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
+    leaves.foreach([&](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
+        const openvdb::tree::ValueAccessor<const openvdb::BoolTree> inKept(kept);
+        for (auto it = leaf.beginValueAll(); it; ++it) {
+            const bool member = inKept.isValueOn(it.getCoord());
+            if (it.isValueOn() && (*it < 0.0f) == member) continue;
+            leaf.setValueOff(it.pos(), member ? -background : background);
+        }
+    });
+    const openvdb::tree::ValueAccessor<const openvdb::BoolTree> inKept(kept);
+    auto tile = tree.beginValueAll();
+    tile.setMaxDepth(openvdb::FloatTree::ValueAllIter::LEAF_DEPTH - 1);  // tiles only
+    for (; tile; ++tile) tile.setValue(inKept.isValueOn(tile.getCoord()) ? -background : background);
+    openvdb::tools::pruneLevelSet(tree);
 }
 
 } // namespace
 
-std::size_t keepLargestComponent(FieldImage& field)
+LargestComponentReport keepLargestComponent(FieldImage& field)
 {
     openvdb::FloatTree& tree = field.mutableGrid().tree();
-    const openvdb::BoolTree crossing = crossingVoxels(tree);
-    std::vector<openvdb::BoolTree::Ptr> surfaces;  // most voxels first
-    openvdb::tools::extractActiveVoxelSegmentMasks(crossing, surfaces);
-    if (surfaces.size() < 2) return 0;
-    const std::size_t dropped = surfaces.size() - 1;
-    const openvdb::BoolTree::Ptr kept = bandOf(*surfaces.front(), tree, crossing);
-    surfaces.clear();
-
-    openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
-    leaves.foreach([&](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
-        const openvdb::tree::ValueAccessor<const openvdb::BoolTree> keep(*kept);
-        for (auto it = leaf.beginValueOn(); it; ++it) {
-            if (!keep.isValueOn(it.getCoord())) it.setValueOff();
+    const auto inside = openvdb::tools::sdfInteriorMask(tree);
+    LargestComponentReport report;
+    if (inside->empty()) return report;
+    const openvdb::BoolTree::Ptr solid = filledSolid(*inside, report.cavitiesFilled);
+    openvdb::BoolTree::Ptr largest;
+    openvdb::Index64 largestVoxels = 0;
+    forEachConnectedRegion(*solid, [&](openvdb::BoolTree::Ptr piece) {
+        const openvdb::Index64 voxels = piece->activeVoxelCount();
+        if (voxels > largestVoxels) {
+            largest = std::move(piece);
+            largestVoxels = voxels;
         }
+        ++report.islandsDropped;
     });
-    // Sides from the kept band alone: dropped islands turn outside, dropped cavities inside.
-    openvdb::tools::pruneInactive(tree);
-    openvdb::tools::signedFloodFill(tree);
+    --report.islandsDropped;  // the largest piece stays
+    if (report.islandsDropped == 0 && report.cavitiesFilled == 0) return report;
+    keepOnly(tree, *largest);
     field.markDirty(field.allLeaves());
-    return dropped;
+    return report;
 }
 
 } // namespace sculpt

@@ -1,10 +1,11 @@
 #pragma once
 /// @file largest_component.h
-/// @brief Keeps the largest surface of a shape: removes the islands scans are full of.
+/// @brief Keeps the largest solid piece of a shape, without cavities: one closed shell to print.
 ///
-/// Pieces are connected surfaces, as mesh tools count them and as `info` reports components: an
-/// island goes, and so does a closed cavity's surface (the cavity is filled), leaving one closed
-/// shell to print. Works in place: the only copies are bit masks of the band.
+/// Scans are full of islands (specks of bright noise) and bubbles (dark pockets inside tissue).
+/// The solid is the inside plus every pocket of outside that the exterior cannot reach; its
+/// face-connected pieces are the components, and the largest by volume is kept: islands become
+/// outside, pockets inside. Works in place on the field: the only copies are bit masks.
 
 #include "field_image.h"
 
@@ -12,9 +13,12 @@
 
 namespace sculpt {
 
-/// Keeps the surface with the most voxels next to it; the others, and the band voxels that
-/// belong to them, are dropped and every voxel's side is that of the kept surface.
-/// @return the number of surfaces dropped.
-std::size_t keepLargestComponent(FieldImage& field);
+struct LargestComponentReport {
+    std::size_t islandsDropped = 0;  ///< solid pieces other than the largest
+    std::size_t cavitiesFilled = 0;  ///< pockets of outside the exterior cannot reach
+};
+
+/// Keeps the solid piece with the most voxels, its cavities filled.
+LargestComponentReport keepLargestComponent(FieldImage& field);
 
 } // namespace sculpt

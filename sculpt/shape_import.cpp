@@ -2,7 +2,6 @@
 
 #include <errors.h>
 #include <file_extension.h>
-#include <largest_component.h>
 #include <mesh_import.h>
 #include <scan_to_level_set.h>
 #include <text_format.h>
@@ -52,7 +51,7 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
     }
     FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
                                                           : importScan(input, options, report, progress);
-    if (options.largestComponent) report.componentsDropped = keepLargestComponent(field);
+    if (options.largestComponent) report.pieces = keepLargestComponent(field);
     return field;
 }
 

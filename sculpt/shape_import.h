@@ -3,6 +3,7 @@
 /// @brief Any shape a user brings — a document, a scan, a mesh — as a field image.
 
 #include <field_image.h>
+#include <largest_component.h>
 #include <progress.h>
 #include <scan_volume.h>
 
@@ -18,7 +19,7 @@ struct ImportOptions {
     std::optional<double> voxelSize;       ///< scans: native (smallest spacing); meshes: longest side / 256
     std::optional<openvdb::CoordBBox> crop;  ///< scans: sample index box, inclusive
     double smoothSigma = 0.0;              ///< scans: Gaussian pre-smoothing, world units (0: none)
-    bool largestComponent = false;         ///< keep only the largest piece
+    bool largestComponent = false;         ///< keep only the largest solid piece, cavities filled
     std::optional<RawLayout> raw;          ///< read the input as raw samples with this layout
 };
 
@@ -28,7 +29,7 @@ struct ImportReport {
     double iso = 0.0;
     bool isoChosen = false;  ///< by Otsu
     double voxelSize = 0.0;
-    std::size_t componentsDropped = 0;
+    LargestComponentReport pieces;  ///< with largestComponent
     std::vector<std::string> warnings;
 };
 

@@ -71,7 +71,10 @@ void runImport(const ImportCommandOptions& o)
     std::cout << "imported " << o.input << " (" << report.kind << ")";
     if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
     std::cout << ", voxel size " << report.voxelSize;
-    if (o.largest) std::cout << ", " << report.componentsDropped << " smaller pieces dropped";
+    if (o.largest) {
+        std::cout << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
+                  << " cavities filled";
+    }
     std::cout << "\nwrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
               << " components\n";
     writeMeshOutput(field, o.mesh);
@@ -100,7 +103,7 @@ void addImportCommand(CLI::App& app)
         ->expected(6);
     cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_flag("--largest-component", o->largest, "keep only the largest surface: drops islands, fills closed cavities");
+    cmd->add_flag("--largest-component", o->largest, "keep only the largest solid piece: drops islands, fills closed cavities");
     cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);
     cmd->add_option("--raw-type", o->rawType, "raw input: uint8, int8, uint16, int16, uint32, int32, float32, float64")
         ->capture_default_str();
