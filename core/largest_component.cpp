@@ -21,11 +21,11 @@ openvdb::BoolTree::Ptr filledSolid(const openvdb::BoolTree& inside, std::size_t&
     solid->fill(box, true, true);
     openvdb::BoolTree outside(*solid);
     outside.topologyDifference(inside);
-    const openvdb::BoolTree::Ptr exterior = connectedRegion(outside, box.min());  // the box's border is exterior
+    const openvdb::BoolTree::Ptr exterior = connectedRegion(outside, box.min()).tree();  // the box's border is exterior
     outside.topologyDifference(*exterior);
     solid->topologyDifference(*exterior);
     pockets = 0;
-    forEachConnectedRegion(outside, [&](openvdb::BoolTree::Ptr) { ++pockets; });
+    forEachConnectedRegion(outside, [&](const MaskRegion&) { ++pockets; });
     return solid;
 }
 
@@ -59,19 +59,19 @@ LargestComponentReport keepLargestComponent(FieldImage& field)
     LargestComponentReport report;
     if (inside->empty()) return report;
     const openvdb::BoolTree::Ptr solid = filledSolid(*inside, report.cavitiesFilled);
-    openvdb::BoolTree::Ptr largest;
+    MaskRegion largest;
     openvdb::Index64 largestVoxels = 0;
-    forEachConnectedRegion(*solid, [&](openvdb::BoolTree::Ptr piece) {
-        const openvdb::Index64 voxels = piece->activeVoxelCount();
+    forEachConnectedRegion(*solid, [&](const MaskRegion& piece) {
+        const openvdb::Index64 voxels = piece.voxelCount();
         if (voxels > largestVoxels) {
-            largest = std::move(piece);
+            largest = piece;
             largestVoxels = voxels;
         }
         ++report.islandsDropped;
     });
     --report.islandsDropped;  // the largest piece stays
     if (report.islandsDropped == 0 && report.cavitiesFilled == 0) return report;
-    keepOnly(tree, *largest);
+    keepOnly(tree, *largest.tree());
     field.markDirty(field.allLeaves());
     return report;
 }

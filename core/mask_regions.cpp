@@ -62,13 +62,12 @@ struct Front {
     Bits seeds;
 };
 
-} // namespace
-
-openvdb::BoolTree::Ptr connectedRegion(const openvdb::BoolTree& mask, const openvdb::Coord& seed)
+/// Adds to `region` the voxels of `mask` face-connected to `seed` that are not in `visited`, and
+/// marks them visited.
+void flood(const openvdb::BoolTree& mask, openvdb::BoolTree& visited, const openvdb::Coord& seed, MaskRegion& region)
 {
-    auto region = std::make_shared<openvdb::BoolTree>(false);
     const openvdb::tree::ValueAccessor<const openvdb::BoolTree> in(mask);
-    openvdb::tree::ValueAccessor<openvdb::BoolTree> out(*region);
+    openvdb::tree::ValueAccessor<openvdb::BoolTree> done(visited);
     std::vector<Front> queue;
     const int low = ~int(Leaf::DIM - 1);
     Front start{openvdb::Coord(seed.x() & low, seed.y() & low, seed.z() & low), Bits{}};
@@ -84,9 +83,9 @@ openvdb::BoolTree::Ptr connectedRegion(const openvdb::BoolTree& mask, const open
         } else {
             allowed.fill(in.isValueOn(front.origin) ? ~std::uint64_t(0) : 0);  // an active tile, or nothing
         }
-        Leaf* done = out.probeLeaf(front.origin);
-        if (done) {
-            const Bits filled = bitsOf(done->getValueMask());
+        Leaf* marked = done.probeLeaf(front.origin);
+        if (marked) {
+            const Bits filled = bitsOf(marked->getValueMask());
             for (size_t x = 0; x < 8; ++x) allowed[x] &= ~filled[x];
         }
         Bits grown;
@@ -97,8 +96,13 @@ openvdb::BoolTree::Ptr connectedRegion(const openvdb::BoolTree& mask, const open
             for (size_t x = 0; x < 8; ++x) next[x] &= allowed[x];
             if (next == grown) break;
         }
-        if (!done) done = out.touchLeaf(front.origin);
-        for (size_t x = 0; x < 8; ++x) done->getValueMask().getWord<std::uint64_t>(openvdb::Index(x)) |= grown[x];
+        if (!marked) marked = done.touchLeaf(front.origin);
+        MaskRegion::Bits voxels;
+        for (size_t x = 0; x < 8; ++x) {
+            marked->getValueMask().getWord<std::uint64_t>(openvdb::Index(x)) |= grown[x];
+            voxels.getWord<std::uint64_t>(openvdb::Index(x)) = grown[x];
+        }
+        region.leaves.emplace_back(front.origin, voxels);
         for (int axis = 0; axis < 3; ++axis) {
             for (const int side : {-1, 1}) {
                 Front neighbour{front.origin, acrossFace(grown, axis, side)};
@@ -107,19 +111,43 @@ openvdb::BoolTree::Ptr connectedRegion(const openvdb::BoolTree& mask, const open
             }
         }
     }
+}
+
+} // namespace
+
+openvdb::Index64 MaskRegion::voxelCount() const
+{
+    openvdb::Index64 count = 0;
+    for (const auto& leaf : leaves) count += leaf.second.countOn();
+    return count;
+}
+
+openvdb::BoolTree::Ptr MaskRegion::tree() const
+{
+    auto result = std::make_shared<openvdb::BoolTree>(false);
+    openvdb::tree::ValueAccessor<openvdb::BoolTree> out(*result);
+    for (const auto& [origin, voxels] : leaves) out.touchLeaf(origin)->getValueMask() |= voxels;
+    return result;
+}
+
+MaskRegion connectedRegion(const openvdb::BoolTree& mask, const openvdb::Coord& seed)
+{
+    openvdb::BoolTree visited(false);
+    MaskRegion region;
+    flood(mask, visited, seed, region);
     return region;
 }
 
-void forEachConnectedRegion(const openvdb::BoolTree& mask, const std::function<void(openvdb::BoolTree::Ptr region)>& visit)
+void forEachConnectedRegion(const openvdb::BoolTree& mask, const std::function<void(const MaskRegion& region)>& visit)
 {
     openvdb::BoolTree visited(false);
-    openvdb::tree::ValueAccessor<const openvdb::BoolTree> seen(visited);
+    const openvdb::tree::ValueAccessor<const openvdb::BoolTree> seen(visited);
+    MaskRegion region;
     for (auto it = mask.cbeginValueOn(); it; ++it) {
         if (seen.isValueOn(it.getCoord())) continue;
-        const openvdb::BoolTree::Ptr region = connectedRegion(mask, it.getCoord());
-        visited.topologyUnion(*region);
+        region.leaves.clear();
+        flood(mask, visited, it.getCoord(), region);
         visit(region);
-        seen.clear();
     }
 }
 
