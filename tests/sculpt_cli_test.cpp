@@ -232,10 +232,8 @@ TEST(SculptCli, ApplyReplaysTheFaceScriptOnTheClayBall)
     EXPECT_NE(r.out.find("2 undo, 1 redo"), std::string::npos) << r.out;
     const auto face = infoJson(dir, "face.vdb");
     const double clay = infoJson(dir, "clay.vdb")["volume"].get<double>();
-    // The head and four one-voxel bubbles where the eyeballs (added with a constant falloff) meet
-    // their sockets: what the brushes leave today, counted as the mesh's shells.
-    EXPECT_EQ(face["components"], 5);
-    EXPECT_EQ(face["euler_characteristic"], 10) << "every shell sphere-like";
+    EXPECT_EQ(face["components"], 1) << "one shell: no bubbles where the eyeballs meet their sockets";
+    EXPECT_EQ(face["euler_characteristic"], 2);
     EXPECT_GT(std::abs(face["volume"].get<double>() - clay), 100.0);  // sculpted, not the ball
     const auto vtk = test::vtkMeshReport(dir / "face.ply");
     EXPECT_EQ(vtk.boundaryEdges, 0);
