@@ -75,7 +75,7 @@ int countShells(const TriangleMesh& mesh)
 /// LevelSetMeasure, which creases (CSG, carving) throw off; and volume and area are those of the
 /// surface the user exports, whatever |grad phi| is (LevelSetMeasure assumes 1: imported scans
 /// keep the scanner's crossings, where it is not). Shells are counted on the mesh too: voxel
-/// connectivity joins shells that come within a voxel (an eyeball in its socket).
+/// connectivity joins shells that come within a voxel (a bubble just under the surface).
 void measureMesh(const FieldImage& field, FieldMeasures& m)
 {
     const TriangleMesh mesh = meshLevelSet(field);

@@ -292,18 +292,18 @@ void sampleTrilinear(const void* src, const openvdb::Coord& dims, const openvdb:
     for (int a = 0; a < 3; ++a) stride[a] = dims[a] > 1 ? step[a] : 0;
     for (size_t n = 0; n < count; ++n) {
         const openvdb::Vec3d& p = points[n];
-        size_t base = 0;
-        double f[3];
         bool inside = true;
-        for (int a = 0; a < 3; ++a) {
-            inside = inside && p[a] >= 0.0 && p[a] <= dims[a] - 1;
-            const int i = std::clamp(int(p[a]), 0, std::max(dims[a] - 2, 0));
-            f[a] = p[a] - i;
-            base += size_t(i) * step[a];
-        }
+        for (int a = 0; a < 3; ++a) inside = inside && p[a] >= 0.0 && p[a] <= dims[a] - 1;
         if (!inside) {
             out[n] = outside;
             continue;
+        }
+        size_t base = 0;
+        double f[3];
+        for (int a = 0; a < 3; ++a) {
+            const int i = std::min(int(p[a]), std::max(dims[a] - 2, 0));
+            f[a] = p[a] - i;
+            base += size_t(i) * step[a];
         }
         const auto at = [&](int dx, int dy, int dz) { return double(data[base + dx * stride[0] + dy * stride[1] + dz * stride[2]]); };
         const double c00 = at(0, 0, 0) + f[0] * (at(1, 0, 0) - at(0, 0, 0)), c10 = at(0, 1, 0) + f[0] * (at(1, 1, 0) - at(0, 1, 0));
