@@ -297,9 +297,7 @@ double nativeVoxelSize(const ScanVolume& scan)
 {
     double h = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a) {
-        if (scan.dims()[a] < 2) continue;
-        const auto& m = scan.indexToWorld();
-        h = std::min(h, openvdb::Vec3d(m[a][0], m[a][1], m[a][2]).length());
+        if (scan.dims()[a] > 1) h = std::min(h, scan.spacing(a));
     }
     return std::isfinite(h) ? h : 1.0;
 }

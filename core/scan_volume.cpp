@@ -387,21 +387,38 @@ ScanVolume ScanVolume::smoothed(double sigmaWorld) const
     if (!(sigmaWorld > 0.0) || !std::isfinite(sigmaWorld)) {
         throw InputError("smoothing sigma must be a positive number (got " + formatNumber(sigmaWorld) + ")");
     }
-    // Spacing along each index axis: the length of the placement's rows.
-    double sigmaVoxels[3];
+    openvdb::Vec3d sigmaVoxels;
+    for (int a = 0; a < 3; ++a) sigmaVoxels[a] = sigmaWorld / spacing(a);
+    return gaussian(sigmaVoxels);
+}
+
+std::optional<ScanVolume> ScanVolume::antiAliased(double voxelSizeWorld) const
+{
+    openvdb::Vec3d sigmaVoxels(0.0);
     for (int a = 0; a < 3; ++a) {
-        const openvdb::Vec3d axis(mImpl->indexToWorld[a][0], mImpl->indexToWorld[a][1], mImpl->indexToWorld[a][2]);
-        sigmaVoxels[a] = sigmaWorld / axis.length();
+        const double s = spacing(a);
+        if (dims()[a] > 1 && voxelSizeWorld > s) sigmaVoxels[a] = 0.5 * std::sqrt(voxelSizeWorld * voxelSizeWorld - s * s) / s;
     }
+    if (sigmaVoxels.x() < kMinSigmaVoxels && sigmaVoxels.y() < kMinSigmaVoxels && sigmaVoxels.z() < kMinSigmaVoxels) return std::nullopt;
+    return gaussian(sigmaVoxels);
+}
+
+double ScanVolume::spacing(int axis) const
+{
+    const auto& m = mImpl->indexToWorld;
+    return openvdb::Vec3d(m[axis][0], m[axis][1], m[axis][2]).length();  // the length of the placement's row
+}
+
+ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
+{
     vtkNew<vtkImageGaussianSmooth> smooth;
     smooth->SetInputData(mImpl->image);
     smooth->SetDimensionality(3);
-    smooth->SetStandardDeviations(sigmaVoxels);
+    smooth->SetStandardDeviations(sigmaVoxels.x(), sigmaVoxels.y(), sigmaVoxels.z());
     smooth->SetRadiusFactors(3.0, 3.0, 3.0);
     smooth->Update();
-    vtkSmartPointer<vtkImageData> image = smooth->GetOutput();
     auto impl = std::make_shared<Impl>(*mImpl);
-    impl->image = image;
+    impl->image = smooth->GetOutput();
     return ScanVolume(impl);
 }
 

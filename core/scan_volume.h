@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace sculpt {
@@ -37,6 +38,8 @@ public:
     openvdb::Coord dims() const;
     /// Maps a sample's index (i, j, k) to its world position: spacing, orientation, origin.
     const openvdb::Mat4d& indexToWorld() const;
+    /// World distance between neighbouring samples along index axis 0, 1 or 2.
+    double spacing(int axis) const;
     /// Smallest and largest sample.
     std::pair<double, double> range() const;
     /// Bytes of the samples in their file type.
@@ -55,10 +58,18 @@ public:
     ScanVolume cropped(const openvdb::CoordBBox& box) const;
     /// Gaussian-smoothed samples (standard deviation in world units, per axis in voxels).
     ScanVolume smoothed(double sigmaWorld) const;
+    /// The samples low-pass filtered for resampling at a coarser voxel size, so that noise and
+    /// detail finer than a voxel average out instead of aliasing into a rough surface: along each
+    /// axis with spacing s < h, a Gaussian of sigma sqrt(h^2 - s^2) / 2 (world units). Nothing
+    /// (nullopt) if no axis is finer than h by enough to matter.
+    std::optional<ScanVolume> antiAliased(double voxelSizeWorld) const;
     /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.
     double otsuThreshold() const;
 
 private:
+    static constexpr double kMinSigmaVoxels = 0.25;  // below, the filter would change nothing visible
+    ScanVolume gaussian(const openvdb::Vec3d& sigmaVoxels) const;
+
     std::shared_ptr<const Impl> mImpl;
 };
 

@@ -39,6 +39,10 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     report.isoChosen = !options.iso;
     report.iso = options.iso ? *options.iso : scan.otsuThreshold();
     report.voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
+    if (auto filtered = scan.antiAliased(report.voxelSize)) {
+        scan = std::move(*filtered);
+        report.antiAliased = true;
+    }
     return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
 }
 

@@ -29,6 +29,7 @@ struct ImportReport {
     double iso = 0.0;
     bool isoChosen = false;  ///< by Otsu
     double voxelSize = 0.0;
+    bool antiAliased = false;  ///< scans: low-pass filtered for a voxel size coarser than the scan's
     LargestComponentReport pieces;  ///< with largestComponent
     std::vector<std::string> warnings;
 };

@@ -34,6 +34,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 
 namespace sculpt {
 namespace {
@@ -243,6 +244,28 @@ TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
     EXPECT_LT(values.getValue(openvdb::Coord(30, 24, 24)), 0.0f);
     const LargestComponentReport again = keepLargestComponent(field);
     EXPECT_EQ(again.islandsDropped + again.cavitiesFilled, 0u) << "one piece left";
+}
+
+TEST(ScanImport, CoarseVoxelSizeAveragesNoiseInsteadOfAliasingIt)
+{
+    // A ball of radius 12 sampled every 0.5, its surface jittered by up to 1.5 (3 samples) at
+    // every sample, imported at voxel size 2.
+    const openvdb::Vec3d centre(16.0, 16.0, 16.0);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> noise(-1.5, 1.5);
+    const auto sdf = [&](const openvdb::Vec3d& p) { return (p - centre).length() - 12.0 + noise(random); };
+    test::TempDir dir;
+    writeMetaImage(sampledImage(openvdb::Coord(65), openvdb::Vec3d(0.5), openvdb::Vec3d(0.0), sdf), dir / "noisy.mha");
+    const ScanVolume scan = readScan(dir / "noisy.mha");
+    const auto filtered = scan.antiAliased(2.0);
+    ASSERT_TRUE(filtered.has_value());
+    EXPECT_FALSE(scan.antiAliased(0.5).has_value()) << "nothing to filter at the native size";
+    const double sphereArea = 4.0 * M_PI * 12.0 * 12.0;
+    const double aliased = test::meshArea(meshLevelSet(scanToLevelSet(scan, 100.0, 2.0))) / sphereArea - 1.0;
+    const double smooth = test::meshArea(meshLevelSet(scanToLevelSet(*filtered, 100.0, 2.0))) / sphereArea - 1.0;
+    EXPECT_GT(aliased, 0.1) << "point samples of the noise: a rough surface";  // measured +25%
+    EXPECT_NEAR(smooth, 0.0, 0.05) << "filtered: the ball";                       // measured -3.0%
+    EXPECT_NEAR(sphereOf(scanToLevelSet(*filtered, 100.0, 2.0)).first, 12.0, 1.0) << "within half a voxel";
 }
 
 TEST(ScanImport, BadScansAreRefusedNamingTheFile)

@@ -70,7 +70,7 @@ void runImport(const ImportCommandOptions& o)
     const FieldMeasures m = measureField(field);
     std::cout << "imported " << o.input << " (" << report.kind << ")";
     if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
-    std::cout << ", voxel size " << report.voxelSize;
+    std::cout << ", voxel size " << report.voxelSize << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
     if (o.largest) {
         std::cout << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
                   << " cavities filled";
