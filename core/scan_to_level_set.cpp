@@ -29,6 +29,18 @@ const openvdb::Coord kTile(32, 32, 16);        // output voxels per tile: 4 x 4 
 constexpr int kHalo = 5;                       // tile margin: the band (3), marching slack (1), gradient (1)
 constexpr double kMaxBoxVoxels = double(1LL << 37);  // about 5000^3: beyond, ask for a larger voxel size
 
+/// The bounds of an index box's corners mapped by an affine transform (all it reaches).
+openvdb::BBoxd transformedBounds(const openvdb::Mat4d& transform, const openvdb::CoordBBox& box)
+{
+    openvdb::BBoxd bounds;
+    for (int c = 0; c < 8; ++c) {
+        const openvdb::Coord corner((c & 1) ? box.max().x() : box.min().x(), (c & 2) ? box.max().y() : box.min().y(),
+                                    (c & 4) ? box.max().z() : box.min().z());
+        bounds.expand(transform.transform(corner.asVec3d()));
+    }
+    return bounds;
+}
+
 /// The smallest and largest sample of every 8^3 block of the scan: a tile whose samples all lie
 /// on one side of the iso-value holds no surface and is not sampled at all.
 class BlockRanges {
@@ -155,13 +167,8 @@ private:
     /// The range of the samples interpolation reads for a box of window voxels.
     std::pair<float, float> range(const openvdb::CoordBBox& local) const
     {
-        openvdb::BBoxd box;
-        for (int c = 0; c < 8; ++c) {
-            const openvdb::Coord corner((c & 1) ? local.max().x() : local.min().x(), (c & 2) ? local.max().y() : local.min().y(),
-                                        (c & 4) ? local.max().z() : local.min().z());
-            box.expand(mOutputToScan.transform((mLow + corner).asVec3d()));
-        }
-        return mRanges.range(box, mOutside);
+        const openvdb::CoordBBox box(local.min() + mLow, local.max() + mLow);
+        return mRanges.range(transformedBounds(mOutputToScan, box), mOutside);
     }
 
     void fill(const openvdb::CoordBBox& chunk, float value)
@@ -267,12 +274,8 @@ private:
 /// The output lattice: the scan's world box, two voxels of outside around it.
 openvdb::CoordBBox outputBox(const ScanVolume& scan, double h)
 {
-    openvdb::BBoxd world;
-    const openvdb::Coord d = scan.dims();
-    for (int c = 0; c < 8; ++c) {
-        const openvdb::Vec3d corner((c & 1) ? d.x() - 1 : 0, (c & 2) ? d.y() - 1 : 0, (c & 4) ? d.z() - 1 : 0);
-        world.expand(scan.indexToWorld().transform(corner));
-    }
+    const openvdb::BBoxd world =
+        transformedBounds(scan.indexToWorld(), openvdb::CoordBBox(openvdb::Coord(0), scan.dims().offsetBy(-1)));
     openvdb::CoordBBox box;
     for (int a = 0; a < 3; ++a) {
         box.min()[a] = int(std::floor(world.min()[a] / h)) - 2;
