@@ -8,7 +8,7 @@ bash scripts/install-deps.sh
 bash scripts/build.sh
 
 mkdir -p out
-sculpt=build/sculpt/sculpt
+sculpt=build/sculpt/cli/sculpt
 "$sculpt" new -o out/clay.vdb
 "$sculpt" apply out/clay.vdb data/strokes/face.json -o out/face.vdb
 "$sculpt" info out/face.vdb

@@ -1,9 +1,9 @@
-#include "commands.h"
-#include "mesh_output.h"
-#include "edit_document.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
+#include "sculpt/cli/edit_document.h"
 
-#include <stroke_script.h>
-#include <text_format.h>
+#include "sculpt/session/stroke_script.h"
+#include "core/base/text_format.h"
 
 #include <CLI/CLI.hpp>
 
@@ -33,7 +33,7 @@ void runApply(const ApplyOptions& o)
     const FieldImage result = editDocument(o.input, o.output, "replaying", [&](FieldImage& field, const Progress& p) {
         SculptSession session(std::move(field));
         done = replayScript(session, script, o.script, p);
-        historyBytes = session.history().bytes();
+        historyBytes = session.history().memoryBytes();
         field = session.takeField();
     });
     std::cout << "wrote " << o.output << ": " << done.strokes << " strokes (" << done.stamps << " stamps), "

@@ -1,12 +1,12 @@
-#include "commands.h"
-#include "mesh_output.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
 
-#include <atomic_file.h>
-#include <csg_combine.h>
-#include <errors.h>
-#include <primitive_rasterizer.h>
-#include <scene_file.h>
-#include <vdb_file.h>
+#include "core/base/atomic_file.h"
+#include "core/field/csg_combine.h"
+#include "core/base/errors.h"
+#include "core/primitives/primitive_rasterizer.h"
+#include "core/primitives/scene_file.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,9 +1,9 @@
-#include "edit_document.h"
+#include "sculpt/cli/edit_document.h"
 
-#include "progress_bar.h"
+#include "sculpt/cli/progress_bar.h"
 
-#include <atomic_file.h>
-#include <vdb_file.h>
+#include "core/base/atomic_file.h"
+#include "core/io/vdb_file.h"
 
 namespace sculpt::cli {
 

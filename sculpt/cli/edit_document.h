@@ -3,8 +3,8 @@
 /// @brief The shape of every editing command: read a document, change it with a progress bar,
 ///        write the result atomically (the input is never touched).
 
-#include <field_image.h>
-#include <progress.h>
+#include "core/field/field_image.h"
+#include "core/base/progress.h"
 
 #include <functional>
 #include <string>

@@ -1,12 +1,12 @@
-#include "commands.h"
-#include "mesh_output.h"
-#include "progress_bar.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
+#include "sculpt/cli/progress_bar.h"
 
-#include <atomic_file.h>
-#include <errors.h>
-#include <field_measures.h>
-#include <shape_import.h>
-#include <vdb_file.h>
+#include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/mesh/field_measures.h"
+#include "sculpt/session/shape_import.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 

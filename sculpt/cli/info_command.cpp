@@ -1,8 +1,8 @@
-#include "commands.h"
+#include "sculpt/cli/commands.h"
 
-#include <field_measures.h>
-#include <text_format.h>
-#include <vdb_file.h>
+#include "core/mesh/field_measures.h"
+#include "core/base/text_format.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

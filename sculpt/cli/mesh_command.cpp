@@ -1,9 +1,9 @@
-#include "commands.h"
+#include "sculpt/cli/commands.h"
 
-#include <atomic_file.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
-#include <vdb_file.h>
+#include "core/base/atomic_file.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/io/mesh_file.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,8 +1,8 @@
-#include "mesh_output.h"
+#include "sculpt/cli/mesh_output.h"
 
-#include <atomic_file.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
+#include "core/base/atomic_file.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/io/mesh_file.h"
 
 #include <iostream>
 

@@ -2,7 +2,7 @@
 /// @file mesh_output.h
 /// @brief The optional `--mesh out.ply` of commands that write a document.
 
-#include <field_image.h>
+#include "core/field/field_image.h"
 
 #include <string>
 

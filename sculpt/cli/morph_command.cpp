@@ -1,13 +1,13 @@
-#include "commands.h"
-#include "progress_bar.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/progress_bar.h"
 
-#include <atomic_file.h>
-#include <errors.h>
-#include <incremental_mesher.h>
-#include <mesh_file.h>
-#include <morph.h>
-#include <shape_import.h>
-#include <vdb_file.h>
+#include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/io/mesh_file.h"
+#include "core/motion/morph.h"
+#include "sculpt/session/shape_import.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 

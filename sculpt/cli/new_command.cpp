@@ -1,8 +1,8 @@
-#include "commands.h"
+#include "sculpt/cli/commands.h"
 
-#include <analytic_shapes.h>
-#include <atomic_file.h>
-#include <vdb_file.h>
+#include "core/primitives/analytic_shapes.h"
+#include "core/base/atomic_file.h"
+#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 

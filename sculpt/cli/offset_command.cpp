@@ -1,7 +1,7 @@
-#include "commands.h"
-#include "edit_document.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
 
-#include <level_set_operations.h>
+#include "core/motion/surface_flows.h"
 
 #include <CLI/CLI.hpp>
 

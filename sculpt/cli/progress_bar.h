@@ -3,7 +3,7 @@
 /// @brief A progress bar on the terminal for long commands (nothing when stderr is not a TTY,
 ///        so logs and scripts stay clean).
 
-#include <progress.h>
+#include "core/base/progress.h"
 
 #include <string>
 

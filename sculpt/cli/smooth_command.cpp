@@ -1,8 +1,8 @@
-#include "commands.h"
-#include "edit_document.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
 
-#include <field_measures.h>
-#include <level_set_operations.h>
+#include "core/mesh/field_measures.h"
+#include "core/motion/surface_flows.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,4 +1,4 @@
-// Per-stamp latency of the brushes (stamp + local renormalisation + incremental re-mesh of the
+// Per-stamp latency of the brushes (stamp + local redistancing + incremental re-mesh of the
 // touched blocks), radius 16 voxels, on spheres of radius 128, 256 and 512 voxels, beside the
 // naive path (tools::csgUnion of a stamp sphere, then a full tools::volumeToMesh) in one run.
 // Run: build/tests/bench/brush_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
@@ -8,10 +8,10 @@
 //                       counter undo_bytes = the stroke's journal bytes per stamp
 // BM_NaiveUnion/R     : createLevelSetSphere(16) + csgUnion into the sphere + volumeToMesh
 
-#include <analytic_shapes.h>
-#include <brush.h>
-#include <incremental_mesher.h>
-#include <leaf_journal.h>
+#include "core/primitives/analytic_shapes.h"
+#include "core/brushes/brush.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/field/leaf_journal.h"
 
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
@@ -63,7 +63,7 @@ void BM_Stamp(benchmark::State& state)
         mesher.update(field, field.takeDirtyRegion());
         ++i;
     }
-    state.counters["undo_bytes"] = double(journal.bytes()) / double(std::max(i, 1));
+    state.counters["undo_bytes"] = double(journal.memoryBytes()) / double(std::max(i, 1));
     state.SetLabel(brushToolName(tool));
 }
 

@@ -12,8 +12,8 @@
 // BM_ImportScan/1, BM_FlyingEdges/1 : the same for a synthetic 512^3 uint8 scan of a ball
 //                         (raw file, written once to the temporary directory)
 
-#include <scan_to_level_set.h>
-#include <vdb_file.h>
+#include "core/scan/scan_to_level_set.h"
+#include "core/io/vdb_file.h"
 
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageReader2.h>

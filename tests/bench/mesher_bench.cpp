@@ -6,9 +6,9 @@
 // BM_OursIncremental/R     : re-mesh after one radius-16 stamp at the surface of a radius-R sphere
 // BM_OursRebuild/R         : re-mesh of every block (no welding): the incremental path's baseline
 
-#include <analytic_shapes.h>
-#include <incremental_mesher.h>
-#include <sphere_stamp.h>
+#include "core/primitives/analytic_shapes.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/local/sphere_stamp.h"
 
 #include <openvdb/tools/VolumeToMesh.h>
 

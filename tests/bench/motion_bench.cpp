@@ -8,9 +8,9 @@
 //                              0.4 voxel of the box (checked every 4 steps / 4 CFL steps)
 // BM_OursRegionSmoothStep/R  : one smoothing step limited to a radius-16 ball on a radius-R sphere
 
-#include <analytic_shapes.h>
-#include <level_set_evolution.h>
-#include <morph.h>
+#include "core/primitives/analytic_shapes.h"
+#include "core/motion/level_set_evolution.h"
+#include "core/motion/morph.h"
 
 #include <openvdb/tools/LevelSetFilter.h>
 #include <openvdb/tools/LevelSetMorph.h>

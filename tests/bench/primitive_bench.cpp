@@ -5,9 +5,9 @@
 // BM_OursStamp/R       : rasterize the primitive over its own box, union into a radius-R sphere
 // BM_OpenVdbCsgUnion/R : createLevelSetSphere(16) then tools::csgUnion into a radius-R sphere
 
-#include <analytic_shapes.h>
-#include <csg_combine.h>
-#include <primitive_rasterizer.h>
+#include "core/primitives/analytic_shapes.h"
+#include "core/field/csg_combine.h"
+#include "core/primitives/primitive_rasterizer.h"
 
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>

@@ -1,7 +1,7 @@
 // Building the starting sphere: our analytic rasterizer versus OpenVDB's createLevelSetSphere.
 // Run: build/tests/bench/shape_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 
-#include <analytic_shapes.h>
+#include "core/primitives/analytic_shapes.h"
 
 #include <openvdb/tools/LevelSetSphere.h>
 

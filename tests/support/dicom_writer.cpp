@@ -1,4 +1,4 @@
-#include "dicom_writer.h"
+#include "tests/support/dicom_writer.h"
 
 #include <fstream>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "grid_builders.h"
+#include "tests/support/grid_builders.h"
 
 namespace sculpt::test {
 

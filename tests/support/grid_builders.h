@@ -2,7 +2,7 @@
 /// @file grid_builders.h
 /// @brief Hand-made level sets for tests: a few explicit voxel values in an outside field.
 
-#include <field_image.h>
+#include "core/field/field_image.h"
 
 #include <map>
 

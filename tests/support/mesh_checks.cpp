@@ -1,4 +1,4 @@
-#include "mesh_checks.h"
+#include "tests/support/mesh_checks.h"
 
 #include <vtkCleanPolyData.h>
 #include <vtkFeatureEdges.h>

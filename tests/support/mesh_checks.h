@@ -2,7 +2,7 @@
 /// @file mesh_checks.h
 /// @brief Test helpers: topology and measures of triangle meshes, computed by us and by VTK.
 
-#include <triangle_mesh.h>
+#include "core/mesh/triangle_mesh.h"
 
 #include <cstdint>
 #include <filesystem>

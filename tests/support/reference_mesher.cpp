@@ -1,4 +1,4 @@
-#include "reference_mesher.h"
+#include "tests/support/reference_mesher.h"
 
 #include <openvdb/tools/VolumeToMesh.h>
 

@@ -5,8 +5,8 @@
 /// One shared-vertex mesh of the zero iso-surface. Kept as the reference our own mesher is
 /// measured against.
 
-#include <field_image.h>
-#include <triangle_mesh.h>
+#include "core/field/field_image.h"
+#include "core/mesh/triangle_mesh.h"
 
 namespace sculpt::test {
 

@@ -1,4 +1,4 @@
-#include "run_sculpt.h"
+#include "tests/support/run_sculpt.h"
 
 #include <sys/wait.h>
 

@@ -1,6 +1,6 @@
-#include "surface_stats.h"
+#include "tests/support/surface_stats.h"
 
-#include <incremental_mesher.h>
+#include "core/mesh/incremental_mesher.h"
 
 #include <openvdb/math/Stencils.h>
 

@@ -2,7 +2,7 @@
 /// @file surface_stats.h
 /// @brief Test measures of a field's surface: mean radius, curvature spread.
 
-#include <field_image.h>
+#include "core/field/field_image.h"
 
 #include <optional>
 

@@ -1,0 +1,23 @@
+#pragma once
+/// @file csg_combine.h
+/// @brief Combines a shape into the sculpt: union, difference, intersection or replace.
+
+#include "core/field/dirty_region.h"
+#include "core/field/field_image.h"
+
+#include <string>
+
+namespace sculpt {
+
+enum class CsgOperation { Union, Difference, Intersection, Replace };
+
+/// "union", "difference", "intersection", "replace". @throws InputError for other names.
+CsgOperation csgFromName(const std::string& name);
+
+/// sculpt = sculpt op shape, both on the same voxels. Union (min) and difference
+/// (max(phi, -phi_shape)) visit only the leaves the shape covers; intersection and replace change
+/// the whole sculpt by nature. Marks and returns the touched leaves.
+/// @throws InputError if the two grids' transforms differ.
+DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation operation);
+
+} // namespace sculpt

@@ -1,0 +1,70 @@
+#include "core/field/field_image.h"
+
+#include "core/base/errors.h"
+#include "core/base/text_format.h"
+
+#include <cmath>
+#include <utility>
+
+namespace sculpt {
+
+openvdb::FloatGrid::Ptr makeLevelSetGrid(const openvdb::math::Transform& xform, float background)
+{
+    auto grid = openvdb::FloatGrid::create(background);
+    grid->setTransform(xform.copy());
+    grid->setGridClass(openvdb::GRID_LEVEL_SET);
+    grid->setName("surface");
+    return grid;
+}
+
+openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxels)
+{
+    return makeLevelSetGrid(*openvdb::math::Transform::createLinearTransform(voxelSize),
+                            float(voxelSize * halfWidthVoxels));
+}
+
+namespace {
+
+double uniformVoxelSize(const openvdb::math::Transform& transform)
+{
+    if (!transform.isLinear()) {
+        throw InputError("the grid's transform is not linear (frustum grids cannot be sculpted)");
+    }
+    if (!transform.hasUniformScale()) {
+        throw InputError("the grid's voxels are not cubes (non-uniform voxel size)");
+    }
+    return transform.voxelSize()[0];
+}
+
+} // namespace
+
+FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
+    : mGrid(std::move(grid)), mUnits(std::move(units))
+{
+    if (!mGrid) throw InputError("no grid given");
+    if (mGrid->getGridClass() != openvdb::GRID_LEVEL_SET) {
+        throw InputError("grid '" + mGrid->getName() + "' is not a level set");
+    }
+    mVoxelSize = uniformVoxelSize(mGrid->transform());
+    if (!(mVoxelSize > 0.0) || !std::isfinite(mVoxelSize)) {
+        throw InputError("voxel size must be positive and finite");
+    }
+    if (!(mGrid->background() >= float(mVoxelSize))) {
+        throw InputError("grid '" + mGrid->getName() +
+                         "' has a band narrower than one voxel (background " +
+                         formatNumber(mGrid->background()) + ")");
+    }
+}
+
+double FieldImage::halfWidthVoxels() const { return double(mGrid->background()) / mVoxelSize; }
+
+DirtyRegion FieldImage::allLeaves() const
+{
+    DirtyRegion region;
+    for (auto leaf = mGrid->tree().cbeginLeaf(); leaf; ++leaf) region.addVoxel(leaf->origin());
+    return region;
+}
+
+DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRegion{}); }
+
+} // namespace sculpt

@@ -1,0 +1,66 @@
+#pragma once
+/// @file field_image.h
+/// @brief The sculpted shape: a narrow-band signed distance field on a sparse grid.
+///
+/// A FieldImage owns an `openvdb::FloatGrid` of class level set: values are signed distances in
+/// world units, negative inside, stored only in a band of `halfWidthVoxels()` voxels on each
+/// side of the zero iso-surface; outside the band the grid holds `+-background` (sign only).
+/// The voxel size is uniform. Every edit reports the leaves it touched (markDirty), which the
+/// mesher and the undo journal consume.
+
+#include "core/field/dirty_region.h"
+
+#include <openvdb/openvdb.h>
+
+#include <string>
+#include <utility>
+
+namespace sculpt {
+
+/// The grid every field image starts from: an empty level set named "surface" (the name
+/// documents carry) with `background` outside, on a copy of `xform`.
+openvdb::FloatGrid::Ptr makeLevelSetGrid(const openvdb::math::Transform& xform, float background);
+/// The same on the lattice of voxel size h at the origin, background halfWidthVoxels x h.
+openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxels);
+
+class FieldImage {
+public:
+    /// Narrow-band half width used by the builders: what WENO5 stencils need.
+    static constexpr double kDefaultHalfWidthVoxels = 3.0;
+    /// Length unit assumed when a file does not say.
+    static constexpr const char* kDefaultUnits = "mm";
+
+    /// Takes ownership of a level-set grid.
+    /// @throws InputError if the grid is null, not a level set, has a non-uniform or
+    ///         non-linear transform, or a background narrower than one voxel.
+    explicit FieldImage(openvdb::FloatGrid::Ptr grid, std::string units = kDefaultUnits);
+
+    /// Edge length of a voxel, in world units.
+    double voxelSize() const { return mVoxelSize; }
+    /// Half width of the band, in voxels (background / voxel size).
+    double halfWidthVoxels() const;
+    /// Length unit of world coordinates (e.g. "mm"); metadata only.
+    const std::string& units() const { return mUnits; }
+    void setUnits(std::string units) { mUnits = std::move(units); }
+
+    const openvdb::FloatGrid& grid() const { return *mGrid; }
+    /// Write access for edits; the editor must report what it touched with markDirty().
+    openvdb::FloatGrid& mutableGrid() { return *mGrid; }
+    openvdb::FloatGrid::ConstPtr gridPtr() const { return mGrid; }
+
+    /// Adds leaves to the region touched since the last takeDirtyRegion().
+    void markDirty(const DirtyRegion& region) { mDirty.merge(region); }
+    const DirtyRegion& dirtyRegion() const { return mDirty; }
+    /// Returns the touched region and starts a new, empty one.
+    DirtyRegion takeDirtyRegion();
+    /// Every leaf of the grid, for edits that change the whole field.
+    DirtyRegion allLeaves() const;
+
+private:
+    openvdb::FloatGrid::Ptr mGrid;
+    std::string mUnits;
+    double mVoxelSize = 0.0;
+    DirtyRegion mDirty;
+};
+
+} // namespace sculpt

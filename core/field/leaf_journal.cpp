@@ -1,0 +1,94 @@
+#include "core/field/leaf_journal.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace sculpt {
+
+namespace {
+
+using LeafT = openvdb::FloatTree::LeafNodeType;
+constexpr int kLeafDepth = int(openvdb::FloatTree::DEPTH) - 1;
+/// Per-entry bookkeeping of a std::map node, roughly.
+constexpr std::size_t kEntryOverhead = 64;
+
+} // namespace
+
+/// What the tree held at a leaf position: a leaf, a tile at some level, or nothing.
+struct LeafJournal::Saved {
+    std::unique_ptr<LeafT> leaf;
+    int level = -1;  ///< tile level (1 = leaf-sized ... root), -1 for background outside the root
+    float value = 0.0f;
+    bool active = false;
+
+    std::size_t memoryBytes() const { return kEntryOverhead + (leaf ? leaf->memUsage() : 0); }
+};
+
+LeafJournal::LeafJournal() = default;
+LeafJournal::~LeafJournal() = default;
+LeafJournal::LeafJournal(LeafJournal&&) noexcept = default;
+LeafJournal& LeafJournal::operator=(LeafJournal&&) noexcept = default;
+
+LeafJournal::Saved LeafJournal::capture(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin)
+{
+    Saved saved;
+    if (const LeafT* leaf = tree.probeConstLeaf(leafOrigin)) {
+        saved.leaf = std::make_unique<LeafT>(*leaf);
+        return saved;
+    }
+    const int depth = tree.getValueDepth(leafOrigin);
+    saved.level = depth < 0 ? -1 : kLeafDepth - depth;
+    saved.value = tree.getValue(leafOrigin);
+    saved.active = tree.isValueOn(leafOrigin);
+    return saved;
+}
+
+bool LeafJournal::contains(const openvdb::Coord& leafOrigin) const { return mEntries.count(leafOrigin) != 0; }
+
+void LeafJournal::save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin)
+{
+    if (contains(leafOrigin)) return;
+    Saved saved = capture(tree, leafOrigin);
+    mBytes += saved.memoryBytes();
+    mEntries.emplace(leafOrigin, std::move(saved));
+}
+
+void LeafJournal::restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin, const Saved& saved)
+{
+    if (saved.leaf) {
+        tree.addLeaf(new LeafT(*saved.leaf));
+    } else if (saved.level >= 0) {
+        tree.addTile(openvdb::Index(saved.level), leafOrigin, saved.value, saved.active);
+    } else {
+        // Nothing was there: a background root tile, then erased like pruneLevelSet does.
+        tree.addTile(openvdb::FloatTree::RootNodeType::LEVEL, leafOrigin, tree.background(), false);
+        tree.root().eraseBackgroundTiles();
+    }
+}
+
+void LeafJournal::swap(FieldImage& field)
+{
+    openvdb::FloatTree& tree = field.mutableGrid().tree();
+    // Capture everything first: restoring a coarse tile wipes the leaves below it.
+    std::map<openvdb::Coord, Saved> current;
+    std::size_t currentBytes = 0;
+    DirtyRegion touched;
+    for (const auto& [origin, saved] : mEntries) {
+        Saved now = capture(tree, origin);
+        currentBytes += now.memoryBytes();
+        current.emplace(origin, std::move(now));
+        touched.addVoxel(origin);
+    }
+    // Coarsest first, leaves last: a saved state never nests inside another's region, except
+    // the tiles one split produced, which all agree.
+    std::vector<std::pair<int, openvdb::Coord>> order;
+    for (const auto& [origin, saved] : mEntries) order.emplace_back(saved.leaf ? 0 : saved.level < 0 ? 99 : saved.level, origin);
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+    for (const auto& [rank, origin] : order) restore(tree, origin, mEntries.at(origin));
+    tree.clearAllAccessors();
+    mEntries = std::move(current);
+    mBytes = currentBytes;
+    field.markDirty(touched);
+}
+
+} // namespace sculpt

@@ -1,0 +1,50 @@
+#pragma once
+/// @file leaf_journal.h
+/// @brief Copy-on-write record of the leaves an edit changed, for bit-exact undo and redo.
+///
+/// Before an edit first writes a leaf position, save() keeps what the tree held there: a copy of
+/// the leaf, or the tile that covered it (its level, value and state), or nothing (a background
+/// region outside the root's table). swap() puts every saved state back and keeps the states it
+/// replaced, so a second swap() re-applies the edit: both restore the tree bit for bit, down to
+/// the tiles a split produced. Memory follows the number of leaves edited, not the model.
+///
+/// The tree must be a pruned level set (pruneLevelSet erases +background root tiles), which is
+/// what every edit here leaves behind.
+
+#include "core/field/dirty_region.h"
+#include "core/field/field_image.h"
+
+#include <map>
+#include <memory>
+
+namespace sculpt {
+
+class LeafJournal {
+public:
+    LeafJournal();
+    ~LeafJournal();
+    LeafJournal(LeafJournal&&) noexcept;
+    LeafJournal& operator=(LeafJournal&&) noexcept;
+
+    /// Keeps the tree's state at this leaf position, unless this journal already holds it.
+    void save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
+    bool contains(const openvdb::Coord& leafOrigin) const;
+
+    /// Restores every saved position and keeps what it replaced; marks them dirty in `field`.
+    void swap(FieldImage& field);
+
+    bool empty() const { return mEntries.empty(); }
+    std::size_t leafCount() const { return mEntries.size(); }
+    /// Heap bytes held (leaf copies and bookkeeping).
+    std::size_t memoryBytes() const { return mBytes; }
+
+private:
+    struct Saved;
+    static Saved capture(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
+    static void restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin, const Saved& saved);
+
+    std::map<openvdb::Coord, Saved> mEntries;
+    std::size_t mBytes = 0;
+};
+
+} // namespace sculpt

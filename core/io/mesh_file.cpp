@@ -1,0 +1,110 @@
+#include "core/io/mesh_file.h"
+
+#include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/base/file_extension.h"
+
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkOBJWriter.h>
+#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
+
+#include <algorithm>
+#include <cctype>
+
+namespace sculpt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+vtkSmartPointer<vtkPolyData> toPolyData(const TriangleMesh& mesh)
+{
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(vtkIdType(mesh.positions.size()));
+    for (size_t i = 0; i < mesh.positions.size(); ++i) {
+        points->SetPoint(vtkIdType(i), mesh.positions[i].data());
+    }
+    vtkNew<vtkCellArray> polys;
+    polys->AllocateExact(vtkIdType(mesh.triangles.size()), vtkIdType(3 * mesh.triangles.size()));
+    for (const auto& t : mesh.triangles) {
+        const vtkIdType ids[3] = {t[0], t[1], t[2]};
+        polys->InsertNextCell(3, ids);
+    }
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(points);
+    polyData->SetPolys(polys);
+    if (!mesh.normals.empty()) {
+        vtkNew<vtkFloatArray> normals;
+        normals->SetName("Normals");
+        normals->SetNumberOfComponents(3);
+        normals->SetNumberOfTuples(vtkIdType(mesh.normals.size()));
+        for (size_t i = 0; i < mesh.normals.size(); ++i) {
+            normals->SetTypedTuple(vtkIdType(i), mesh.normals[i].data());
+        }
+        polyData->GetPointData()->SetNormals(normals);
+    }
+    return polyData;
+}
+
+template <typename Writer>
+bool writeWith(Writer* writer, vtkPolyData* polyData, const fs::path& path)
+{
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(polyData);
+    return writer->Write() == 1;
+}
+
+bool writeFormat(MeshFormat format, vtkPolyData* polyData, const fs::path& path)
+{
+    switch (format) {
+    case MeshFormat::Ply: {
+        vtkNew<vtkPLYWriter> writer;
+        writer->SetFileTypeToBinary();
+        return writeWith(writer.Get(), polyData, path);
+    }
+    case MeshFormat::Obj: {
+        vtkNew<vtkOBJWriter> writer;
+        return writeWith(writer.Get(), polyData, path);
+    }
+    case MeshFormat::Stl: {
+        vtkNew<vtkSTLWriter> writer;
+        writer->SetFileTypeToBinary();
+        return writeWith(writer.Get(), polyData, path);
+    }
+    }
+    return false;
+}
+
+} // namespace
+
+MeshFormat meshFormatOf(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    if (ext == ".ply") return MeshFormat::Ply;
+    if (ext == ".obj") return MeshFormat::Obj;
+    if (ext == ".stl") return MeshFormat::Stl;
+    throw InputError(path.string() + ": unknown mesh extension '" + path.extension().string() +
+                     "' (expected .ply, .obj or .stl)");
+}
+
+void writeMesh(const TriangleMesh& mesh, const fs::path& path)
+{
+    const MeshFormat format = meshFormatOf(path);
+    AtomicFile out(path);
+    const auto polyData = toPolyData(mesh);
+    std::error_code ec;
+    if (!writeFormat(format, polyData, out.temporaryPath()) ||
+        !fs::exists(out.temporaryPath(), ec)) {
+        throw InputError(path.string() + ": the mesh writer failed (disk full or no permission?)");
+    }
+    out.commit();
+}
+
+} // namespace sculpt

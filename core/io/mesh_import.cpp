@@ -1,0 +1,196 @@
+#include "core/io/mesh_import.h"
+
+#include "core/base/errors.h"
+#include "core/base/file_extension.h"
+#include "core/base/memory_budget.h"
+#include "core/base/text_format.h"
+#include "core/io/vtk_error_catcher.h"
+
+#include <openvdb/tools/MeshToVolume.h>
+
+#include <vtkCellArray.h>
+#include <vtkCleanPolyData.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkPLYReader.h>
+#include <vtkPolyData.h>
+#include <vtkSTLReader.h>
+#include <vtkTriangleFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace sculpt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Runs a VTK mesh reader, then triangulates and merges coincident points.
+TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
+{
+    vtkObject::GlobalWarningDisplayOff();
+    vtkNew<VtkErrorCatcher> catcher;
+    reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(reader->GetOutputPort());
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    vtkNew<vtkCleanPolyData> clean;
+    clean->SetInputConnection(triangles->GetOutputPort());
+    clean->PointMergingOn();
+    clean->SetTolerance(0.0);
+    clean->Update();
+    if (!catcher->message.empty()) throw InputError(path.string() + ": cannot read the mesh (corrupt or truncated?)");
+    vtkPolyData* poly = clean->GetOutput();
+    TriangleMesh mesh;
+    mesh.positions.resize(size_t(poly->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < poly->GetNumberOfPoints(); ++i) {
+        double p[3];
+        poly->GetPoint(i, p);
+        mesh.positions[size_t(i)] = {float(p[0]), float(p[1]), float(p[2])};
+    }
+    vtkCellArray* polys = poly->GetPolys();
+    mesh.triangles.resize(size_t(polys->GetNumberOfCells()));
+    vtkIdType count;
+    const vtkIdType* ids;
+    size_t t = 0;
+    for (polys->InitTraversal(); polys->GetNextCell(count, ids);) {
+        if (count == 3) mesh.triangles[t++] = {std::uint32_t(ids[0]), std::uint32_t(ids[1]), std::uint32_t(ids[2])};
+    }
+    mesh.triangles.resize(t);
+    return mesh;
+}
+
+/// OFF: "OFF", then "V F E", V lines "x y z", F lines "n i0 ... i(n-1)" (fanned into triangles).
+TriangleMesh readOff(const fs::path& path)
+{
+    std::ifstream in(path);
+    if (!in) throw InputError(path.string() + ": cannot read the mesh");
+    std::string word;
+    in >> word;
+    if (word != "OFF") throw InputError(path.string() + ": not an OFF file (it must start with \"OFF\")");
+    long long vertices = -1, faces = -1, edges = 0;
+    in >> vertices >> faces >> edges;
+    if (!in || vertices < 0 || faces < 0) throw InputError(path.string() + ": corrupt OFF header");
+    // Each vertex takes at least 6 characters of text: refuse counts the file cannot hold.
+    if (double(vertices) * 6.0 > double(fs::file_size(path)) || double(faces) * 6.0 > double(fs::file_size(path))) {
+        throw InputError(path.string() + ": the header claims " + std::to_string(vertices) + " vertices and " +
+                         std::to_string(faces) + " faces, more than the file holds");
+    }
+    TriangleMesh mesh;
+    mesh.positions.resize(size_t(vertices));
+    for (auto& p : mesh.positions) {
+        if (!(in >> p[0] >> p[1] >> p[2])) throw InputError(path.string() + ": truncated vertex list");
+    }
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    for (long long f = 0; f < faces; ++f) {
+        long long n = 0;
+        if (!(in >> n) || n < 3 || n > vertices) throw InputError(path.string() + ": corrupt face " + std::to_string(f));
+        std::vector<long long> ids(static_cast<size_t>(n));
+        for (auto& id : ids) {
+            if (!(in >> id) || id < 0 || id >= vertices) throw InputError(path.string() + ": face " + std::to_string(f) + " has a bad vertex index");
+        }
+        for (long long k = 1; k + 1 < n; ++k) {
+            triangles.push_back({std::uint32_t(ids[0]), std::uint32_t(ids[size_t(k)]), std::uint32_t(ids[size_t(k + 1)])});
+        }
+        std::string colour;
+        std::getline(in, colour);  // optional face colour
+    }
+    mesh.triangles.resize(triangles.size());
+    std::copy(triangles.begin(), triangles.end(), mesh.triangles.begin());
+    return mesh;
+}
+
+} // namespace
+
+bool isMeshPath(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    return ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".off";
+}
+
+TriangleMesh readMesh(const fs::path& path)
+{
+    if (!fs::is_regular_file(path)) throw InputError(path.string() + ": no such file");
+    const std::string ext = lowerExtension(path);
+    TriangleMesh mesh = [&] {
+        if (ext == ".off") return readOff(path);
+        if (ext == ".obj") {
+            vtkNew<vtkOBJReader> reader;
+            reader->SetFileName(path.string().c_str());
+            return readWithVtk(reader, path);
+        }
+        if (ext == ".ply") {
+            vtkNew<vtkPLYReader> reader;
+            reader->SetFileName(path.string().c_str());
+            return readWithVtk(reader, path);
+        }
+        if (ext == ".stl") {
+            vtkNew<vtkSTLReader> reader;
+            reader->SetFileName(path.string().c_str());
+            return readWithVtk(reader, path);
+        }
+        throw InputError(path.string() + ": unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .off)");
+    }();
+    if (mesh.triangles.empty()) throw InputError(path.string() + ": no triangles in the mesh");
+    for (const auto& p : mesh.positions) {
+        if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+            throw InputError(path.string() + ": a vertex has non-finite coordinates");
+        }
+    }
+    return mesh;
+}
+
+MeshImportReport inspectMesh(const TriangleMesh& mesh)
+{
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+    for (const auto& t : mesh.triangles) {
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = t[size_t(e)], b = t[size_t((e + 1) % 3)];
+            ++edges[{std::min(a, b), std::max(a, b)}];
+        }
+    }
+    MeshImportReport report;
+    report.triangles = mesh.triangles.size();
+    for (const auto& [edge, count] : edges) {
+        if (count == 1) ++report.boundaryEdges;
+        if (count > 2) ++report.nonManifoldEdges;
+    }
+    return report;
+}
+
+double voxelSizeFor(const TriangleMesh& mesh, double voxelsAcross)
+{
+    openvdb::BBoxd box;
+    for (const auto& p : mesh.positions) box.expand(openvdb::Vec3d(p[0], p[1], p[2]));
+    const double longest = box.extents()[box.maxExtent()];
+    return longest > 0.0 ? longest / voxelsAcross : 1.0;
+}
+
+FieldImage meshToField(const TriangleMesh& mesh, double h)
+{
+    if (!(h > 0.0) || !std::isfinite(h)) throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
+    double area = 0.0;
+    std::vector<openvdb::Vec3s> points(mesh.positions.size());
+    for (size_t i = 0; i < points.size(); ++i) points[i] = openvdb::Vec3s(mesh.positions[i][0], mesh.positions[i][1], mesh.positions[i][2]);
+    std::vector<openvdb::Vec3I> triangles(mesh.triangles.size());
+    for (size_t i = 0; i < triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        triangles[i] = openvdb::Vec3I(t[0], t[1], t[2]);
+        area += 0.5 * double((points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).length());
+    }
+    const double halfWidth = FieldImage::kDefaultHalfWidthVoxels;
+    // The band holds about area / h^2 x (2 half width) voxels at ~5 bytes each, leaves included.
+    requireMemory(area / (h * h) * 2.0 * halfWidth * 8.0, "the mesh at voxel size " + formatNumber(h));
+    auto xform = openvdb::math::Transform::createLinearTransform(h);
+    std::vector<openvdb::Vec4I> quads;
+    auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, points, triangles, quads, float(halfWidth));
+    if (grid->activeVoxelCount() == 0) throw InputError("the mesh produced no surface at voxel size " + formatNumber(h));
+    return FieldImage(grid);
+}
+
+} // namespace sculpt

@@ -1,0 +1,397 @@
+#include "core/motion/level_set_evolution.h"
+
+#include "core/field/central_difference.h"
+#include "core/field/dense_gather.h"
+#include "core/base/errors.h"
+#include "core/local/local_patch.h"
+#include "core/base/text_format.h"
+#include "core/motion/volume_estimate.h"
+
+#include <openvdb/math/FiniteDifference.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetTracker.h>
+#include <openvdb/tools/SignedFloodFill.h>
+#include <openvdb/tree/LeafManager.h>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace sculpt {
+
+namespace {
+
+using LeafT = openvdb::FloatTree::LeafNodeType;
+using LeafValues = std::array<float, LeafT::SIZE>;
+constexpr int kApron = 3;  // WENO5 reads three voxels on each side
+constexpr int kDim = int(LeafT::DIM) + 2 * kApron;
+
+/// A leaf and its apron, densely: at(x, y, z) for leaf-local x, y, z in [-3, 10].
+struct LeafStencil {
+    std::array<float, kDim * kDim * kDim> v;
+    float at(int x, int y, int z) const { return v[size_t(((x + kApron) * kDim + (y + kApron)) * kDim + (z + kApron))]; }
+    void gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin)
+    {
+        gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-kApron), origin.offsetBy(LeafT::DIM - 1 + kApron)), v.data());
+    }
+};
+
+/// What every voxel of one step needs to know, fixed for the step.
+struct StepConstants {
+    double h, invH;
+    GradientScheme scheme;
+    const openvdb::FloatTree* target = nullptr;
+    float alpha = 0.0f, clampWorld = 0.0f;
+    double beta = 0.0;
+    std::optional<FalloffBall> smoothWeight;
+    bool firstOrderTime = false;
+    double uniformSpeed = 0.0;  // the offset term
+    std::optional<LocalTerm> local;
+    std::optional<MotionRegion> region;
+    const openvdb::math::Transform* xform;
+
+    /// True if nothing can move in the leaf: only a weighted smoothing acts, and its ball
+    /// misses the leaf (a smoothing brush on a patch then costs its ball, not the patch).
+    bool leafIsStill(const openvdb::Coord& origin) const
+    {
+        if (!smoothWeight || target || local || uniformSpeed != 0.0) return false;
+        const openvdb::Vec3d centre = xform->worldToIndex(smoothWeight->centreWorld);
+        openvdb::Vec3d nearest;
+        for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(origin[a]), double(origin[a] + 7));
+        return (nearest - centre).length() * h > smoothWeight->radiusWorld;
+    }
+};
+
+/// One-sided differences along `axis` at (x, y, z): minus and plus.
+void oneSided(const LeafStencil& s, int x, int y, int z, int axis, GradientScheme scheme,
+              double invH, double& minus, double& plus)
+{
+    auto f = [&](int k) {
+        return s.at(x + (axis == 0) * k, y + (axis == 1) * k, z + (axis == 2) * k);
+    };
+    if (scheme == GradientScheme::FirstOrder) {
+        minus = (f(0) - f(-1)) * invH;
+        plus = (f(1) - f(0)) * invH;
+        return;
+    }
+    // Slopes, not differences: WENO5's smoothness epsilon assumes values of order one.
+    double d[6];
+    for (int k = 0; k < 6; ++k) d[k] = (f(k - 2) - f(k - 3)) * invH;
+    minus = openvdb::math::WENO5(d[0], d[1], d[2], d[3], d[4]);
+    plus = openvdb::math::WENO5(d[5], d[4], d[3], d[2], d[1]);
+}
+
+/// Mean-curvature flow term kappa |grad phi| by central differences (zero where grad vanishes).
+double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
+{
+    const double f = s.at(x, y, z);
+    const double dx = 0.5 * (s.at(x + 1, y, z) - s.at(x - 1, y, z)), dy = 0.5 * (s.at(x, y + 1, z) - s.at(x, y - 1, z)),
+                 dz = 0.5 * (s.at(x, y, z + 1) - s.at(x, y, z - 1));
+    const double dxx = s.at(x + 1, y, z) - 2 * f + s.at(x - 1, y, z), dyy = s.at(x, y + 1, z) - 2 * f + s.at(x, y - 1, z),
+                 dzz = s.at(x, y, z + 1) - 2 * f + s.at(x, y, z - 1);
+    const double dxy = 0.25 * (s.at(x + 1, y + 1, z) - s.at(x + 1, y - 1, z) - s.at(x - 1, y + 1, z) + s.at(x - 1, y - 1, z));
+    const double dxz = 0.25 * (s.at(x + 1, y, z + 1) - s.at(x + 1, y, z - 1) - s.at(x - 1, y, z + 1) + s.at(x - 1, y, z - 1));
+    const double dyz = 0.25 * (s.at(x, y + 1, z + 1) - s.at(x, y + 1, z - 1) - s.at(x, y - 1, z + 1) + s.at(x, y - 1, z - 1));
+    const double g2 = dx * dx + dy * dy + dz * dz;
+    if (g2 < 1e-12) return 0.0;
+    const double num = dx * dx * (dyy + dzz) + dy * dy * (dxx + dzz) + dz * dz * (dxx + dyy) -
+                       2.0 * (dx * dy * dxy + dx * dz * dxz + dy * dz * dyz);
+    return num / g2 * invH * invH;  // differences carry h: num ~ h^4, g2 ~ h^2
+}
+
+/// The right-hand side dphi/dt at one voxel.
+class VoxelRate {
+public:
+    explicit VoxelRate(const StepConstants& c) : c(c)
+    {
+        if (c.target) mTarget.emplace(*c.target);
+    }
+
+    /// nullopt if the voxel is outside the region and must not move.
+    std::optional<double> operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    {
+        if (c.region && (c.xform->indexToWorld(ijk) - c.region->centreWorld).lengthSqr() >
+                            c.region->radiusWorld * c.region->radiusWorld) {
+            return std::nullopt;
+        }
+        double speed = c.uniformSpeed;
+        if (mTarget || c.local) speed += extendedSpeed(s, x, y, z, ijk);
+        double rate = 0.0;
+        if (speed != 0.0) {
+            openvdb::Vec3d minus, plus;
+            for (int axis = 0; axis < 3; ++axis) oneSided(s, x, y, z, axis, c.scheme, c.invH, minus[axis], plus[axis]);
+            rate -= speed * std::sqrt(openvdb::math::GodunovsNormSqrd(speed > 0.0, minus, plus));
+        }
+        if (c.beta > 0.0) {
+            const double weight = c.smoothWeight ? c.smoothWeight->weightAt(c.xform->indexToWorld(ijk)) : 1.0;
+            if (weight > 0.0) rate += c.beta * weight * curvatureNormGrad(s, x, y, z, c.invH);
+        }
+        return rate;
+    }
+
+private:
+    /// Target and local speeds taken at the voxel's closest surface point x - phi n, not at the
+    /// voxel: every level set then moves with the surface (a cheap velocity extension), so the
+    /// band stays a distance field instead of bunching up where the speed varies.
+    double extendedSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    {
+        const openvdb::Vec3d foot = closestSurfacePoint(
+            ijk.asVec3d(), s.at(x, y, z), centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z),
+            c.invH);
+        double speed = 0.0;
+        if (mTarget) {
+            const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
+            speed -= c.alpha * std::clamp(phiT, double(-c.clampWorld), double(c.clampWorld));
+        }
+        if (c.local) {
+            const openvdb::Vec3d world = c.xform->indexToWorld(foot);
+            const double q = (world - c.local->centreWorld).lengthSqr() / (c.local->radiusWorld * c.local->radiusWorld);
+            if (q < 1.0) speed += c.local->speedWorld * (1.0 - q) * (1.0 - q);
+        }
+        return speed;
+    }
+
+private:
+    const StepConstants& c;
+    std::optional<openvdb::tree::ValueAccessor<const openvdb::FloatTree>> mTarget;
+};
+
+/// One explicit Euler stage over every leaf: out[i] = phi + dt * rate (inactive voxels kept).
+void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves,
+                const StepConstants& c, double dt, std::vector<LeafValues>& out)
+{
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
+        LeafStencil stencil;
+        VoxelRate rate(c);
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            const LeafT& leaf = *leaves[i];
+            std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
+            if (leaf.isEmpty()) continue;
+            stencil.gather(tree, leaf.origin());
+            for (auto it = leaf.cbeginValueOn(); it; ++it) {
+                const openvdb::Coord local = it.getCoord() - leaf.origin();
+                const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
+                if (dphi) out[i][it.pos()] = float(*it + dt * *dphi);
+            }
+        }
+    });
+}
+
+void writeLeaves(const std::vector<LeafT*>& leaves, const std::vector<LeafValues>& values, float background)
+{
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            float* dst = leaves[i]->buffer().data();
+            for (size_t k = 0; k < LeafT::SIZE; ++k) dst[k] = std::clamp(values[i][k], -background, background);
+        }
+    });
+}
+
+std::vector<LeafT*> leafList(openvdb::FloatTree& tree)
+{
+    std::vector<LeafT*> leaves;
+    leaves.reserve(tree.leafCount());
+    for (auto it = tree.beginLeaf(); it; ++it) leaves.push_back(it.getLeaf());
+    return leaves;
+}
+
+void validateTerms(const MotionTerms& t, const FieldImage& field)
+{
+    auto finiteNonNegative = [](double v) { return std::isfinite(v) && v >= 0.0; };
+    if (t.smooth && !finiteNonNegative(t.smooth->beta)) throw InputError("smoothing coefficient must be >= 0");
+    if (t.target) {
+        if (!t.target->target) throw InputError("no target shape given");
+        if (!finiteNonNegative(t.target->alpha)) throw InputError("target speed must be >= 0");
+        const double targetH = t.target->target->transform().voxelSize()[0];
+        if (std::abs(targetH - field.voxelSize()) > 1e-9 * field.voxelSize()) {
+            throw InputError("the target's voxel size " + formatNumber(targetH) + " differs from " +
+                             formatNumber(field.voxelSize()) + "; resample it first");
+        }
+    }
+    if (t.local && !(t.local->radiusWorld > 0.0 && std::isfinite(t.local->speedWorld))) {
+        throw InputError("local speed needs a positive radius and a finite speed");
+    }
+    if (t.uniform && !std::isfinite(t.uniform->speedWorld)) throw InputError("offset speed must be finite");
+    if (t.volume && !(finiteNonNegative(t.volume->targetVolume) && finiteNonNegative(t.volume->gamma))) {
+        throw InputError("volume control needs a non-negative target volume and gain");
+    }
+}
+
+/// One TVD-RK2 (Heun) step over every leaf of `grid`.
+void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
+{
+    auto& tree = grid.tree();
+    auto leaves = leafList(tree);
+    // Leaves that cannot move are neither copied nor written (a brush on a patch).
+    leaves.erase(std::remove_if(leaves.begin(), leaves.end(), [&](const LeafT* leaf) { return c.leafIsStill(leaf->origin()); }),
+                 leaves.end());
+    if (c.firstOrderTime) {
+        std::vector<LeafValues> next(leaves.size());
+        eulerStage(tree, leaves, c, dt, next);
+        writeLeaves(leaves, next, grid.background());
+        return;
+    }
+    std::vector<LeafValues> phi0(leaves.size()), stage(leaves.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            std::copy(leaves[i]->buffer().data(), leaves[i]->buffer().data() + LeafT::SIZE, phi0[i].begin());
+        }
+    });
+    eulerStage(tree, leaves, c, dt, stage);
+    writeLeaves(leaves, stage, grid.background());
+    eulerStage(tree, leaves, c, dt, stage);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            for (size_t k = 0; k < LeafT::SIZE; ++k) stage[i][k] = 0.5f * (phi0[i][k] + stage[i][k]);
+        }
+    });
+    writeLeaves(leaves, stage, grid.background());
+}
+
+void redistanceGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
+{
+    openvdb::tools::LevelSetTracker<openvdb::FloatGrid> tracker(grid);
+    tracker.setSpatialScheme(o.scheme == GradientScheme::Weno5 ? openvdb::math::HJWENO5_BIAS
+                                                               : openvdb::math::FIRST_BIAS);
+    tracker.setTemporalScheme(openvdb::math::TVD_RK1);
+    tracker.setNormCount(o.normalizeIterations);
+    tracker.track();
+}
+
+} // namespace
+
+LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
+                                     std::optional<MotionRegion> region)
+    : mField(field), mTerms(std::move(terms)), mOptions(options), mRegion(region)
+{
+    validateTerms(mTerms, field);
+    if (mTerms.target && mTerms.target->clampWorld <= 0.0) {
+        mTerms.target->clampWorld = mTerms.target->target->background();
+    }
+    if (!(mOptions.cfl > 0.0 && mOptions.cfl <= 1.0)) throw InputError("CFL number must be in (0, 1]");
+}
+
+double LevelSetEvolution::maxAdvectionSpeed() const
+{
+    double speed = 0.0;
+    if (mTerms.target) speed += mTerms.target->alpha * mTerms.target->clampWorld;
+    if (mTerms.local) speed += std::abs(mTerms.local->speedWorld);
+    if (mTerms.uniform) speed += std::abs(mTerms.uniform->speedWorld);
+    return speed;
+}
+
+double LevelSetEvolution::stableTimeStep() const
+{
+    const double h = mField.voxelSize();
+    double dt = std::numeric_limits<double>::infinity();
+    const double speed = maxAdvectionSpeed();
+    if (speed > 0.0) dt = mOptions.cfl * h / speed;
+    if (mTerms.smooth && mTerms.smooth->beta > 0.0) dt = std::min(dt, h * h / (6.0 * mTerms.smooth->beta));
+    return dt;
+}
+
+double LevelSetEvolution::step(double maxDt)
+{
+    const double dt = std::min(maxDt, stableTimeStep());
+    if (!std::isfinite(dt) || dt <= 0.0) return 0.0;  // no term moves anything
+    applyStep(dt);
+    mTime += dt;
+    ++mSteps;
+    if (mTerms.volume) correctVolume();
+    return dt;
+}
+
+void LevelSetEvolution::correctVolume()
+{
+    const auto [volume, area] = estimateVolumeArea(mField.grid());
+    if (!(area > 0.0)) return;
+    const double budget = mOptions.cfl * mField.voxelSize();
+    const double displacement =
+        std::clamp(mTerms.volume->gamma * (mTerms.volume->targetVolume - volume) / area, -budget, budget);
+    openvdb::FloatGrid& grid = mField.mutableGrid();
+    const float background = grid.background();
+    const auto leaves = leafList(grid.tree());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
+        for (size_t i = r.begin(); i < r.end(); ++i) {
+            for (auto it = leaves[i]->beginValueOn(); it; ++it) {
+                it.setValue(std::clamp(float(*it - displacement), -background, background));
+            }
+        }
+    });
+    mMovedSinceRedistance += std::abs(displacement);
+}
+
+void LevelSetEvolution::applyStep(double dt)
+{
+    openvdb::FloatGrid& grid = mField.mutableGrid();
+    StepConstants c;
+    c.h = mField.voxelSize();
+    c.invH = 1.0 / c.h;
+    c.scheme = mOptions.scheme;
+    c.firstOrderTime = mOptions.firstOrderTime;
+    if (mTerms.target) {
+        c.target = &mTerms.target->target->tree();
+        c.alpha = float(mTerms.target->alpha);
+        c.clampWorld = float(mTerms.target->clampWorld);
+    }
+    c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
+    if (mTerms.smooth) c.smoothWeight = mTerms.smooth->weight;
+    c.uniformSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
+    c.local = mTerms.local;
+    c.region = mRegion;
+    c.xform = &grid.transform();
+
+    // Every level set in the band, not only the surface, moves at up to max|F_adv|; where the
+    // speed varies (a target, a brush) they bunch up, so rebuild before any may have moved
+    // redistanceAfterMovingVoxels. Curvature flow diffuses the band's edge inwards by sqrt(2 beta t): rebuild
+    // before that travels half a voxel too.
+    mMovedSinceRedistance += maxAdvectionSpeed() * dt;
+    mDiffusedSinceRedistance += c.beta * dt;
+    const auto redistanceDue = [&] {
+        return mMovedSinceRedistance >= mOptions.redistanceAfterMovingVoxels * c.h ||
+               mDiffusedSinceRedistance >= mOptions.redistanceAfterDiffusingVoxels2 * c.h * c.h;
+    };
+    if (!mRegion) {
+        DirtyRegion touched = mField.allLeaves();
+        rk2Step(grid, c, dt);
+        if (redistanceDue()) {
+            mDiffusedSinceRedistance = 0.0;
+            redistanceGrid(grid, mOptions);
+            mMovedSinceRedistance = 0.0;
+            touched.merge(mField.allLeaves());
+        }
+        mField.markDirty(touched);
+        return;
+    }
+    // Local: move a copy of the leaves around the region, track it there, copy the inside back.
+    LocalPatch patch(mField, Capsule::ball(mRegion->centreWorld, mRegion->radiusWorld + grid.background() + c.h));
+    openvdb::FloatGrid& copy = patch.field().mutableGrid();
+    rk2Step(copy, c, dt);
+    if (redistanceDue()) {
+        mDiffusedSinceRedistance = 0.0;
+        redistanceGrid(copy, mOptions);
+        mMovedSinceRedistance = 0.0;
+    }
+    patch.commit(mField, nullptr);
+}
+
+void LevelSetEvolution::redistance()
+{
+    redistanceGrid(mField.mutableGrid(), mOptions);
+    mMovedSinceRedistance = 0.0;
+    mDiffusedSinceRedistance = 0.0;
+    mField.markDirty(mField.allLeaves());
+}
+
+void LevelSetEvolution::advance(double duration)
+{
+    const double end = mTime + duration;
+    while (mTime < end) {
+        if (step(end - mTime) <= 0.0) break;
+    }
+}
+
+} // namespace sculpt

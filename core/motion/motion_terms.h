@@ -1,0 +1,66 @@
+#pragma once
+/// @file motion_terms.h
+/// @brief The terms of the normal speed that moves a level set (Cani, eq. 1):
+///        F = F_target + F_smooth + F_volume + F_local, with dphi/dt + F |grad phi| = 0 and
+///        F > 0 moving the surface outwards.
+
+#include "core/local/falloff.h"
+
+#include <openvdb/openvdb.h>
+
+#include <optional>
+
+namespace sculpt {
+
+/// F_T = -alpha clamp(phi_T(x), -w, w): the surface moves towards the target's zero set, at
+/// most alpha w fast. The target must share the field's transform (resample first).
+struct TargetTerm {
+    openvdb::FloatGrid::ConstPtr target;
+    double alpha = 1.0;       ///< per unit time
+    double clampWorld = 0.0;  ///< w; 0 means the target's band half width
+};
+
+/// F_k = -beta kappa, kappa = div(grad phi / |grad phi|) (2/r on a sphere): mean-curvature flow.
+/// A sphere follows r(t)^2 = r0^2 - 4 beta t.
+struct SmoothTerm {
+    double beta = 1.0;  ///< world units^2 per unit time
+    /// If set, beta is scaled by this ball's falloff at each voxel: a smoothing brush.
+    std::optional<FalloffBall> weight;
+};
+
+/// F_V = gamma (V* - V) / (A tau), V and A measured on the current surface, tau the step: a
+/// uniform normal speed that restores the volume V* (global, never local). Applied by operator
+/// splitting: after the other terms' step, the surface is offset by gamma (V* - V) / A, so the
+/// volume the other terms lost or gained in the step is restored in the same step, without lag.
+struct VolumeTerm {
+    double targetVolume = 0.0;  ///< V* at the end of the next step, world units^3
+    double gamma = 1.0;         ///< fraction of the volume error corrected per step
+};
+
+/// F_B = speed * (1 - (d/r)^2)^2 for d = |x - centre| < r, 0 beyond: a smooth local push.
+struct LocalTerm {
+    openvdb::Vec3d centreWorld{0.0};
+    double radiusWorld = 1.0;
+    double speedWorld = 0.0;  ///< world units per unit time; > 0 inflates
+};
+
+/// F = speed everywhere: the surface offsets along its normal.
+struct UniformTerm {
+    double speedWorld = 0.0;  ///< world units per unit time; > 0 grows
+};
+
+/// A ball outside which nothing moves; the cost of a step then follows the ball, not the model.
+struct MotionRegion {
+    openvdb::Vec3d centreWorld{0.0};
+    double radiusWorld = 1.0;
+};
+
+struct MotionTerms {
+    std::optional<TargetTerm> target;
+    std::optional<SmoothTerm> smooth;
+    std::optional<VolumeTerm> volume;
+    std::optional<LocalTerm> local;
+    std::optional<UniformTerm> uniform;
+};
+
+} // namespace sculpt

@@ -1,0 +1,89 @@
+#pragma once
+/// @file scan_volume.h
+/// @brief A medical volume (CT, MRI) as read from its file: samples on a lattice and the lattice's
+///        place in the world.
+///
+/// Readers are VTK's: NIfTI (.nii, .nii.gz, with its sform or else qform), NRRD (.nrrd, .nhdr),
+/// MetaImage (.mha, .mhd), a DICOM series (a directory of slices, sorted by position along the
+/// slice normal, with patient orientation), and raw samples with a layout given by the user.
+/// The samples stay in the file's type (an 8-bit scan costs one byte per voxel) and are read a
+/// slice or a few points at a time as floats, so converting a scan never needs a float copy of
+/// all of it.
+
+#include <openvdb/openvdb.h>
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace sculpt {
+
+/// How the samples of a headerless raw file are laid out.
+struct RawLayout {
+    openvdb::Coord dims{0, 0, 0};   ///< samples along x (fastest), y, z
+    std::string type = "uint8";     ///< uint8, int8, uint16, int16, uint32, int32, float32, float64
+    openvdb::Vec3d spacing{1.0};    ///< voxel size along x, y, z (world units)
+    openvdb::Vec3d origin{0.0};     ///< world position of sample (0, 0, 0)
+    bool bigEndian = false;
+    std::size_t headerBytes = 0;    ///< bytes to skip at the start of the file
+};
+
+class ScanVolume {
+public:
+    struct Impl;
+    explicit ScanVolume(std::shared_ptr<const Impl> impl);
+
+    /// Samples along x, y, z.
+    openvdb::Coord dims() const;
+    /// Maps a sample's index (i, j, k) to its world position: spacing, orientation, origin.
+    const openvdb::Mat4d& worldFromIndex() const;
+    /// World distance between neighbouring samples along index axis 0, 1 or 2.
+    double spacing(int axis) const;
+    /// Smallest and largest sample.
+    std::pair<double, double> range() const;
+    /// Bytes of the samples in their file type.
+    std::size_t denseBytes() const;
+    /// The file or directory it came from, for messages.
+    const std::string& source() const;
+
+    /// Copies slice k (dims.x * dims.y samples, x fastest) into `out` as floats.
+    void readSlice(int k, float* out) const;
+    /// Trilinear samples at points given in index space (i, j, k); `outside` for points off the
+    /// lattice. Thread-safe.
+    void sample(const openvdb::Vec3d* points, std::size_t count, float outside, float* out) const;
+
+    /// The samples of an index box (inclusive), placed where they were.
+    /// @throws InputError if the box does not overlap the scan.
+    ScanVolume cropped(const openvdb::CoordBBox& box) const;
+    /// Gaussian-smoothed samples (standard deviation in world units, per axis in voxels).
+    ScanVolume smoothed(double sigmaWorld) const;
+    /// The samples low-pass filtered for resampling at a coarser voxel size, so that noise and
+    /// detail finer than a voxel average out instead of aliasing into a rough surface: along each
+    /// axis with spacing s < h, a Gaussian of sigma sqrt(h^2 - s^2) / 2 (world units). Nothing
+    /// (nullopt) if no axis is finer than h by enough to matter.
+    std::optional<ScanVolume> antiAliased(double voxelSizeWorld) const;
+    /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.
+    double otsuThreshold() const;
+
+private:
+    static constexpr double kMinSigmaVoxels = 0.25;  // below, the filter would change nothing visible
+    ScanVolume gaussian(const openvdb::Vec3d& sigmaVoxels) const;
+
+    std::shared_ptr<const Impl> mImpl;
+};
+
+/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd) or, for a
+/// directory, as a DICOM series.
+/// @throws InputError naming the file and the problem: unknown format, unreadable, truncated
+///         or corrupt, absurd dimensions (refused before allocating), a DICOM directory with
+///         mixed sizes or missing slices.
+ScanVolume readScan(const std::filesystem::path& path);
+/// Reads headerless samples. @throws InputError as readScan, or if the file is shorter than
+/// the layout says.
+ScanVolume readRawScan(const std::filesystem::path& path, const RawLayout& layout);
+
+/// True if readScan knows the path's extension (or it is a directory).
+bool isScanPath(const std::filesystem::path& path);
+
+} // namespace sculpt

@@ -1,0 +1,73 @@
+#include "sculpt/session/shape_import.h"
+
+#include "core/base/errors.h"
+#include "core/base/file_extension.h"
+#include "core/io/mesh_import.h"
+#include "core/scan/scan_to_level_set.h"
+#include "core/base/text_format.h"
+#include "core/io/vdb_file.h"
+
+namespace sculpt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report)
+{
+    if (options.iso || options.crop || options.smoothSigma > 0.0 || options.raw) {
+        throw InputError(input.string() + ": --iso, --auto-iso, --crop, --smooth and --raw apply to scans, not meshes");
+    }
+    const TriangleMesh mesh = readMesh(input);
+    const MeshImportReport inspection = inspectMesh(mesh);
+    if (!inspection.closed()) {
+        report.warnings.push_back(input.string() + ": the mesh is not closed (" + std::to_string(inspection.boundaryEdges) +
+                                  " open edges, " + std::to_string(inspection.nonManifoldEdges) +
+                                  " non-manifold): inside and outside are guessed where it is open");
+    }
+    report.kind = "mesh";
+    report.voxelSize = options.voxelSize.value_or(voxelSizeFor(mesh));
+    return meshToField(mesh, report.voxelSize);
+}
+
+FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report, const Progress& progress)
+{
+    ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
+    if (options.crop) scan = scan.cropped(*options.crop);
+    if (options.smoothSigma > 0.0) scan = scan.smoothed(options.smoothSigma);
+    report.kind = "scan";
+    report.isoChosen = !options.iso;
+    report.iso = options.iso ? *options.iso : scan.otsuThreshold();
+    report.voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
+    if (auto filtered = scan.antiAliased(report.voxelSize)) {
+        scan = std::move(*filtered);
+        report.antiAliased = true;
+    }
+    return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
+}
+
+} // namespace
+
+FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report, const Progress& progress)
+{
+    if (options.voxelSize && !(*options.voxelSize > 0.0)) {
+        throw InputError("--voxel-size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
+    }
+    FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
+                                                          : importScan(input, options, report, progress);
+    if (options.largestComponent) report.pieces = keepLargestComponent(field);
+    return field;
+}
+
+FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings)
+{
+    if (lowerExtension(input) == ".vdb") return readFieldImage(input);
+    ImportOptions options;
+    options.voxelSize = voxelSize;
+    ImportReport report;
+    FieldImage field = importShape(input, options, report);
+    warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
+    return field;
+}
+
+} // namespace sculpt

@@ -1,0 +1,181 @@
+#include "sculpt/session/stroke_script.h"
+
+#include "core/field/csg_combine.h"
+#include "core/base/errors.h"
+#include "core/base/json_fields.h"
+#include "core/primitives/scene_file.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace sculpt {
+
+namespace {
+
+using nlohmann::json;
+using namespace json_fields;
+
+constexpr const char* kFormat = "sculpt-strokes";
+constexpr int kVersion = 1;
+
+std::string describeEvent(size_t index, const json& event)
+{
+    std::string text = "events[" + std::to_string(index) + "]";
+    if (event.is_object() && event.contains("tool") && event["tool"].is_string()) {
+        text += " ('" + event["tool"].get<std::string>() + "' stroke)";
+    }
+    return text;
+}
+
+StrokeSample parseSample(const json& j, const std::string& where)
+{
+    StrokeSample s;
+    if (j.is_array()) {
+        s.positionWorld = vec3(j, where + ": field 'position'");
+        return s;
+    }
+    onlyFields(j, {"position", "pressure", "view"}, where);
+    s.positionWorld = vec3(field(j, "position", where), where + ": field 'position'");
+    s.pressure = numberOr(j, "pressure", 1.0, where);
+    if (j.contains("view")) s.viewDirection = vec3(j["view"], where + ": field 'view'");
+    return s;
+}
+
+Symmetry parseSymmetry(const json& j, const std::string& where)
+{
+    Symmetry symmetry;
+    if (!j.is_array()) throw InputError(where + ": field 'symmetry' must be an array of \"x\", \"y\", \"z\"");
+    for (const json& axis : j) {
+        const std::string name = axis.is_string() ? axis.get<std::string>() : axis.dump();
+        if (name == "x") symmetry.x = true;
+        else if (name == "y") symmetry.y = true;
+        else if (name == "z") symmetry.z = true;
+        else throw InputError(where + ": field 'symmetry' has \"" + name + "\" (expected \"x\", \"y\" or \"z\")");
+    }
+    return symmetry;
+}
+
+/// The primitive set of a primitive stroke: a scene file path (relative to the script) or inline.
+std::shared_ptr<const PrimitiveStamp> parsePrimitives(const json& j, const std::string& where,
+                                                      const std::filesystem::path& baseDir)
+{
+    const Scene scene = [&] {
+        if (!j.is_string()) return parseScene(j.dump(), where + ": field 'primitives'");
+        try {
+            return readScene(baseDir / j.get<std::string>());
+        } catch (const InputError& e) {
+            throw InputError(where + ": field 'primitives': " + e.what(), e.remedy());
+        }
+    }();
+    return std::make_shared<const PrimitiveStamp>(PrimitiveStamp{scene.primitives, scene.operation});
+}
+
+Stroke parseStroke(const json& j, const std::string& where, const std::filesystem::path& baseDir)
+{
+    onlyFields(j, {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives"},
+               where);
+    Stroke stroke;
+    BrushSettings& brush = stroke.brush;
+    try {
+        brush.tool = brushToolFromName(textOr(j, "tool", "", where));
+        brush.falloff = falloffFromName(textOr(j, "falloff", falloffName(brush.falloff), where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what(), e.remedy());
+    }
+    brush.radiusWorld = number(j, "radius", where);
+    brush.strength = numberOr(j, "strength", brush.strength, where);
+    brush.keepVolume = flagOr(j, "keep_volume", false, where);
+    stroke.spacing = numberOr(j, "spacing", stroke.spacing, where);
+    if (j.contains("symmetry")) stroke.symmetry = parseSymmetry(j["symmetry"], where);
+    if (brush.tool == BrushTool::Primitive) brush.primitive = parsePrimitives(field(j, "primitives", where), where, baseDir);
+    const json& samples = field(j, "samples", where);
+    if (!samples.is_array()) throw InputError(where + ": field 'samples' must be an array");
+    for (size_t i = 0; i < samples.size(); ++i) {
+        stroke.samples.push_back(parseSample(samples[i], where + ": samples[" + std::to_string(i) + "]"));
+    }
+    try {
+        validateStroke(stroke);
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what(), e.remedy());
+    }
+    return stroke;
+}
+
+ScriptEvent parseEvent(const json& j, const std::string& where, const std::filesystem::path& baseDir)
+{
+    if (!j.is_object()) throw InputError(where + " must be an object");
+    if (j.contains("action")) {
+        onlyFields(j, {"action"}, where);
+        const std::string action = textOr(j, "action", "", where);
+        if (action == "undo") return {ScriptEvent::Kind::Undo, {}};
+        if (action == "redo") return {ScriptEvent::Kind::Redo, {}};
+        throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\" or \"redo\")");
+    }
+    field(j, "tool", where);
+    return {ScriptEvent::Kind::Stroke, parseStroke(j, where, baseDir)};
+}
+
+} // namespace
+
+StrokeScript parseStrokeScript(const std::string& text, const std::string& source, const std::filesystem::path& baseDir)
+{
+    const json root = parse(text, source);
+    if (!root.is_object()) throw InputError(source + ": a stroke script must be a JSON object");
+    onlyFields(root, {"format", "version", "description", "events"}, source);
+    if (textOr(root, "format", kFormat, source) != kFormat) {
+        throw InputError(source + ": field 'format' must be \"" + std::string(kFormat) + "\"");
+    }
+    const double version = numberOr(root, "version", kVersion, source);
+    if (version != kVersion) {
+        throw InputError(source + ": version " + root["version"].dump() + " is not supported (this program reads version " +
+                         std::to_string(kVersion) + ")");
+    }
+    const json& events = field(root, "events", source);
+    if (!events.is_array()) throw InputError(source + ": field 'events' must be an array");
+    StrokeScript script;
+    for (size_t i = 0; i < events.size(); ++i) {
+        script.events.push_back(parseEvent(events[i], source + ": " + describeEvent(i, events[i]), baseDir));
+    }
+    return script;
+}
+
+StrokeScript readStrokeScript(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot read the stroke script");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseStrokeScript(text.str(), path.string(), path.parent_path());
+}
+
+ReplayReport replayScript(SculptSession& session, const StrokeScript& script, const std::string& source,
+                          const Progress& progress)
+{
+    ReplayReport done;
+    for (size_t i = 0; i < script.events.size(); ++i) {
+        const ScriptEvent& event = script.events[i];
+        const std::string where = source + ": events[" + std::to_string(i) + "]";
+        switch (event.kind) {
+        case ScriptEvent::Kind::Stroke:
+            try {
+                done.stamps += session.applyStroke(event.stroke).stamps;
+            } catch (const InputError& e) {
+                throw InputError(where + " ('" + brushToolName(event.stroke.brush.tool) + "' stroke): " + e.what(), e.remedy());
+            }
+            ++done.strokes;
+            break;
+        case ScriptEvent::Kind::Undo:
+            if (!session.undo()) throw InputError(where + ": undo with nothing to undo");
+            ++done.undos;
+            break;
+        case ScriptEvent::Kind::Redo:
+            if (!session.redo()) throw InputError(where + ": redo with nothing to redo");
+            ++done.redos;
+            break;
+        }
+        report(progress, double(i + 1) / double(script.events.size()));
+    }
+    return done;
+}
+
+} // namespace sculpt

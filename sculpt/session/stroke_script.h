@@ -1,0 +1,52 @@
+#pragma once
+/// @file stroke_script.h
+/// @brief Stroke scripts: a sculpting session recorded as JSON, replayed bit for bit.
+///
+///     {"format": "sculpt-strokes", "version": 1,
+///      "events": [
+///        {"tool": "add", "radius": 4, "strength": 1, "falloff": "smooth", "spacing": 0.25,
+///         "symmetry": ["x"], "samples": [{"position": [1, 2, 3], "pressure": 0.8,
+///                                        "view": [0, 0, -1]}, [4, 5, 6]]},
+///        {"action": "undo"}, {"action": "redo"}]}
+/// A sample is an object or just its position. Schema: data/strokes.schema.json; format: README.
+
+#include "sculpt/session/sculpt_session.h"
+
+#include "core/base/progress.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sculpt {
+
+struct ScriptEvent {
+    enum class Kind { Stroke, Undo, Redo };
+    Kind kind = Kind::Stroke;
+    Stroke stroke;  ///< Kind::Stroke only
+};
+
+struct StrokeScript {
+    std::vector<ScriptEvent> events;
+};
+
+/// Parses a script; `source` names it in messages and `baseDir` resolves relative scene paths of
+/// primitive strokes.
+/// @throws InputError naming the source, the event ("events[3] ('add' stroke)") and the field.
+StrokeScript parseStrokeScript(const std::string& text, const std::string& source,
+                               const std::filesystem::path& baseDir);
+/// Reads and parses a script file. @throws InputError as parseStrokeScript, or if unreadable.
+StrokeScript readStrokeScript(const std::filesystem::path& path);
+
+/// What a replay did.
+struct ReplayReport {
+    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0;
+};
+
+/// Applies the events in order, reporting progress per event.
+/// @throws InputError naming the event (brush larger than the model, undo with nothing to undo),
+///         with the session left as after the previous event.
+ReplayReport replayScript(SculptSession& session, const StrokeScript& script, const std::string& source,
+                          const Progress& progress = {});
+
+} // namespace sculpt

@@ -1,0 +1,69 @@
+// Exported meshes, re-read by VTK: closed, 2-manifold, enclosing the grid's volume.
+
+#include "tests/support/mesh_checks.h"
+#include "tests/support/reference_mesher.h"
+#include "tests/support/temp_dir.h"
+
+#include "core/primitives/analytic_shapes.h"
+#include "core/base/errors.h"
+#include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/io/mesh_file.h"
+
+#include <gtest/gtest.h>
+
+namespace sculpt {
+namespace {
+
+using test::TempDir;
+
+class MeshFileFormats : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MeshFileFormats, ExportIsClosedAndKeepsVolume)
+{
+    TempDir dir;
+    const FieldImage torus = makeTorus(10.0, 4.0, 0.5);
+    const TriangleMesh mesh = meshLevelSet(torus);
+    const auto path = dir / ("torus" + GetParam());
+    writeMesh(mesh, path);
+
+    const test::VtkMeshReport vtk = test::vtkMeshReport(path);
+    EXPECT_EQ(vtk.triangles, std::int64_t(mesh.triangles.size()));
+    EXPECT_EQ(vtk.boundaryEdges, 0);
+    EXPECT_EQ(vtk.nonManifoldEdges, 0);
+    const double gridVolume = measureField(torus).volume;
+    EXPECT_NEAR(vtk.volume, gridVolume, 0.01 * gridVolume);
+    EXPECT_EQ(dir.entries().size(), 1u);  // no temporary left
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFormats, MeshFileFormats, ::testing::Values(".ply", ".obj", ".stl"),
+                         [](const auto& info) { return info.param.substr(1); });
+
+TEST(MeshFile, ReferenceMeshIsOrientedOutwards)
+{
+    const TriangleMesh mesh = test::meshWithVolumeToMesh(makeSphere(10.0, 1.0));
+    const test::MeshTopology topology = test::meshTopology(mesh);
+    EXPECT_TRUE(topology.closedManifold());
+    EXPECT_EQ(topology.eulerCharacteristic(), 2);
+    EXPECT_GT(test::meshVolume(mesh), 0.0);
+}
+
+TEST(MeshFile, FormatFollowsExtension)
+{
+    EXPECT_EQ(meshFormatOf("a.PLY"), MeshFormat::Ply);
+    EXPECT_EQ(meshFormatOf("dir/a.obj"), MeshFormat::Obj);
+    EXPECT_EQ(meshFormatOf("a.stl"), MeshFormat::Stl);
+    EXPECT_THROW(meshFormatOf("a.vtk"), InputError);
+    EXPECT_THROW(meshFormatOf("noextension"), InputError);
+}
+
+TEST(MeshFile, MissingDirectoryIsAnInputError)
+{
+    TempDir dir;
+    const TriangleMesh mesh = meshLevelSet(makeSphere(5.0, 1.0));
+    EXPECT_THROW(writeMesh(mesh, dir / "missing" / "a.ply"), InputError);
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+} // namespace
+} // namespace sculpt

@@ -1,0 +1,101 @@
+// Importing meshes (core/mesh_import.h): closed meshes keep their volume, open ones are reported,
+// bad files are refused.
+
+#include "tests/support/mesh_checks.h"
+#include "tests/support/temp_dir.h"
+
+#include "core/base/errors.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/io/mesh_file.h"
+#include "core/io/mesh_import.h"
+
+#include <vtkNew.h>
+#include <vtkOBJWriter.h>
+#include <vtkPLYWriter.h>
+#include <vtkSTLWriter.h>
+#include <vtkSphereSource.h>
+#include <vtkTriangleFilter.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+namespace sculpt {
+namespace {
+
+TEST(MeshImport, ClosedMeshesInEveryFormatKeepTheirVolume)
+{
+    test::TempDir dir;
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetRadius(10.0);
+    sphere->SetCenter(3.0, -2.0, 5.0);
+    sphere->SetThetaResolution(64);
+    sphere->SetPhiResolution(64);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkSTLWriter> stl;
+    stl->SetInputConnection(triangles->GetOutputPort());
+    stl->SetFileName((dir / "ball.stl").c_str());
+    stl->Write();
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputConnection(triangles->GetOutputPort());
+    ply->SetFileName((dir / "ball.ply").c_str());
+    ply->Write();
+    vtkNew<vtkOBJWriter> obj;
+    obj->SetInputConnection(triangles->GetOutputPort());
+    obj->SetFileName((dir / "ball.obj").c_str());
+    obj->Write();
+    {  // OFF by hand: a cube of side 8 with quad faces
+        std::ofstream off(dir / "cube.off");
+        off << "OFF\n8 6 0\n";
+        for (int i = 0; i < 8; ++i) off << (i & 1 ? 4 : -4) << " " << (i & 2 ? 4 : -4) << " " << (i & 4 ? 4 : -4) << "\n";
+        off << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+    }
+    for (const char* name : {"ball.stl", "ball.ply", "ball.obj", "cube.off"}) {
+        const TriangleMesh mesh = readMesh(dir / name);
+        const MeshImportReport report = inspectMesh(mesh);
+        EXPECT_TRUE(report.closed()) << name << ": " << report.boundaryEdges << " open edges";
+        const double own = std::abs(test::meshVolume(mesh));
+        const FieldImage field = meshToField(mesh, 0.25);
+        EXPECT_NEAR(test::meshVolume(meshLevelSet(field)), own, 0.01 * own) << name;
+    }
+}
+
+TEST(MeshImport, OpenMeshesAreReportedAndStillImported)
+{
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetRadius(5.0);
+    sphere->Update();
+    test::TempDir dir;
+    vtkNew<vtkSTLWriter> stl;
+    stl->SetInputConnection(sphere->GetOutputPort());
+    stl->SetFileName((dir / "ball.stl").c_str());
+    stl->Write();
+    TriangleMesh mesh = readMesh(dir / "ball.stl");
+    mesh.triangles.resize(mesh.triangles.size() - 1);  // a hole
+    const MeshImportReport report = inspectMesh(mesh);
+    EXPECT_FALSE(report.closed());
+    EXPECT_EQ(report.boundaryEdges, 3u);
+    EXPECT_GT(meshToField(mesh, 0.25).grid().activeVoxelCount(), 0u);
+}
+
+TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
+{
+    test::TempDir dir;
+    std::ofstream(dir / "huge.off") << "OFF\n100000000 100000000 0\n0 0 0\n";
+    std::ofstream(dir / "cut.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n";
+    std::ofstream(dir / "index.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
+    std::ofstream(dir / "junk.stl") << "solid junk\nthis is not a facet\n";
+    std::ofstream(dir / "empty.obj") << "# nothing\n";
+    for (const char* name : {"huge.off", "cut.off", "index.off", "junk.stl", "empty.obj", "missing.ply", "ball.xyz"}) {
+        try {
+            readMesh(dir / name);
+            ADD_FAILURE() << "no error for " << name;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
+} // namespace
+} // namespace sculpt

@@ -1,0 +1,133 @@
+// Level-set motion against analytic laws: curvature flow, offsets, volume control, locality.
+
+#include "tests/support/surface_stats.h"
+
+#include "core/primitives/analytic_shapes.h"
+#include "core/base/errors.h"
+#include "core/mesh/field_measures.h"
+#include "core/field/grid_checksum.h"
+#include "core/motion/level_set_evolution.h"
+#include "core/motion/surface_flows.h"
+#include "core/local/sphere_stamp.h"
+
+#include <openvdb/tools/LevelSetMeasure.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sculpt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double volumeRadius(const FieldImage& field)
+{
+    return std::cbrt(3.0 * openvdb::tools::levelSetVolume(field.grid()) / (4.0 * kPi));
+}
+
+TEST(LevelSetEvolution, MeanCurvatureFlowShrinksSphereAsR2Minus4BetaT)
+{
+    const double r0 = 20.0, beta = 1.0;
+    FieldImage field = makeSphere(r0, 1.0);
+    MotionTerms terms;
+    terms.smooth = SmoothTerm{beta, std::nullopt};
+    LevelSetEvolution evolution(field, terms);
+    const double end = (r0 * r0 - 0.25 * r0 * r0) / (4.0 * beta);  // until r = r0 / 2
+    for (double t = end / 5.0; t <= end + 1e-9; t += end / 5.0) {
+        evolution.advance(t - evolution.time());
+        const double expected = std::sqrt(r0 * r0 - 4.0 * beta * evolution.time());
+        EXPECT_NEAR(volumeRadius(field), expected, 0.02 * expected) << "t = " << evolution.time();
+    }
+    EXPECT_NEAR(volumeRadius(field), r0 / 2.0, 0.02 * r0 / 2.0);
+}
+
+class OffsetSphere : public ::testing::TestWithParam<double> {};
+
+TEST_P(OffsetSphere, ChangesRadiusByTheDistance)
+{
+    const double r = 20.0, h = 1.0, d = GetParam();
+    FieldImage field = makeSphere(r, h);
+    offset(field, d);
+    const test::RadiusStats radius = test::surfaceRadius(field);
+    EXPECT_NEAR(radius.mean, r + d, 0.1 * h);
+    EXPECT_LT(radius.max - radius.min, 0.3 * h);  // still round
+}
+
+INSTANTIATE_TEST_SUITE_P(Distances, OffsetSphere, ::testing::Values(3.7, -4.2, 9.0),
+                         [](const auto& info) { return info.param > 0 ? "grow" + std::to_string(int(info.param)) : "shrink" + std::to_string(int(-info.param)); });
+
+/// A sphere with six blobs stuck on it, redistanced as a sculpting session leaves it.
+FieldImage bumpySphere()
+{
+    FieldImage field = makeSphere(16.0, 1.0);
+    const openvdb::Vec3d directions[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0.6, 0.6, -0.5}};
+    for (auto d : directions) {
+        d.normalize();
+        stampSphere(field, d * 17.0, 5.0, CsgMode::Add);
+    }
+    LevelSetEvolution(field, MotionTerms{}).redistance();
+    return field;
+}
+
+TEST(LevelSetOperations, SmoothingLosesVolumeWithoutControl)
+{
+    FieldImage field = bumpySphere();
+    const double v0 = openvdb::tools::levelSetVolume(field.grid());
+    const double k0 = test::curvatureVariance(field);
+    smooth(field, 50, false);
+    EXPECT_LT(openvdb::tools::levelSetVolume(field.grid()), 0.98 * v0);
+    EXPECT_LT(test::curvatureVariance(field), 0.8 * k0);
+}
+
+TEST(LevelSetOperations, SmoothingKeepsVolumeWithControl)
+{
+    FieldImage field = bumpySphere();
+    const double v0 = openvdb::tools::levelSetVolume(field.grid());
+    const double k0 = test::curvatureVariance(field);
+    smooth(field, 50, true);
+    EXPECT_NEAR(openvdb::tools::levelSetVolume(field.grid()), v0, 0.005 * v0);
+    EXPECT_LT(test::curvatureVariance(field), 0.8 * k0);
+}
+
+TEST(LevelSetEvolution, RegionStepLeavesTheRestBitIdentical)
+{
+    FieldImage field = bumpySphere();
+    const FieldImage before(field.grid().deepCopy());
+    const MotionRegion region{{17.0, 0.0, 0.0}, 7.0};
+    MotionTerms terms;
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
+    LevelSetEvolution evolution(field, terms, {}, region);
+    const double k0 = test::curvatureVariance(field, std::make_pair(region.centreWorld, region.radiusWorld));
+    field.takeDirtyRegion();
+    for (int i = 0; i < 40; ++i) evolution.step();
+    EXPECT_LT(test::curvatureVariance(field, std::make_pair(region.centreWorld, region.radiusWorld)), k0);
+
+    // Only voxels within the region plus the band (3) and a voxel may differ.
+    const DirtyRegion dirty = field.takeDirtyRegion();
+    EXPECT_FALSE(dirty.empty());
+    auto acc = before.grid().getConstAccessor();
+    std::size_t changedFar = 0;
+    for (auto it = field.grid().cbeginValueAll(); it; ++it) {
+        if (!it.isVoxelValue()) continue;
+        const double d = (it.getCoord().asVec3d() - region.centreWorld).length();
+        if (d > region.radiusWorld + 4.0 + std::sqrt(3.0) && *it != acc.getValue(it.getCoord())) ++changedFar;
+    }
+    EXPECT_EQ(changedFar, 0u);
+    for (const auto& leaf : dirty.leafOrigins()) {
+        EXPECT_LT((leaf.asVec3d() + openvdb::Vec3d(3.5) - region.centreWorld).length(), region.radiusWorld + 4.0 + 8.0);
+    }
+}
+
+TEST(LevelSetEvolution, RejectsBadCoefficients)
+{
+    FieldImage field = makeSphere(8.0, 1.0);
+    MotionTerms terms;
+    terms.smooth = SmoothTerm{-1.0, std::nullopt};
+    EXPECT_THROW(LevelSetEvolution(field, terms), InputError);
+    EXPECT_THROW(smooth(field, -3), InputError);
+    EXPECT_THROW(offset(field, std::nan("")), InputError);
+}
+
+} // namespace
+} // namespace sculpt

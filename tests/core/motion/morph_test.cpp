@@ -1,0 +1,105 @@
+// Morphing between shapes: convergence, topology change, volume line, refusal of disjoint shapes.
+
+#include "core/primitives/analytic_shapes.h"
+#include "core/base/errors.h"
+#include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/motion/morph.h"
+
+#include "tests/support/mesh_checks.h"
+
+#include <gtest/gtest.h>
+
+namespace sculpt {
+namespace {
+
+struct Recorded {
+    std::vector<double> times, volumes;
+    int lastEuler = -99;
+};
+
+MorphSummary run(const FieldImage& source, const FieldImage& target, MorphOptions options, Recorded& rec)
+{
+    return morph(source, target, options, [&](const MorphFrame& frame) {
+        rec.times.push_back(frame.time);
+        rec.volumes.push_back(frame.volume);
+        if (frame.index + 1 == options.frames) {
+            rec.lastEuler = int(test::meshTopology(meshLevelSet(frame.field)).eulerCharacteristic());
+        }
+    });
+}
+
+void expectConverged(const MorphSummary& s, const FieldImage& target)
+{
+    EXPECT_TRUE(s.converged);
+    EXPECT_LT(s.finalDistanceWorld, 0.5 * target.voxelSize());
+}
+
+TEST(Morph, SphereBecomesBox)
+{
+    const FieldImage sphere = makeSphere(12.0, 1.0), box = makeBox(9.0, 1.0);
+    MorphOptions options;
+    options.frames = 5;
+    Recorded rec;
+    const MorphSummary s = run(sphere, box, options, rec);
+    expectConverged(s, box);
+    EXPECT_EQ(rec.lastEuler, 2);
+    ASSERT_EQ(rec.times.size(), 5u);
+    for (size_t i = 2; i + 1 < rec.times.size(); ++i) {  // evenly spaced in morph time
+        EXPECT_NEAR(rec.times[i] - rec.times[i - 1], rec.times[1] - rec.times[0], 1e-9);
+    }
+}
+
+TEST(Morph, BoxBecomesTorusOpeningAHole)
+{
+    const FieldImage box = makeBox(12.0, 1.0), torus = makeTorus(12.0, 5.0, 1.0);
+    MorphOptions options;
+    options.frames = 4;
+    Recorded rec;
+    const MorphSummary s = run(box, torus, options, rec);
+    expectConverged(s, torus);
+    EXPECT_EQ(rec.lastEuler, 0);
+}
+
+TEST(Morph, KeepVolumeFollowsTheStraightLine)
+{
+    const FieldImage sphere = makeSphere(16.0, 1.0), box = makeBox(11.0, 1.0);
+    MorphOptions options;
+    options.frames = 6;
+    options.keepVolume = true;
+    Recorded rec;
+    const MorphSummary s = run(sphere, box, options, rec);
+    expectConverged(s, box);
+    const double v0 = rec.volumes.front(), v1 = measureField(box).volume;
+    for (size_t i = 0; i < rec.volumes.size(); ++i) {
+        const double expected = v0 + (v1 - v0) * double(i) / double(rec.volumes.size() - 1);
+        // Volume control holds the field's volume; the mesh (what is measured) also loses the
+        // chamfers of the box's emerging edges, at 22 voxels across about 1.5%.
+        EXPECT_NEAR(rec.volumes[i], expected, 0.015 * expected) << "frame " << i;
+    }
+}
+
+TEST(Morph, DisjointShapesNeedAlign)
+{
+    const FieldImage source = makeSphere(6.0, 1.0);
+    auto shifted = makeSphere(6.0, 1.0).grid().deepCopy();
+    shifted->transform().postTranslate(openvdb::Vec3d(40.0, 0.0, 0.0));
+    const FieldImage target(shifted);
+    MorphOptions options;
+    options.frames = 2;
+    Recorded rec;
+    try {
+        run(source, target, options, rec);
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("translate the source onto the target"), std::string::npos) << e.what();
+        EXPECT_EQ(e.remedy(), Remedy::AlignShapes);
+    }
+    options.align = true;
+    const MorphSummary s = run(source, target, options, rec);
+    EXPECT_NEAR(s.translation.x(), 40.0, 0.5);
+    expectConverged(s, target);
+}
+
+} // namespace
+} // namespace sculpt

@@ -1,0 +1,404 @@
+// Importing scans (core/scan_volume.h, core/scan_to_level_set.h): every format, world placement,
+// agreement with VTK on a real MRI, and refusal of bad files.
+
+#include "tests/support/dicom_writer.h"
+#include "tests/support/mesh_checks.h"
+#include "tests/support/temp_dir.h"
+
+#include "core/base/errors.h"
+#include "core/mesh/field_measures.h"
+#include "core/field/grid_checksum.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/scan/largest_component.h"
+#include "core/scan/scan_to_level_set.h"
+#include "core/scan/scan_volume.h"
+
+#include <vtkFlyingEdges3D.h>
+#include <vtkImageData.h>
+#include <vtkMassProperties.h>
+#include <vtkMatrix4x4.h>
+#include <vtkMetaImageWriter.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkNIFTIImageWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkNew.h>
+#include <vtkTriangleFilter.h>
+
+#include <gtest/gtest.h>
+
+#include <openvdb/tools/FastSweeping.h>
+
+#include <tbb/global_control.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+
+namespace sculpt {
+namespace {
+
+const char* kMri = "/usr/share/mricron/templates/ch2bet.nii.gz";
+
+/// A shape given by its signed distance (world units, negative inside) sampled 0 outside .. 200
+/// inside with a linear ramp across the surface (100 on it), on a lattice with the given spacing
+/// and origin.
+vtkSmartPointer<vtkImageData> sampledImage(const openvdb::Coord& dims, const openvdb::Vec3d& spacing,
+                                           const openvdb::Vec3d& origin, const std::function<double(const openvdb::Vec3d&)>& sdf)
+{
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(dims.x(), dims.y(), dims.z());
+    image->SetSpacing(spacing.x(), spacing.y(), spacing.z());
+    image->SetOrigin(origin.x(), origin.y(), origin.z());
+    image->AllocateScalars(VTK_SHORT, 1);
+    auto* p = static_cast<short*>(image->GetScalarPointer());
+    for (int k = 0; k < dims.z(); ++k) {
+        for (int j = 0; j < dims.y(); ++j) {
+            for (int i = 0; i < dims.x(); ++i) {
+                const double d = sdf(origin + openvdb::Vec3d(i * spacing.x(), j * spacing.y(), k * spacing.z()));
+                *p++ = short(std::clamp(100.0 - 40.0 * d, 0.0, 200.0));
+            }
+        }
+    }
+    return image;
+}
+
+/// Radius and centre of the imported surface, from the mesh's vertices.
+std::pair<double, openvdb::Vec3d> sphereOf(const FieldImage& field)
+{
+    const TriangleMesh mesh = meshLevelSet(field);
+    openvdb::Vec3d centre(0.0);
+    for (const auto& p : mesh.positions) centre += openvdb::Vec3d(p[0], p[1], p[2]) / double(mesh.positions.size());
+    double radius = 0.0;
+    for (const auto& p : mesh.positions) radius += (openvdb::Vec3d(p[0], p[1], p[2]) - centre).length() / double(mesh.positions.size());
+    return {radius, centre};
+}
+
+struct SyntheticBall {
+    openvdb::Coord dims{40, 40, 22};
+    openvdb::Vec3d spacing{1.0, 1.0, 2.0};
+    openvdb::Vec3d origin{-13.0, 7.0, 31.0};
+    openvdb::Vec3d centre = origin + openvdb::Vec3d(19.5, 21.0, 20.0);
+    double radius = 12.0;
+    vtkSmartPointer<vtkImageData> image() const
+    {
+        return sampledImage(dims, spacing, origin, [&](const openvdb::Vec3d& p) { return (p - centre).length() - radius; });
+    }
+};
+
+/// MetaImage, uncompressed; a .mhd header keeps its samples in a .raw beside it (read raw too).
+void writeMetaImage(vtkImageData* image, const std::filesystem::path& path)
+{
+    vtkNew<vtkMetaImageWriter> writer;
+    writer->SetInputData(image);
+    writer->SetFileName(path.c_str());
+    if (path.extension() == ".mhd") writer->SetRAWFileName(path.parent_path().append(path.stem().string() + ".raw").c_str());
+    writer->SetCompression(false);
+    writer->Write();
+}
+
+void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::string& format)
+{
+    const FieldImage field = scanToLevelSet(scan, 100.0, nativeVoxelSize(scan));
+    EXPECT_DOUBLE_EQ(field.voxelSize(), 1.0) << format;
+    const auto [radius, centre] = sphereOf(field);
+    EXPECT_NEAR(radius, ball.radius, 0.5) << format;
+    EXPECT_NEAR((centre - ball.centre).length(), 0.0, 0.5) << format << " centre " << centre << " expected " << ball.centre;
+}
+
+TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    const auto image = ball.image();
+    {
+        vtkNew<vtkNIFTIImageWriter> writer;
+        writer->SetInputData(image);
+        writer->SetFileName((dir / "ball.nii.gz").c_str());
+        // NIfTI keeps placement in its qform: put the origin there, as scanners do.
+        vtkNew<vtkMatrix4x4> qform;
+        for (int a = 0; a < 3; ++a) qform->SetElement(a, 3, ball.origin[a]);
+        writer->SetQFormMatrix(qform);
+        auto shifted = vtkSmartPointer<vtkImageData>::New();
+        shifted->ShallowCopy(image);
+        shifted->SetOrigin(0.0, 0.0, 0.0);
+        writer->SetInputData(shifted);
+        writer->Write();
+        expectBallAt(readScan(dir / "ball.nii.gz"), ball, "NIfTI");
+    }
+    {
+        writeMetaImage(image, dir / "ball.mhd");
+        expectBallAt(readScan(dir / "ball.mhd"), ball, "MetaImage");
+    }
+    {
+        std::ofstream header(dir / "ball.nhdr");
+        header << "NRRD0004\ntype: short\ndimension: 3\nsizes: " << ball.dims.x() << " " << ball.dims.y() << " "
+               << ball.dims.z() << "\nspacings: 1 1 2\nencoding: raw\nendian: little\nspace origin: (" << ball.origin.x()
+               << "," << ball.origin.y() << "," << ball.origin.z() << ")\ndata file: ball.raw\n";
+        header.close();
+        const ScanVolume nrrd = readScan(dir / "ball.nhdr");
+        EXPECT_EQ(nrrd.dims(), ball.dims);
+        const FieldImage field = scanToLevelSet(nrrd, 100.0, 1.0);
+        EXPECT_NEAR(sphereOf(field).first, ball.radius, 0.5) << "NRRD";
+    }
+    {
+        RawLayout layout;
+        layout.dims = ball.dims;
+        layout.type = "int16";
+        layout.spacing = ball.spacing;
+        layout.origin = ball.origin;
+        expectBallAt(readRawScan(dir / "ball.raw", layout), ball, "raw");
+    }
+}
+
+/// The largest and the mean difference between a band's values and the distance to the ball.
+std::pair<double, double> distanceError(const openvdb::FloatGrid& grid, const SyntheticBall& ball)
+{
+    double worst = 0.0, sum = 0.0;
+    for (auto it = grid.cbeginValueOn(); it; ++it) {
+        const double exact = (grid.transform().indexToWorld(it.getCoord()) - ball.centre).length() - ball.radius;
+        worst = std::max(worst, std::abs(*it - exact));
+        sum += std::abs(*it - exact);
+    }
+    return {worst, sum / double(grid.activeVoxelCount())};
+}
+
+TEST(ScanImport, BandHoldsTheDistanceToTheSurfaceAcrossTiles)
+{
+    // The ball spans several of the converter's tiles (32 x 32 x 16 voxels) in every axis.
+    test::TempDir dir;
+    const SyntheticBall ball;
+    writeMetaImage(ball.image(), dir / "ball.mha");
+    const ScanVolume scan = readScan(dir / "ball.mha");
+    const FieldImage field = scanToLevelSet(scan, 100.0, 1.0);
+    const auto& grid = field.grid();
+    const auto [worst, mean] = distanceError(grid, ball);
+    // OpenVDB's fast sweeping, run on the same band, as the reference for "as exact as".
+    const auto [sweepWorst, sweepMean] = distanceError(*openvdb::tools::sdfToSdf(grid), ball);
+    EXPECT_LT(worst, 0.25) << "voxels";
+    EXPECT_LT(mean, 0.1) << "voxels";
+    EXPECT_LE(worst, sweepWorst);  // measured: 0.16 vs 0.38 voxel
+    EXPECT_LE(mean, sweepMean);    // 0.060 vs 0.088
+    const size_t count = grid.activeVoxelCount();
+    EXPECT_DOUBLE_EQ(grid.background(), 3.0);
+    EXPECT_GT(count, size_t(6 * 4 * M_PI * ball.radius * ball.radius * 0.9)) << "a band 3 voxels deep each side";
+
+    // Tiles are converted in parallel but written in order: one thread gives the same bits.
+    tbb::global_control oneThread(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(gridChecksum(scanToLevelSet(scan, 100.0, 1.0).grid()), gridChecksum(grid));
+}
+
+TEST(ScanImport, OtsuSplitsTheTwoMaterials)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    writeMetaImage(ball.image(), dir / "ball.mha");
+    const double iso = readScan(dir / "ball.mha").otsuThreshold();
+    EXPECT_GT(iso, 20.0);
+    EXPECT_LT(iso, 180.0);
+}
+
+TEST(ScanImport, CropSmoothAndLargestComponent)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    writeMetaImage(ball.image(), dir / "ball.mha");
+    const ScanVolume scan = readScan(dir / "ball.mha");
+    // The lower half in z (samples 0..10 of 22): a capped half ball, still placed in the world.
+    const FieldImage half = scanToLevelSet(scan.cropped(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(39, 39, 10))), 100.0, 1.0);
+    const openvdb::CoordBBox box = half.grid().evalActiveVoxelBoundingBox();
+    EXPECT_LT(half.grid().transform().indexToWorld(box.max()).z(), ball.origin.z() + 2 * 10 + 4);
+    const double halfBall = 2.0 / 3.0 * M_PI * std::pow(ball.radius, 3);
+    EXPECT_NEAR(test::meshVolume(meshLevelSet(half)), halfBall, 0.06 * halfBall);
+    // Smoothing keeps a ball a ball.
+    EXPECT_NEAR(sphereOf(scanToLevelSet(scan.smoothed(1.0), 100.0, 1.0)).first, ball.radius, 0.6);
+    EXPECT_THROW(scan.cropped(openvdb::CoordBBox(openvdb::Coord(100), openvdb::Coord(120))), InputError);
+}
+
+TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
+{
+    // A hollow ball (radius 14, cavity 8, the wall 6 voxels: wider than the band), a ball floating
+    // in the cavity (3), and one beside it (5) within the big ball's band (a 3-voxel gap).
+    const openvdb::Vec3d centre(24.0, 24.0, 24.0), beside(46.0, 24.0, 24.0);
+    const auto sdf = [&](const openvdb::Vec3d& p) {
+        const double r = (p - centre).length();
+        return std::min({std::max(r - 14.0, 8.0 - r), r - 3.0, (p - beside).length() - 5.0});
+    };
+    test::TempDir dir;
+    writeMetaImage(sampledImage(openvdb::Coord(56, 48, 48), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), sdf), dir / "pieces.mha");
+    FieldImage field = scanToLevelSet(readScan(dir / "pieces.mha"), 100.0, 1.0);
+    EXPECT_EQ(test::meshTopology(meshLevelSet(field)).eulerCharacteristic(), 8) << "four sphere-like surfaces";
+
+    const LargestComponentReport report = keepLargestComponent(field);
+    EXPECT_EQ(report.islandsDropped, 1u);
+    EXPECT_EQ(report.cavitiesFilled, 1u) << "with the island in it";
+    const TriangleMesh mesh = meshLevelSet(field);
+    EXPECT_TRUE(test::meshTopology(mesh).closedManifold());
+    EXPECT_EQ(test::meshTopology(mesh).eulerCharacteristic(), 2) << "one closed shell";
+    const double ball = 4.0 / 3.0 * M_PI * std::pow(14.0, 3);
+    EXPECT_NEAR(test::meshVolume(mesh), ball, 0.02 * ball);
+    const auto& values = field.grid().tree();
+    EXPECT_GT(values.getValue(openvdb::Coord(46, 24, 24)), 0.0f) << "the island beside is outside";
+    EXPECT_LT(values.getValue(openvdb::Coord(24, 24, 24)), 0.0f) << "the cavity and its island are inside";
+    EXPECT_LT(values.getValue(openvdb::Coord(30, 24, 24)), 0.0f);
+    const LargestComponentReport again = keepLargestComponent(field);
+    EXPECT_EQ(again.islandsDropped + again.cavitiesFilled, 0u) << "one piece left";
+}
+
+TEST(ScanImport, CoarseVoxelSizeAveragesNoiseInsteadOfAliasingIt)
+{
+    // A ball of radius 12 sampled every 0.5, its surface jittered by up to 1.5 (3 samples) at
+    // every sample, imported at voxel size 2.
+    const openvdb::Vec3d centre(16.0, 16.0, 16.0);
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> noise(-1.5, 1.5);
+    const auto sdf = [&](const openvdb::Vec3d& p) { return (p - centre).length() - 12.0 + noise(random); };
+    test::TempDir dir;
+    writeMetaImage(sampledImage(openvdb::Coord(65), openvdb::Vec3d(0.5), openvdb::Vec3d(0.0), sdf), dir / "noisy.mha");
+    const ScanVolume scan = readScan(dir / "noisy.mha");
+    const auto filtered = scan.antiAliased(2.0);
+    ASSERT_TRUE(filtered.has_value());
+    EXPECT_FALSE(scan.antiAliased(0.5).has_value()) << "nothing to filter at the native size";
+    const double sphereArea = 4.0 * M_PI * 12.0 * 12.0;
+    const double aliased = test::meshArea(meshLevelSet(scanToLevelSet(scan, 100.0, 2.0))) / sphereArea - 1.0;
+    const double smooth = test::meshArea(meshLevelSet(scanToLevelSet(*filtered, 100.0, 2.0))) / sphereArea - 1.0;
+    EXPECT_GT(aliased, 0.1) << "point samples of the noise: a rough surface";  // measured +25%
+    EXPECT_NEAR(smooth, 0.0, 0.05) << "filtered: the ball";                       // measured -3.0%
+    EXPECT_NEAR(sphereOf(scanToLevelSet(*filtered, 100.0, 2.0)).first, 12.0, 1.0) << "within half a voxel";
+}
+
+TEST(ScanImport, BadScansAreRefusedNamingTheFile)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    vtkNew<vtkNIFTIImageWriter> writer;
+    writer->SetInputData(ball.image());
+    writer->SetFileName((dir / "ball.nii").c_str());
+    writer->Write();
+    const auto expectError = [](const std::function<void()>& f, const std::string& text) {
+        try {
+            f();
+            ADD_FAILURE() << "no error, expected " << text;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+        }
+    };
+    // Truncated: half the samples missing.
+    std::filesystem::copy_file(dir / "ball.nii", dir / "cut.nii");
+    std::filesystem::resize_file(dir / "cut.nii", std::filesystem::file_size(dir / "ball.nii") / 2);
+    expectError([&] { readScan(dir / "cut.nii"); }, "cut.nii");
+    // Garbage.
+    std::ofstream(dir / "junk.nii") << "this is not a NIfTI file at all, not even close to one";
+    expectError([&] { readScan(dir / "junk.nii"); }, "junk.nii");
+    // A header claiming absurd dimensions: refused before allocating.
+    std::ofstream(dir / "huge.mhd") << "ObjectType = Image\nNDims = 3\nDimSize = 100000 100000 100000\n"
+                                       "ElementType = MET_SHORT\nElementDataFile = ball.raw\n";
+    expectError([&] { readScan(dir / "huge.mhd"); }, "huge.mhd");
+    RawLayout layout;
+    layout.dims = openvdb::Coord(400, 400, 400);
+    std::ofstream(dir / "small.raw") << "tiny";
+    expectError([&] { readRawScan(dir / "small.raw", layout); }, "truncated");
+    expectError([&] { readScan(dir / "ball.xyz"); }, "ball.xyz");
+    const ScanVolume scan = readScan(dir / "ball.nii");
+    expectError([&] { scanToLevelSet(scan, 500.0, 1.0); }, "outside the samples' range");
+}
+
+/// A DICOM series of the synthetic ball: axial slices 2 apart, written in shuffled file order,
+/// with patient orientation (x along rows, y down columns).
+std::vector<std::filesystem::path> writeBallSeries(const std::filesystem::path& dir, const SyntheticBall& ball,
+                                                   const std::string& seriesUid = "1.2.3")
+{
+    std::vector<std::filesystem::path> files;
+    for (int k = 0; k < ball.dims.z(); ++k) {
+        test::DicomSliceSpec slice;
+        slice.rows = ball.dims.y();
+        slice.columns = ball.dims.x();
+        slice.rowSpacing = ball.spacing.y();
+        slice.columnSpacing = ball.spacing.x();
+        slice.sliceThickness = ball.spacing.z();
+        slice.position = ball.origin + openvdb::Vec3d(0, 0, k * ball.spacing.z());
+        slice.instanceNumber = k + 1;
+        slice.seriesUid = seriesUid;
+        for (int r = 0; r < slice.rows; ++r) {
+            for (int c = 0; c < slice.columns; ++c) {
+                const openvdb::Vec3d world = slice.position + openvdb::Vec3d(c * ball.spacing.x(), r * ball.spacing.y(), 0);
+                const double d = (world - ball.centre).length() - ball.radius;
+                slice.pixels.push_back(std::uint16_t(std::clamp(100.0 - 40.0 * d, 0.0, 200.0)));
+            }
+        }
+        // File names out of slice order: the reader must sort by position, not by name.
+        files.push_back(dir / ("im" + std::to_string((k * 7) % ball.dims.z() + 100) + ".dcm"));
+        test::writeDicomSlice(files.back(), slice);
+    }
+    return files;
+}
+
+TEST(ScanImport, DicomSeriesKeepsSliceOrderSpacingAndPosition)
+{
+    test::TempDir dir;
+    SyntheticBall ball;
+    ball.centre = ball.origin + openvdb::Vec3d(19.5, 15.0, 26.0);  // off-centre in y and z
+    writeBallSeries(dir.path(), ball);
+    const ScanVolume series = readScan(dir.path());
+    EXPECT_EQ(series.dims(), ball.dims);
+    expectBallAt(series, ball, "DICOM");
+}
+
+TEST(ScanImport, DicomSeriesWithGapsOrMixedSeriesIsRefused)
+{
+    test::TempDir gap, mixed;
+    const SyntheticBall ball;
+    const auto files = writeBallSeries(gap.path(), ball);
+    std::filesystem::remove(files[5]);  // a slice in the middle
+    try {
+        readScan(gap.path());
+        ADD_FAILURE() << "no error for a series with a missing slice";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("missing slices"), std::string::npos) << e.what();
+    }
+    writeBallSeries(mixed.path(), ball, "1.2.3");
+    SyntheticBall other = ball;
+    other.origin = ball.origin + openvdb::Vec3d(0, 0, 1);  // a second series interleaved
+    for (int k = 0; k < 3; ++k) {
+        test::DicomSliceSpec slice;
+        slice.rows = 20;
+        slice.columns = 20;
+        slice.position = other.origin + openvdb::Vec3d(0, 0, 2 * k);
+        slice.pixels.assign(400, 50);
+        test::writeDicomSlice(mixed.path() / ("other" + std::to_string(k) + ".dcm"), slice);
+    }
+    try {
+        readScan(mixed.path());
+        ADD_FAILURE() << "no error for mixed series";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("mixed series"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ScanImport, RealMriAgreesWithFlyingEdgesAndMassProperties)
+{
+    if (!std::filesystem::exists(kMri)) GTEST_SKIP() << kMri << " missing: apt-get install mricron-data";
+    for (const double iso : {35.0, 60.0}) {
+    vtkNew<vtkNIFTIImageReader> reader;
+    reader->SetFileName(kMri);
+    vtkNew<vtkFlyingEdges3D> edges;
+    edges->SetInputConnection(reader->GetOutputPort());
+    edges->SetValue(0, iso);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(edges->GetOutputPort());
+    vtkNew<vtkMassProperties> mass;
+    mass->SetInputConnection(triangles->GetOutputPort());
+    mass->Update();
+
+    const ScanVolume scan = readScan(kMri);
+    const FieldImage field = scanToLevelSet(scan, iso, nativeVoxelSize(scan));
+    const TriangleMesh mesh = meshLevelSet(field);
+    EXPECT_TRUE(test::meshTopology(mesh).closedManifold());
+    EXPECT_NEAR(test::meshVolume(mesh), std::abs(mass->GetVolume()), 0.02 * std::abs(mass->GetVolume())) << iso;
+    EXPECT_NEAR(test::meshArea(mesh), mass->GetSurfaceArea(), 0.02 * mass->GetSurfaceArea()) << iso;
+    }
+}
+
+} // namespace
+} // namespace sculpt

@@ -1,0 +1,289 @@
+// End to end: the `sculpt` program on a temporary directory, as a user runs it.
+
+#include "tests/support/mesh_checks.h"
+#include "tests/support/run_sculpt.h"
+#include "tests/support/temp_dir.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace sculpt {
+namespace {
+
+using test::runSculpt;
+using test::TempDir;
+constexpr double kPi = 3.14159265358979323846;
+
+std::string fileBytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+nlohmann::json infoJson(const TempDir& dir, const std::string& file)
+{
+    const auto r = runSculpt("info --json " + file, dir.path());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+}
+
+TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
+{
+    TempDir dir;
+    auto r = runSculpt("new -o clay.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("clay.vdb"), std::string::npos);
+
+    const auto info = infoJson(dir, "clay.vdb");
+    for (const char* key : {"voxel_size", "active_voxels", "memory_bytes", "bbox_min", "bbox_max",
+                            "volume", "area", "euler_characteristic", "components"}) {
+        EXPECT_TRUE(info.contains(key)) << key;
+    }
+    const double radius = info["bbox_max"][0].get<double>();
+    EXPECT_NEAR(info["volume"].get<double>(), 4.0 / 3.0 * kPi * std::pow(radius, 3), 0.01 * std::pow(radius, 3) * 4.2);
+    EXPECT_EQ(info["euler_characteristic"], 2);
+    EXPECT_EQ(info["components"], 1);
+
+    r = runSculpt("mesh clay.vdb -o clay.stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto vtk = test::vtkMeshReport(dir / "clay.stl");
+    EXPECT_EQ(vtk.boundaryEdges, 0);
+    EXPECT_NEAR(vtk.volume, info["volume"].get<double>(), 0.01 * info["volume"].get<double>());
+}
+
+TEST(SculptCli, NewHonoursShapeAndSizes)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --shape torus --radius 12 --minor-radius 3 --voxel-size 0.25 -o t.vdb",
+                        dir.path()).exitCode, 0);
+    const auto torus = infoJson(dir, "t.vdb");
+    EXPECT_EQ(torus["euler_characteristic"], 0);
+    EXPECT_DOUBLE_EQ(torus["voxel_size"].get<double>(), 0.25);
+    EXPECT_NEAR(torus["volume"].get<double>(), 2.0 * kPi * kPi * 12.0 * 9.0, 0.01 * 2132.0);
+    EXPECT_NEAR(torus["bbox_max"][0].get<double>(), 15.0, 0.05);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 4 --voxel-size 0.25 -o b.vdb", dir.path()).exitCode, 0);
+    const auto box = infoJson(dir, "b.vdb");
+    EXPECT_NEAR(box["volume"].get<double>(), 512.0, 5.12);
+    EXPECT_EQ(box["euler_characteristic"], 2);
+}
+
+TEST(SculptCli, TextInfoNamesEveryMeasure)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("info s.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0);
+    for (const char* label : {"voxel size", "active voxels", "memory", "bounding box", "volume",
+                              "area", "euler characteristic", "components"}) {
+        EXPECT_NE(r.out.find(label), std::string::npos) << label;
+    }
+}
+
+struct BadCall {
+    const char* args;
+    const char* mentions;  // the message must name what is wrong
+};
+
+void PrintTo(const BadCall& call, std::ostream* os) { *os << "sculpt " << call.args; }
+
+class SculptCliBadInput : public ::testing::TestWithParam<BadCall> {};
+
+TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o good.vdb", dir.path()).exitCode, 0);
+    std::ofstream(dir / "corrupt.vdb") << "garbage that is not a vdb";
+    std::ofstream(dir / "bad.json") << R"({"primitives": [{"name": "arm", "kernel": "metaball", "radius": -2,
+        "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
+    std::ofstream(dir / "broken.json") << R"({"primitives": [)";
+    const std::string stroke = R"({"tool": "add", "radius": 1, "samples": [[5, 0, 0]]})";
+    std::ofstream(dir / "s_ok.json") << R"({"events": [)" << stroke << "]}";
+    std::ofstream(dir / "s_tool.json") << R"({"events": [)" << stroke << R"(, {"tool": "sponge", "radius": 1, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_field.json") << R"({"events": [{"tool": "add", "radius": 1}]})";
+    std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
+    std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "junk.nii") << "not a NIfTI header, just some words";
+    std::ofstream(dir / "tiny.raw") << "tiny";
+    const auto before = dir.entries();
+    const auto goodBytes = fileBytes(dir / "good.vdb");
+
+    const auto r = runSculpt(GetParam().args, dir.path());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find(GetParam().mentions), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(dir.entries(), before);
+    EXPECT_EQ(fileBytes(dir / "good.vdb"), goodBytes);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Calls, SculptCliBadInput,
+    ::testing::Values(BadCall{"info missing.vdb", "missing.vdb"},
+                      BadCall{"info corrupt.vdb", "corrupt.vdb"},
+                      BadCall{"mesh corrupt.vdb -o out.ply", "corrupt.vdb"},
+                      BadCall{"mesh good.vdb -o out.xyz", "out.xyz"},
+                      BadCall{"mesh good.vdb -o nodir/out.ply", "nodir"},
+                      BadCall{"new --voxel-size 0 -o out.vdb", "voxel size"},
+                      BadCall{"new --voxel-size -1 -o out.vdb", "voxel size"},
+                      BadCall{"new --radius 1e5 --voxel-size 0.001 -o out.vdb", "memory"},
+                      BadCall{"new --shape cone -o out.vdb", "cone"},
+                      BadCall{"new -o nodir/out.vdb", "nodir"},
+                      BadCall{"frobnicate", "frobnicate"},
+                      BadCall{"smooth good.vdb --iterations -2 -o out.vdb", "iterations"},
+                      BadCall{"offset corrupt.vdb --distance 1 -o out.vdb", "corrupt.vdb"},
+                      BadCall{"morph good.vdb missing.vdb -o frames", "missing.vdb"},
+                      BadCall{"morph good.vdb good.vdb --frames 1 -o frames", "frames"},
+                      BadCall{"build bad.json -o out.vdb", "primitive 0 ('arm'): radius"},
+                      BadCall{"build broken.json -o out.vdb", "malformed JSON"},
+                      BadCall{"build missing.json -o out.vdb", "missing.json"},
+                      BadCall{"build bad.json --into corrupt.vdb -o out.vdb", "radius"},
+                      BadCall{"apply good.vdb s_tool.json -o out.vdb", "s_tool.json: events[1] ('sponge' stroke): unknown tool"},
+                      BadCall{"apply good.vdb s_field.json -o out.vdb", "events[0] ('add' stroke): missing field 'samples'"},
+                      BadCall{"apply good.vdb s_inf.json -o out.vdb", "malformed JSON at events[0].samples[0][2]"},
+                      BadCall{"apply good.vdb s_radius.json -o out.vdb", "events[0] ('carve' stroke): field 'radius' must be a positive"},
+                      BadCall{"apply good.vdb s_huge.json -o out.vdb", "events[1] ('inflate' stroke): field 'radius' (90) is larger than the model"},
+                      BadCall{"apply corrupt.vdb s_ok.json -o out.vdb", "corrupt.vdb"},
+                      BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
+                      BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
+                      BadCall{"import junk.nii -o out.vdb", "junk.nii"},
+                      BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
+                      BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
+                      BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
+                      BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
+                      BadCall{"", "ubcommand"}),
+    [](const auto& info) { return "case" + std::to_string(info.index); });
+
+TEST(SculptCli, SmoothAndOffsetChangeTheShape)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 10 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    auto r = runSculpt("offset s.vdb --distance 2 -o grown.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NEAR(infoJson(dir, "grown.vdb")["bbox_max"][0].get<double>(), 12.0, 0.05);
+
+    r = runSculpt("smooth s.vdb --iterations 20 --keep-volume -o kept.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double v0 = infoJson(dir, "s.vdb")["volume"].get<double>();
+    EXPECT_NEAR(infoJson(dir, "kept.vdb")["volume"].get<double>(), v0, 0.005 * v0);
+    r = runSculpt("smooth s.vdb --iterations 20 -o shrunk.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_LT(infoJson(dir, "shrunk.vdb")["volume"].get<double>(), 0.99 * v0);
+}
+
+TEST(SculptCli, MorphWritesFramesAndMeshes)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 6 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape torus --radius 6 --minor-radius 2.5 --voxel-size 0.5 -o t.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("morph s.vdb t.vdb --frames 3 -o frames --mesh stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("converged"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("frame 0002 volume"), std::string::npos) << r.out;
+    for (const char* name : {"frames/frame_0000.vdb", "frames/frame_0002.vdb", "frames/frame_0002.stl"}) {
+        EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
+    }
+    EXPECT_EQ(infoJson(dir, "frames/frame_0002.vdb")["euler_characteristic"], 0);
+    EXPECT_EQ(test::vtkMeshReport(dir / "frames/frame_0002.stl").boundaryEdges, 0);
+}
+
+TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 3 --voxel-size 0.5 -o a.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape torus --radius 30 --minor-radius 3 --voxel-size 0.5 -o ring.vdb", dir.path()).exitCode, 0);
+    const auto r = runSculpt("morph a.vdb ring.vdb --frames 2 -o frames", dir.path());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("do not overlap"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
+}
+
+TEST(SculptCli, BuildBakesScenesAloneAndIntoADocument)
+{
+    TempDir dir;
+    auto r = runSculpt("build '" SCULPT_DATA_DIR "/scenes/snowman.json' -o snow.vdb --mesh snow.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(infoJson(dir, "snow.vdb")["components"], 1);
+    EXPECT_EQ(test::vtkMeshReport(dir / "snow.ply").boundaryEdges, 0);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 20 -o box.vdb", dir.path()).exitCode, 0);
+    r = runSculpt("build '" SCULPT_DATA_DIR "/scenes/carved_box.json' --into box.vdb -o carved.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double before = infoJson(dir, "box.vdb")["volume"].get<double>();
+    const double after = infoJson(dir, "carved.vdb")["volume"].get<double>();
+    EXPECT_LT(after, before - 200.0);  // a scoop of radius 8.3 off one corner: about 300 mm^3
+    EXPECT_EQ(infoJson(dir, "carved.vdb")["euler_characteristic"], 2);
+}
+
+TEST(SculptCli, ApplyReplaysTheFaceScriptOnTheClayBall)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
+    const std::string script = "'" SCULPT_DATA_DIR "/strokes/face.json'";
+    auto r = runSculpt("apply clay.vdb " + script + " -o face.vdb --mesh face.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("2 undo, 1 redo"), std::string::npos) << r.out;
+    const auto face = infoJson(dir, "face.vdb");
+    const double clay = infoJson(dir, "clay.vdb")["volume"].get<double>();
+    EXPECT_EQ(face["components"], 1) << "one shell: no bubbles where the eyeballs meet their sockets";
+    EXPECT_EQ(face["euler_characteristic"], 2);
+    EXPECT_GT(std::abs(face["volume"].get<double>() - clay), 100.0);  // sculpted, not the ball
+    const auto vtk = test::vtkMeshReport(dir / "face.ply");
+    EXPECT_EQ(vtk.boundaryEdges, 0);
+    EXPECT_EQ(vtk.nonManifoldEdges, 0);
+    EXPECT_NEAR(vtk.volume, face["volume"].get<double>(), 0.01 * face["volume"].get<double>());
+
+    r = runSculpt("apply clay.vdb " + script + " -o again.vdb --threads 1", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(infoJson(dir, "again.vdb"), face);
+}
+
+TEST(SculptCli, ImportMeshesAndScansAndMorphTowardsAMesh)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.25 -o ball.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("mesh ball.vdb -o ball.stl", dir.path()).exitCode, 0);
+    auto r = runSculpt("import ball.stl --voxel-size 0.25 -o back.vdb --mesh back.ply", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const double original = infoJson(dir, "ball.vdb")["volume"].get<double>();
+    EXPECT_NEAR(infoJson(dir, "back.vdb")["volume"].get<double>(), original, 0.01 * original);
+    EXPECT_EQ(test::vtkMeshReport(dir / "back.ply").boundaryEdges, 0);
+
+    ASSERT_EQ(runSculpt("new --shape box --radius 4 --voxel-size 0.25 -o box.vdb", dir.path()).exitCode, 0);
+    r = runSculpt("morph box.vdb ball.stl --frames 2 -o frames", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::exists(dir / "frames/frame_0001.vdb"));
+
+    const char* mri = "/usr/share/mricron/templates/ch2bet.nii.gz";
+    if (!std::filesystem::exists(mri)) GTEST_SKIP() << mri << " missing: apt-get install mricron-data";
+    r = runSculpt(std::string("import ") + mri + " --largest-component -o brain.vdb --mesh brain.stl", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("(Otsu)"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("cavities filled"), std::string::npos) << r.out;
+    EXPECT_EQ(infoJson(dir, "brain.vdb")["components"], 1) << "one shell to print";
+    const auto brain = test::vtkMeshReport(dir / "brain.stl");
+    EXPECT_EQ(brain.boundaryEdges, 0);
+    EXPECT_GT(brain.volume, 1.0e6);  // a human brain: well over a litre in mm^3
+}
+
+TEST(SculptCli, HelpExplainsEveryCommand)
+{
+    TempDir dir;
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply", "import"}) {
+        const auto r = runSculpt(std::string(command) + " --help", dir.path());
+        EXPECT_EQ(r.exitCode, 0);
+        EXPECT_NE(r.out.find("Usage"), std::string::npos) << command;
+    }
+    const auto r = runSculpt("new --help", dir.path());
+    EXPECT_NE(r.out.find("--voxel-size FLOAT=0.5"), std::string::npos) << r.out;
+}
+
+} // namespace
+} // namespace sculpt

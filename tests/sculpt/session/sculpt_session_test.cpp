@@ -1,0 +1,291 @@
+// The sculpting session (sculpt/): strokes, symmetry, undo/redo, stroke scripts and replays.
+
+#include "core/primitives/analytic_shapes.h"
+#include "core/field/csg_combine.h"
+#include "core/base/errors.h"
+#include "core/field/grid_checksum.h"
+#include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/stroke_script.h"
+
+#include <tbb/global_control.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace sculpt {
+namespace {
+
+using openvdb::Vec3d;
+
+Stroke strokeOf(BrushTool tool, double radius, std::vector<Vec3d> points, double strength = 0.7)
+{
+    Stroke stroke;
+    stroke.brush.tool = tool;
+    stroke.brush.radiusWorld = radius;
+    stroke.brush.strength = strength;
+    for (const Vec3d& p : points) stroke.samples.push_back({p, 1.0, Vec3d(0, 0, -1)});
+    return stroke;
+}
+
+std::uint64_t checksumOf(const SculptSession& session) { return gridChecksum(session.field().grid()); }
+
+std::shared_ptr<const PrimitiveStamp> blobStamp()
+{
+    Primitive blob;
+    blob.kernel.radius = 3.0;
+    return std::make_shared<const PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
+}
+
+TEST(StrokeStamps, SpacedAlongThePathWithInterpolatedPressure)
+{
+    Stroke stroke = strokeOf(BrushTool::Add, 2.0, {Vec3d(0, 0, 0), Vec3d(4, 0, 0), Vec3d(4, 6, 0)});
+    stroke.samples[0].pressure = 0.2;
+    stroke.samples[2].pressure = 1.0;
+    stroke.samples[1].pressure = 0.6;
+    stroke.spacing = 0.25;  // 0.5 apart along a path 10 long: 21 stamps
+    const std::vector<BrushStamp> stamps = strokeStamps(stroke);
+    ASSERT_EQ(stamps.size(), 21u);
+    EXPECT_EQ(stamps.front().centreWorld, Vec3d(0, 0, 0));
+    EXPECT_EQ(stamps.back().centreWorld, Vec3d(4, 6, 0));
+    EXPECT_NEAR(stamps[8].centreWorld.x(), 4.0, 1e-12);  // the corner
+    EXPECT_NEAR(stamps[8].pressure, 0.6, 1e-12);
+    EXPECT_NEAR(stamps[4].pressure, 0.4, 1e-12);
+    for (size_t i = 1; i < stamps.size(); ++i) {
+        EXPECT_NEAR((stamps[i].centreWorld - stamps[i].previousWorld).length(), 0.5, 1e-9);
+        EXPECT_EQ(stamps[i].previousWorld, stamps[i - 1].centreWorld);
+    }
+}
+
+TEST(StrokeStamps, MirrorImagesFollowEachStampAndChainToTheirOwn)
+{
+    Stroke stroke = strokeOf(BrushTool::Add, 2.0, {Vec3d(1, 2, 3), Vec3d(1, 4, 3)});
+    stroke.spacing = 1.0;
+    stroke.symmetry.x = stroke.symmetry.z = true;
+    const std::vector<BrushStamp> stamps = strokeStamps(stroke);
+    ASSERT_EQ(stamps.size(), 2u * 4u);
+    EXPECT_EQ(stamps[5].centreWorld, Vec3d(-1, 4, 3));
+    EXPECT_EQ(stamps[5].previousWorld, stamps[1].centreWorld);
+    EXPECT_EQ(stamps[7].centreWorld, Vec3d(-1, 4, -3));
+    EXPECT_EQ(stamps[7].viewDirection, Vec3d(0, 0, 1));
+}
+
+/// max |phi(x, y, z) - phi(-x, y, z)| over every voxel of the grid's leaves; also counts active
+/// states that differ.
+std::pair<double, int> mirrorAsymmetryX(const FieldImage& field)
+{
+    const auto acc = field.grid().getConstAccessor();
+    double worst = 0.0;
+    int states = 0;
+    for (auto leaf = field.grid().tree().cbeginLeaf(); leaf; ++leaf) {
+        for (auto it = leaf->cbeginValueAll(); it; ++it) {
+            const openvdb::Coord m(-it.getCoord().x(), it.getCoord().y(), it.getCoord().z());
+            worst = std::max(worst, double(std::abs(*it - acc.getValue(m))));
+            states += it.isValueOn() != acc.isValueOn(m);
+        }
+    }
+    return {worst, states};
+}
+
+TEST(SculptSession, StrokesWithXSymmetryKeepASymmetricModelSymmetric)
+{
+    const double h = 0.5;
+    for (const BrushTool tool : {BrushTool::Add, BrushTool::Carve, BrushTool::Inflate, BrushTool::Smooth,
+                                 BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch}) {
+        SculptSession session(makeSphere(12.0, h));
+        ASSERT_EQ(mirrorAsymmetryX(session.field()).first, 0.0);
+        Stroke stroke = strokeOf(tool, 3.0, {Vec3d(8.0, 8.0, 4.0), Vec3d(9.0, 5.0, 6.0), Vec3d(8.0, 2.0, 8.5)});
+        stroke.symmetry.x = true;
+        session.applyStroke(stroke);
+        const auto [worst, states] = mirrorAsymmetryX(session.field());
+        EXPECT_LE(worst, 1e-5 * h) << brushToolName(tool);
+        EXPECT_EQ(states, 0) << brushToolName(tool);
+    }
+}
+
+TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitForBit)
+{
+    const double R = 12.0;
+    SculptSession session(makeSphere(R, 0.5));
+    const std::uint64_t original = checksumOf(session);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), radius(1.5, 4.0), strength(0.2, 1.0);
+    const std::vector<BrushTool> tools{BrushTool::Add,    BrushTool::Carve,   BrushTool::Inflate,
+                                       BrushTool::Deflate, BrushTool::Smooth,  BrushTool::Flatten,
+                                       BrushTool::Grab,   BrushTool::Pinch,   BrushTool::Primitive};
+    const auto onSurface = [&] {
+        Vec3d d(unit(random), unit(random), unit(random));
+        return d.unit() * R;
+    };
+    for (int i = 0; i < 100; ++i) {
+        const Vec3d start = onSurface();
+        Stroke stroke = strokeOf(tools[size_t(i) % tools.size()], radius(random), {start}, strength(random));
+        stroke.samples.push_back({start + Vec3d(unit(random), unit(random), unit(random)) * 3.0, 0.5, Vec3d(0, 0, -1)});
+        stroke.brush.falloff = Falloff(i % 4);
+        stroke.brush.keepVolume = i % 3 == 0;
+        stroke.symmetry.x = i % 5 == 0;
+        stroke.spacing = 0.5;
+        if (stroke.brush.tool == BrushTool::Primitive) stroke.brush.primitive = blobStamp();
+        session.applyStroke(stroke);
+    }
+    const std::uint64_t result = checksumOf(session);
+    ASSERT_NE(result, original);
+    EXPECT_EQ(session.history().undoCount(), 100u);
+    while (session.undo()) {
+    }
+    EXPECT_EQ(checksumOf(session), original);
+    EXPECT_EQ(session.history().redoCount(), 100u);
+    while (session.redo()) {
+    }
+    EXPECT_EQ(checksumOf(session), result);
+}
+
+TEST(SculptSession, UndoMemoryFollowsTheTouchedLeavesNotTheModel)
+{
+    std::vector<std::size_t> bytes, leaves, modelLeaves;
+    for (const double R : {10.0, 40.0}) {
+        SculptSession session(makeSphere(R, 0.5));
+        const auto report = session.applyStroke(strokeOf(BrushTool::Add, 3.0, {Vec3d(R, 0, 0), Vec3d(R, 0, 4)}));
+        bytes.push_back(session.history().memoryBytes());
+        leaves.push_back(report.leavesChanged);
+        modelLeaves.push_back(session.field().grid().tree().leafCount());
+        EXPECT_EQ(report.journalBytes, session.history().memoryBytes());
+        // A saved leaf is its values (2 KiB), masks and bookkeeping; a saved tile much less.
+        EXPECT_LT(double(bytes.back()) / double(leaves.back()), 2400.0);
+        EXPECT_GT(double(bytes.back()) / double(leaves.back()), 1000.0);
+    }
+    EXPECT_GT(double(modelLeaves[1]) / double(modelLeaves[0]), 10.0);
+    EXPECT_LT(double(bytes[1]) / double(bytes[0]), 1.5);
+}
+
+TEST(SculptSession, HistoryForgetsTheOldestStrokesBeyondItsBudget)
+{
+    const std::size_t budget = 400 * 1024;
+    SculptSession session(makeSphere(12.0, 0.5), false, budget);
+    std::vector<std::uint64_t> states{checksumOf(session)};
+    for (int i = 0; i < 12; ++i) {
+        const double a = 0.5 * i;
+        session.applyStroke(strokeOf(BrushTool::Add, 2.5, {Vec3d(12 * std::cos(a), 12 * std::sin(a), 0)}));
+        states.push_back(checksumOf(session));
+        EXPECT_LE(session.history().memoryBytes(), budget);
+    }
+    const std::size_t kept = session.history().undoCount();
+    EXPECT_LT(kept, 12u);
+    EXPECT_EQ(session.history().droppedCount(), 12u - kept);
+    std::size_t undone = 0;
+    while (session.undo()) ++undone;  // undoing may forget more: redo entries can be larger
+    EXPECT_GE(undone, kept - 1);
+    EXPECT_EQ(checksumOf(session), states[12 - undone]);  // back to the oldest state still known
+}
+
+TEST(SculptSession, AFailedStrokeLeavesTheDocumentAsItWas)
+{
+    SculptSession session(makeSphere(12.0, 0.5));
+    const std::uint64_t before = checksumOf(session);
+    Stroke stroke = strokeOf(BrushTool::Add, 3.0, {Vec3d(12, 0, 0), Vec3d(0, 12, 0)});
+    stroke.samples[1].pressure = 0.0;  // invalid
+    EXPECT_THROW(session.applyStroke(stroke), InputError);
+    EXPECT_THROW(session.applyStroke(strokeOf(BrushTool::Add, 500.0, {Vec3d(12, 0, 0)})), InputError);
+    EXPECT_EQ(checksumOf(session), before);
+    EXPECT_EQ(session.history().undoCount(), 0u);
+}
+
+TEST(SculptSession, LiveMeshFollowsEveryStrokeUndoAndRedo)
+{
+    SculptSession session(makeSphere(12.0, 0.5), true);
+    const auto trianglesNow = [&] { return session.mesher()->weldedMesh().triangles.size(); };
+    const auto fresh = [&] { return meshLevelSet(session.field()).triangles.size(); };
+    session.applyStroke(strokeOf(BrushTool::Add, 3.0, {Vec3d(12, 0, 0), Vec3d(8, 8, 0)}));
+    EXPECT_EQ(trianglesNow(), fresh());
+    session.undo();
+    EXPECT_EQ(trianglesNow(), fresh());
+    session.redo();
+    EXPECT_EQ(trianglesNow(), fresh());
+}
+
+std::string dataPath(const std::string& name) { return std::string(SCULPT_DATA_DIR) + "/" + name; }
+
+TEST(StrokeScript, ReplaysAreBitIdenticalTwiceAndWithOneOrTwoThreads)
+{
+    const StrokeScript script = readStrokeScript(dataPath("strokes/face.json"));
+    std::vector<std::uint64_t> results;
+    for (const int threads : {2, 1, 2}) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+        SculptSession session(makeSphere(50.0, 0.5));
+        const ReplayReport done = replayScript(session, script, "face.json");
+        EXPECT_GT(done.strokes, 10u);
+        EXPECT_EQ(done.undos, 2u);
+        results.push_back(checksumOf(session));
+    }
+    EXPECT_EQ(results[0], results[1]);
+    EXPECT_EQ(results[0], results[2]);
+}
+
+/// The error message of parsing `events` (a JSON array) as a script.
+std::string parseError(const std::string& events)
+{
+    try {
+        parseStrokeScript(R"({"format": "sculpt-strokes", "version": 1, "events": )" + events + "}", "s.json", ".");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(StrokeScript, ErrorsNameTheEventAndTheField)
+{
+    const std::string ok = R"("samples": [[1, 2, 3]])";
+    EXPECT_EQ(parseError(R"([{"action": "undo"}, {"tool": "sponge", "radius": 1, )" + ok + "}]"),
+              "s.json: events[1] ('sponge' stroke): unknown tool \"sponge\" (expected add, carve, inflate, "
+              "deflate, smooth, flatten, grab, pinch or primitive)");
+    EXPECT_EQ(parseError(R"([{"tool": "add", )" + ok + "}]"), "s.json: events[0] ('add' stroke): missing field 'radius'");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 0, )" + ok + "}]"),
+              "s.json: events[0] ('add' stroke): field 'radius' must be a positive number (got 0)");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": -2, )" + ok + "}]"),
+              "s.json: events[0] ('add' stroke): field 'radius' must be a positive number (got -2)");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [[1, 1e999, 3]]}])"),
+              "s.json: malformed JSON at events[0].samples[0][1] ([json.exception.out_of_range.406] number overflow parsing '1e999')");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [[1, "inf", 3]]}])"),
+              "s.json: events[0] ('add' stroke): samples[0]: field 'position' must be an array of 3 finite numbers");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [{"position": [1, 2, 3], "pressure": 2}]}])"),
+              "s.json: events[0] ('add' stroke): field 'samples[0].pressure' must be in (0, 1] (got 2)");
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": []}])"),
+              "s.json: events[0] ('add' stroke): field 'samples' is empty: a stroke needs at least one");
+    EXPECT_EQ(parseError(R"([{"action": "again"}])"),
+              "s.json: events[0]: field 'action' is \"again\" (expected \"undo\" or \"redo\")");
+    EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
+              "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
+    EXPECT_NE(parseError("[{").find("malformed JSON"), std::string::npos);
+    EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "strenght": 1, )" + ok + "}]").substr(0, 68),
+              "s.json: events[0] ('add' stroke): unknown field 'strenght' (expected");
+    EXPECT_NE(parseError(R"([{"tool": "add", "radius": 1, "symmetry": ["w"], )" + ok + "}]").find("'symmetry'"),
+              std::string::npos);
+}
+
+TEST(StrokeScript, ReplayNamesTheEventThatCannotBeApplied)
+{
+    SculptSession session(makeSphere(10.0, 0.5));
+    const auto script = parseStrokeScript(
+        R"({"events": [{"tool": "add", "radius": 1, "samples": [[10, 0, 0]]}, {"action": "undo"}, {"action": "undo"}]})",
+        "s.json", ".");
+    try {
+        replayScript(session, script, "s.json");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "s.json: events[2]: undo with nothing to undo");
+    }
+    const auto huge = parseStrokeScript(R"({"events": [{"tool": "add", "radius": 300, "samples": [[10, 0, 0]]}]})",
+                                        "s.json", ".");
+    try {
+        replayScript(session, huge, "s.json");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("s.json: events[0] ('add' stroke): field 'radius' (300) is larger than the model"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+} // namespace
+} // namespace sculpt
