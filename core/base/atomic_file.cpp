@@ -17,12 +17,12 @@ namespace {
 fs::path temporarySibling(const fs::path& target)
 {
     static std::atomic<unsigned> counter{0};
-    const std::string name = "." + target.stem().string() + ".tmp-" + std::to_string(getpid()) +
-                             "-" + std::to_string(counter++) + target.extension().string();
+    const std::string name = "." + target.stem().string() + ".tmp-" + std::to_string(getpid()) + "-" +
+                             std::to_string(counter++) + target.extension().string();
     return target.has_parent_path() ? target.parent_path() / name : fs::path(name);
 }
 
-} // namespace
+}  // namespace
 
 void AtomicFile::checkTarget(const fs::path& target)
 {
@@ -59,4 +59,4 @@ void AtomicFile::commit()
     mCommitted = true;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

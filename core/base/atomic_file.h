@@ -33,4 +33,4 @@ private:
     bool mCommitted = false;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -43,4 +43,4 @@ const char* enumName(const EnumNames<Enum, N>& names, Enum value)
     return "?";
 }
 
-} // namespace sculpt
+}  // namespace sculpt

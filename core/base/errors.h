@@ -21,12 +21,11 @@ class InputError : public std::runtime_error {
 public:
     explicit InputError(const std::string& message, Remedy remedy = Remedy::None)
         : std::runtime_error(message), mRemedy(remedy)
-    {
-    }
+    {}
     Remedy remedy() const { return mRemedy; }
 
 private:
     Remedy mRemedy;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -13,4 +13,4 @@ std::string lowerExtension(const std::filesystem::path& path)
     return ext;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

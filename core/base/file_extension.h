@@ -11,4 +11,4 @@ namespace sculpt {
 /// ("brain.nii.gz" -> ".nii.gz").
 std::string lowerExtension(const std::filesystem::path& path);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -132,7 +132,7 @@ private:
     std::string mError;
 };
 
-} // namespace
+}  // namespace
 
 json parse(const std::string& text, const std::string& source)
 {
@@ -147,4 +147,4 @@ json parse(const std::string& text, const std::string& source)
     }
 }
 
-} // namespace sculpt::json_fields
+}  // namespace sculpt::json_fields

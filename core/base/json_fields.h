@@ -5,9 +5,8 @@
 /// `where` names the place for messages ("scene.json: primitive 2 ('head')"); every error is an
 /// InputError "<where>: field '<key>' must be ...".
 
-#include <openvdb/openvdb.h>
-
 #include <nlohmann/json.hpp>
+#include <openvdb/openvdb.h>
 
 #include <initializer_list>
 #include <string>
@@ -21,7 +20,8 @@ double number(const nlohmann::json& object, const char* key, const std::string& 
 /// number(), or `fallback` if the field is absent.
 double numberOr(const nlohmann::json& object, const char* key, double fallback, const std::string& where);
 /// A string, or `fallback` if absent.
-std::string textOr(const nlohmann::json& object, const char* key, const std::string& fallback, const std::string& where);
+std::string textOr(const nlohmann::json& object, const char* key, const std::string& fallback,
+                   const std::string& where);
 /// A boolean, or `fallback` if absent.
 bool flagOr(const nlohmann::json& object, const char* key, bool fallback, const std::string& where);
 /// An array of 3 finite numbers; `what` names it in messages.
@@ -32,4 +32,4 @@ void onlyFields(const nlohmann::json& object, std::initializer_list<const char*>
 /// Parses text, or InputError "<source>: malformed JSON (...)".
 nlohmann::json parse(const std::string& text, const std::string& source);
 
-} // namespace sculpt::json_fields
+}  // namespace sculpt::json_fields

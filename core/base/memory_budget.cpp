@@ -25,9 +25,9 @@ void requireMemory(double bytes, const std::string& what)
 {
     const double available = double(availableMemoryBytes());
     if (!(bytes <= available)) {
-        throw InputError(what + " needs about " + formatBytes(bytes) + " of memory but only " +
-                         formatBytes(available) + " is available");
+        throw InputError(what + " needs about " + formatBytes(bytes) + " of memory but only " + formatBytes(available) +
+                         " is available");
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -14,4 +14,4 @@ std::uint64_t availableMemoryBytes();
 /// @throws InputError naming `what` if `bytes` exceeds what the machine has available.
 void requireMemory(double bytes, const std::string& what);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -23,4 +23,4 @@ inline void report(const Progress& progress, double fraction)
     if (progress && !progress(fraction)) throw Cancelled();
 }
 
-} // namespace sculpt
+}  // namespace sculpt

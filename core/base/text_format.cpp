@@ -24,4 +24,4 @@ std::string formatBytes(double bytes)
     return text;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -12,4 +12,4 @@ std::string formatNumber(double value);
 /// "1.5 GiB", "320 KiB": bytes in binary units.
 std::string formatBytes(double bytes);
 
-} // namespace sculpt
+}  // namespace sculpt

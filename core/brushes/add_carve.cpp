@@ -32,7 +32,7 @@ double filletFraction(Falloff falloff)
     return 0.0;
 }
 
-} // namespace
+}  // namespace
 
 DirtyRegion sweepBall(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, CsgMode mode,
                       LeafJournal* journal)
@@ -52,4 +52,4 @@ DirtyRegion sweepBall(FieldImage& field, const BrushSettings& brush, const Brush
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

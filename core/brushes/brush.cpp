@@ -1,9 +1,9 @@
 #include "core/brushes/brush.h"
 
-#include "core/brushes/brush_tools.h"
 #include "core/base/enum_names.h"
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/brushes/brush_tools.h"
 
 #include <cmath>
 
@@ -11,12 +11,17 @@ namespace sculpt {
 
 namespace {
 
-constexpr EnumNames<BrushTool, 9> kToolNames{{
-    {BrushTool::Add, "add"}, {BrushTool::Carve, "carve"}, {BrushTool::Inflate, "inflate"},
-    {BrushTool::Deflate, "deflate"}, {BrushTool::Smooth, "smooth"}, {BrushTool::Flatten, "flatten"},
-    {BrushTool::Grab, "grab"}, {BrushTool::Pinch, "pinch"}, {BrushTool::Primitive, "primitive"}}};
+constexpr EnumNames<BrushTool, 9> kToolNames{{{BrushTool::Add, "add"},
+                                              {BrushTool::Carve, "carve"},
+                                              {BrushTool::Inflate, "inflate"},
+                                              {BrushTool::Deflate, "deflate"},
+                                              {BrushTool::Smooth, "smooth"},
+                                              {BrushTool::Flatten, "flatten"},
+                                              {BrushTool::Grab, "grab"},
+                                              {BrushTool::Pinch, "pinch"},
+                                              {BrushTool::Primitive, "primitive"}}};
 
-} // namespace
+}  // namespace
 
 BrushTool brushToolFromName(const std::string& name) { return enumFromName(kToolNames, name, "tool"); }
 
@@ -56,4 +61,4 @@ DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const Brus
     return {};
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -22,9 +22,9 @@
 /// Motions larger than a voxel are split into sub-steps of at most one voxel, each redistanced,
 /// so the band stays a distance field. Everything is deterministic, whatever the thread count.
 
+#include "core/field/field_image.h"
 #include "core/local/capsule.h"
 #include "core/local/falloff.h"
-#include "core/field/field_image.h"
 #include "core/primitives/primitive_set.h"
 
 #include <memory>
@@ -52,7 +52,7 @@ struct BrushSettings {
     double radiusWorld = 1.0;
     double strength = 0.5;  ///< (0, 1]
     Falloff falloff = Falloff::Smooth;
-    bool keepVolume = false;  ///< smooth only
+    bool keepVolume = false;                          ///< smooth only
     std::shared_ptr<const PrimitiveStamp> primitive;  ///< primitive only; positioned at the origin
 
     /// @throws InputError naming the field: radius not positive and finite, strength not in
@@ -70,7 +70,6 @@ struct BrushStamp {
 
 /// Applies one stamp; saves each leaf in `journal` (may be null) before its first change.
 /// Marks the changed leaves dirty in `field` and returns them.
-DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp,
-                       LeafJournal* journal);
+DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal);
 
-} // namespace sculpt
+}  // namespace sculpt

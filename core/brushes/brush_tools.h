@@ -27,4 +27,4 @@ DirtyRegion pinch(FieldImage& field, const BrushSettings& brush, const BrushStam
 DirtyRegion stampPrimitives(FieldImage& field, const PrimitiveStamp& primitive, const BrushStamp& stamp,
                             LeafJournal* journal);
 
-} // namespace sculpt
+}  // namespace sculpt

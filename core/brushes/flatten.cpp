@@ -45,19 +45,24 @@ std::optional<std::pair<Plane, double>> fitPlane(const openvdb::FloatGrid& grid,
     }
     double total = 0.0;
     Vec3d centroid(0.0);
-    for (const auto& [p, w] : samples) { total += w; centroid += p * w; }
+    for (const auto& [p, w] : samples) {
+        total += w;
+        centroid += p * w;
+    }
     if (samples.size() < 3 || !(total > 0.0)) return std::nullopt;
     centroid /= total;
     openvdb::Mat3d covariance = openvdb::Mat3d::zero();
     for (const auto& [p, w] : samples) {
         const Vec3d d = p - centroid;
-        for (int r = 0; r < 3; ++r) for (int c = 0; c < 3; ++c) covariance(r, c) += w * d[r] * d[c];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) covariance(r, c) += w * d[r] * d[c];
     }
     openvdb::Mat3d vectors;
     Vec3d values;
     if (!openvdb::math::diagonalizeSymmetricMatrix(covariance, vectors, values)) return std::nullopt;
     int smallest = 0;
-    for (int k = 1; k < 3; ++k) if (values[k] < values[smallest]) smallest = k;
+    for (int k = 1; k < 3; ++k)
+        if (values[k] < values[smallest]) smallest = k;
     Vec3d normal = vectors.col(smallest);
     if (normal.dot(outward) < 0.0) normal = -normal;
     Plane plane{centroid, normal};
@@ -66,7 +71,7 @@ std::optional<std::pair<Plane, double>> fitPlane(const openvdb::FloatGrid& grid,
     return std::make_pair(plane, farthest);
 }
 
-} // namespace
+}  // namespace
 
 DirtyRegion flatten(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal)
 {
@@ -92,4 +97,4 @@ DirtyRegion flatten(FieldImage& field, const BrushSettings& brush, const BrushSt
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -23,4 +23,4 @@ DirtyRegion grab(FieldImage& field, const BrushSettings& brush, const BrushStamp
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

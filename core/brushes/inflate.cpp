@@ -10,7 +10,7 @@ namespace {
 
 constexpr double kInflateFraction = 0.1;  // of the radius, per stamp at full strength and pressure
 
-} // namespace
+}  // namespace
 
 DirtyRegion inflate(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, double direction,
                     LeafJournal* journal)
@@ -21,4 +21,4 @@ DirtyRegion inflate(FieldImage& field, const BrushSettings& brush, const BrushSt
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

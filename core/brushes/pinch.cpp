@@ -21,7 +21,7 @@ double peakPull(Falloff falloff)
     return peak;
 }
 
-} // namespace
+}  // namespace
 
 DirtyRegion pinch(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal)
 {
@@ -46,4 +46,4 @@ DirtyRegion pinch(FieldImage& field, const BrushSettings& brush, const BrushStam
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -20,4 +20,4 @@ DirtyRegion stampPrimitives(FieldImage& field, const PrimitiveStamp& primitive, 
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

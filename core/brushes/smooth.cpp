@@ -54,7 +54,7 @@ void refillVolumeUnder(LocalPatch& patch, const FalloffBall& ball, const Capsule
     }
 }
 
-} // namespace
+}  // namespace
 
 DirtyRegion smoothUnder(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal)
 {
@@ -62,13 +62,15 @@ DirtyRegion smoothUnder(FieldImage& field, const BrushSettings& brush, const Bru
     const FalloffBall ball{stamp.centreWorld, brush.radiusWorld, brush.falloff};
     LocalPatch patch(field, Capsule::ball(ball.centreWorld, ball.radiusWorld));
     const Capsule measured = Capsule::ball(ball.centreWorld, ball.radiusWorld + field.grid().background());
-    const double volumeBefore = brush.keepVolume ? volumeAndWeightedArea(patch.field().grid(), measured, ball).first : 0.0;
+    const double volumeBefore =
+        brush.keepVolume ? volumeAndWeightedArea(patch.field().grid(), measured, ball).first : 0.0;
     MotionTerms terms;
     terms.smooth = SmoothTerm{h * h, ball};
     // Curvature flow carries the band edge's error inwards by sqrt(2 beta t): redistance the
     // patch (cheaply, locally) every beta t = h^2 / 2 instead of the evolution's whole-grid tracker.
     EvolutionOptions options;
-    options.redistanceAfterMovingVoxels = options.redistanceAfterDiffusingVoxels2 = std::numeric_limits<double>::infinity();
+    options.redistanceAfterMovingVoxels = options.redistanceAfterDiffusingVoxels2 =
+        std::numeric_limits<double>::infinity();
     options.firstOrderTime = true;
     const double duration = brush.strength * stamp.pressure;
     const int chunks = std::max(1, int(std::ceil(duration / kSmoothChunk - 1e-9)));
@@ -80,4 +82,4 @@ DirtyRegion smoothUnder(FieldImage& field, const BrushSettings& brush, const Bru
     return patch.commit(field, journal);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

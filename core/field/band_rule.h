@@ -34,4 +34,4 @@ void setBandValue(Target& target, const Where& where, const BandValue& band)
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

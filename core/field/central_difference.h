@@ -37,4 +37,4 @@ inline openvdb::Vec3d closestSurfacePoint(const openvdb::Vec3d& point, double ph
     return length > 1e-12 ? point - difference * (phi * scale / length) : point;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

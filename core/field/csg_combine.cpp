@@ -1,7 +1,7 @@
 #include "core/field/csg_combine.h"
 
-#include "core/field/band_rule.h"
 #include "core/base/enum_names.h"
+#include "core/field/band_rule.h"
 
 #include <openvdb/tools/Composite.h>
 
@@ -48,7 +48,7 @@ DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& s
     return touched;
 }
 
-} // namespace
+}  // namespace
 
 CsgOperation csgFromName(const std::string& name) { return enumFromName(kOperationNames, name, "operation"); }
 
@@ -61,9 +61,7 @@ DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation op
     DirtyRegion touched;
     switch (operation) {
     case CsgOperation::Union:
-    case CsgOperation::Difference:
-        touched = combineLocally(grid, shape.grid(), operation);
-        break;
+    case CsgOperation::Difference: touched = combineLocally(grid, shape.grid(), operation); break;
     case CsgOperation::Intersection: {
         touched = sculpt.allLeaves();
         auto copy = shape.grid().deepCopy();
@@ -75,9 +73,10 @@ DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation op
         grid.setTree(shape.grid().tree().copy());
         break;
     }
-    if (operation == CsgOperation::Intersection || operation == CsgOperation::Replace) touched.merge(sculpt.allLeaves());
+    if (operation == CsgOperation::Intersection || operation == CsgOperation::Replace)
+        touched.merge(sculpt.allLeaves());
     sculpt.markDirty(touched);
     return touched;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

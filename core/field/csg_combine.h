@@ -20,4 +20,4 @@ CsgOperation csgFromName(const std::string& name);
 /// @throws InputError if the two grids' transforms differ.
 DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation operation);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -21,8 +21,8 @@ void gatherDense(const openvdb::FloatTree& tree, const openvdb::CoordBBox& box, 
                 const int z0 = std::max(lz, lo.z()), z1 = std::min(lz + kLeafDim - 1, hi.z());
                 for (int x = x0; x <= x1; ++x) {
                     for (int y = y0; y <= y1; ++y) {
-                        float* out = dst + (size_t(x - lo.x()) * dim.y() + size_t(y - lo.y())) * dim.z() +
-                                     size_t(z0 - lo.z());
+                        float* out =
+                            dst + (size_t(x - lo.x()) * dim.y() + size_t(y - lo.y())) * dim.z() + size_t(z0 - lo.z());
                         if (!leaf) {
                             std::fill(out, out + (z1 - z0 + 1), tile);
                             continue;
@@ -36,4 +36,4 @@ void gatherDense(const openvdb::FloatTree& tree, const openvdb::CoordBBox& box, 
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

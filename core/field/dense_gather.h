@@ -14,4 +14,4 @@ namespace sculpt {
 /// dst[((x - min.x) * dim.y + (y - min.y)) * dim.z + (z - min.z)]. `dst` holds box.volume().
 void gatherDense(const openvdb::FloatTree& tree, const openvdb::CoordBBox& box, float* dst);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -29,14 +29,8 @@ void DirtyRegion::merge(const DirtyRegion& other)
     mLeafOrigins.insert(other.mLeafOrigins.begin(), other.mLeafOrigins.end());
 }
 
-std::vector<openvdb::Coord> DirtyRegion::leafOrigins() const
-{
-    return {mLeafOrigins.begin(), mLeafOrigins.end()};
-}
+std::vector<openvdb::Coord> DirtyRegion::leafOrigins() const { return {mLeafOrigins.begin(), mLeafOrigins.end()}; }
 
-bool DirtyRegion::containsLeaf(const openvdb::Coord& leafOrigin) const
-{
-    return mLeafOrigins.count(leafOrigin) != 0;
-}
+bool DirtyRegion::containsLeaf(const openvdb::Coord& leafOrigin) const { return mLeafOrigins.count(leafOrigin) != 0; }
 
-} // namespace sculpt
+}  // namespace sculpt

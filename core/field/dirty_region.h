@@ -39,4 +39,4 @@ private:
     std::set<openvdb::Coord> mLeafOrigins;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

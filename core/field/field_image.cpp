@@ -36,7 +36,7 @@ double uniformVoxelSize(const openvdb::math::Transform& transform)
     return transform.voxelSize()[0];
 }
 
-} // namespace
+}  // namespace
 
 FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
     : mGrid(std::move(grid)), mUnits(std::move(units))
@@ -50,8 +50,7 @@ FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
         throw InputError("voxel size must be positive and finite");
     }
     if (!(mGrid->background() >= float(mVoxelSize))) {
-        throw InputError("grid '" + mGrid->getName() +
-                         "' has a band narrower than one voxel (background " +
+        throw InputError("grid '" + mGrid->getName() + "' has a band narrower than one voxel (background " +
                          formatNumber(mGrid->background()) + ")");
     }
 }
@@ -67,4 +66,4 @@ DirtyRegion FieldImage::allLeaves() const
 
 DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRegion{}); }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -63,4 +63,4 @@ private:
     DirtyRegion mDirty;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,7 +1,6 @@
 #include "core/field/grid_checksum.h"
 
 #include <openvdb/tree/LeafManager.h>
-
 #include <tbb/parallel_for.h>
 
 #include <cstring>
@@ -19,7 +18,11 @@ struct Fnv1a {
         const auto* p = static_cast<const unsigned char*>(data);
         for (size_t i = 0; i < bytes; ++i) state = (state ^ p[i]) * 1099511628211ull;
     }
-    template <typename T> void add(const T& value) { add(&value, sizeof value); }
+    template <typename T>
+    void add(const T& value)
+    {
+        add(&value, sizeof value);
+    }
 };
 
 std::uint64_t leafHash(const openvdb::FloatTree::LeafNodeType& leaf)
@@ -32,7 +35,7 @@ std::uint64_t leafHash(const openvdb::FloatTree::LeafNodeType& leaf)
     return h.state;
 }
 
-} // namespace
+}  // namespace
 
 std::uint64_t gridChecksum(const openvdb::FloatGrid& grid)
 {
@@ -55,4 +58,4 @@ std::uint64_t gridChecksum(const openvdb::FloatGrid& grid)
     return h.state;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

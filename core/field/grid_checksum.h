@@ -16,4 +16,4 @@ namespace sculpt {
 /// mask, raw values) in tree order. Deterministic; linear in the number of leaves, parallel.
 std::uint64_t gridChecksum(const openvdb::FloatGrid& grid);
 
-} // namespace sculpt
+}  // namespace sculpt

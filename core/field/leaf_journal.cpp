@@ -12,7 +12,7 @@ constexpr int kLeafDepth = int(openvdb::FloatTree::DEPTH) - 1;
 /// Per-entry bookkeeping of a std::map node, roughly.
 constexpr std::size_t kEntryOverhead = 64;
 
-} // namespace
+}  // namespace
 
 /// What the tree held at a leaf position: a leaf, a tile at some level, or nothing.
 struct LeafJournal::Saved {
@@ -82,8 +82,11 @@ void LeafJournal::swap(FieldImage& field)
     // Coarsest first, leaves last: a saved state never nests inside another's region, except
     // the tiles one split produced, which all agree.
     std::vector<std::pair<int, openvdb::Coord>> order;
-    for (const auto& [origin, saved] : mEntries) order.emplace_back(saved.leaf ? 0 : saved.level < 0 ? 99 : saved.level, origin);
-    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first > b.first || (a.first == b.first && a.second < b.second); });
+    for (const auto& [origin, saved] : mEntries)
+        order.emplace_back(saved.leaf ? 0 : saved.level < 0 ? 99 : saved.level, origin);
+    std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+        return a.first > b.first || (a.first == b.first && a.second < b.second);
+    });
     for (const auto& [rank, origin] : order) restore(tree, origin, mEntries.at(origin));
     tree.clearAllAccessors();
     mEntries = std::move(current);
@@ -91,4 +94,4 @@ void LeafJournal::swap(FieldImage& field)
     field.markDirty(touched);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -47,4 +47,4 @@ private:
     std::size_t mBytes = 0;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -82,7 +82,7 @@ bool writeFormat(MeshFormat format, vtkPolyData* polyData, const fs::path& path)
     return false;
 }
 
-} // namespace
+}  // namespace
 
 MeshFormat meshFormatOf(const fs::path& path)
 {
@@ -100,11 +100,10 @@ void writeMesh(const TriangleMesh& mesh, const fs::path& path)
     AtomicFile out(path);
     const auto polyData = toPolyData(mesh);
     std::error_code ec;
-    if (!writeFormat(format, polyData, out.temporaryPath()) ||
-        !fs::exists(out.temporaryPath(), ec)) {
+    if (!writeFormat(format, polyData, out.temporaryPath()) || !fs::exists(out.temporaryPath(), ec)) {
         throw InputError(path.string() + ": the mesh writer failed (disk full or no permission?)");
     }
     out.commit();
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -20,4 +20,4 @@ MeshFormat meshFormatOf(const std::filesystem::path& path);
 ///         the writer fails.
 void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -7,7 +7,6 @@
 #include "core/io/vtk_error_catcher.h"
 
 #include <openvdb/tools/MeshToVolume.h>
-
 #include <vtkCellArray.h>
 #include <vtkCleanPolyData.h>
 #include <vtkNew.h>
@@ -89,13 +88,16 @@ TriangleMesh readOff(const fs::path& path)
     std::vector<std::array<std::uint32_t, 3>> triangles;
     for (long long f = 0; f < faces; ++f) {
         long long n = 0;
-        if (!(in >> n) || n < 3 || n > vertices) throw InputError(path.string() + ": corrupt face " + std::to_string(f));
+        if (!(in >> n) || n < 3 || n > vertices)
+            throw InputError(path.string() + ": corrupt face " + std::to_string(f));
         std::vector<long long> ids(static_cast<size_t>(n));
         for (auto& id : ids) {
-            if (!(in >> id) || id < 0 || id >= vertices) throw InputError(path.string() + ": face " + std::to_string(f) + " has a bad vertex index");
+            if (!(in >> id) || id < 0 || id >= vertices)
+                throw InputError(path.string() + ": face " + std::to_string(f) + " has a bad vertex index");
         }
         for (long long k = 1; k + 1 < n; ++k) {
-            triangles.push_back({std::uint32_t(ids[0]), std::uint32_t(ids[size_t(k)]), std::uint32_t(ids[size_t(k + 1)])});
+            triangles.push_back(
+                {std::uint32_t(ids[0]), std::uint32_t(ids[size_t(k)]), std::uint32_t(ids[size_t(k + 1)])});
         }
         std::string colour;
         std::getline(in, colour);  // optional face colour
@@ -105,7 +107,7 @@ TriangleMesh readOff(const fs::path& path)
     return mesh;
 }
 
-} // namespace
+}  // namespace
 
 bool isMeshPath(const fs::path& path)
 {
@@ -173,10 +175,12 @@ double voxelSizeFor(const TriangleMesh& mesh, double voxelsAcross)
 
 FieldImage meshToField(const TriangleMesh& mesh, double h)
 {
-    if (!(h > 0.0) || !std::isfinite(h)) throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
+    if (!(h > 0.0) || !std::isfinite(h))
+        throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
     double area = 0.0;
     std::vector<openvdb::Vec3s> points(mesh.positions.size());
-    for (size_t i = 0; i < points.size(); ++i) points[i] = openvdb::Vec3s(mesh.positions[i][0], mesh.positions[i][1], mesh.positions[i][2]);
+    for (size_t i = 0; i < points.size(); ++i)
+        points[i] = openvdb::Vec3s(mesh.positions[i][0], mesh.positions[i][1], mesh.positions[i][2]);
     std::vector<openvdb::Vec3I> triangles(mesh.triangles.size());
     for (size_t i = 0; i < triangles.size(); ++i) {
         const auto& t = mesh.triangles[i];
@@ -189,8 +193,9 @@ FieldImage meshToField(const TriangleMesh& mesh, double h)
     auto xform = openvdb::math::Transform::createLinearTransform(h);
     std::vector<openvdb::Vec4I> quads;
     auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, points, triangles, quads, float(halfWidth));
-    if (grid->activeVoxelCount() == 0) throw InputError("the mesh produced no surface at voxel size " + formatNumber(h));
+    if (grid->activeVoxelCount() == 0)
+        throw InputError("the mesh produced no surface at voxel size " + formatNumber(h));
     return FieldImage(grid);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -42,4 +42,4 @@ FieldImage meshToField(const TriangleMesh& mesh, double voxelSizeWorld);
 /// A voxel size giving about `voxelsAcross` voxels along the mesh's longest side.
 double voxelSizeFor(const TriangleMesh& mesh, double voxelsAcross = 256.0);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -2,9 +2,9 @@
 
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/field/grid_checksum.h"
-#include "core/base/memory_budget.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
@@ -47,16 +47,14 @@ void requireMemoryFor(const openvdb::GridPtrVec& grids, const fs::path& path)
 {
     double total = 0.0;
     for (const auto& grid : grids) {
-        const auto bytes = grid->getMetadata<openvdb::Int64Metadata>(
-            openvdb::GridBase::META_FILE_MEM_BYTES);
+        const auto bytes = grid->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_MEM_BYTES);
         if (bytes && bytes->value() < 0) throw InputError("corrupt (negative grid size)");
         if (bytes) total += double(bytes->value());
     }
     requireMemory(total, path.string());
 }
 
-void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field,
-                           const fs::path& path)
+void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field, const fs::path& path)
 {
     if (auto version = meta.getMetadata<openvdb::Int32Metadata>(kMetaVersion)) {
         if (version->value() > kVdbFormatVersion) {
@@ -67,9 +65,8 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
     }
     if (auto size = meta.getMetadata<openvdb::DoubleMetadata>(kMetaVoxelSize)) {
         if (std::abs(size->value() - field.voxelSize()) > 1e-9 * field.voxelSize()) {
-            throw InputError(path.string() + ": corrupt (voxel size in metadata " +
-                             formatNumber(size->value()) + " differs from the grid's " +
-                             formatNumber(field.voxelSize()) + ")");
+            throw InputError(path.string() + ": corrupt (voxel size in metadata " + formatNumber(size->value()) +
+                             " differs from the grid's " + formatNumber(field.voxelSize()) + ")");
         }
     }
     if (auto sum = meta.getMetadata<openvdb::StringMetadata>(kMetaChecksum)) {
@@ -117,7 +114,7 @@ FieldImage readUnchecked(const fs::path& path)
     return field;
 }
 
-} // namespace
+}  // namespace
 
 FieldImage readFieldImage(const fs::path& path)
 {
@@ -159,4 +156,4 @@ void writeFieldImage(const FieldImage& field, const fs::path& path)
     out.commit();
 }
 
-} // namespace sculpt
+}  // namespace sculpt

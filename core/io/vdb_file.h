@@ -30,4 +30,4 @@ FieldImage readFieldImage(const std::filesystem::path& path);
 /// @throws InputError naming the file if its directory does not exist or it cannot be written.
 void writeFieldImage(const FieldImage& field, const std::filesystem::path& path);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -20,4 +20,4 @@ public:
     std::string message;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -22,7 +22,10 @@ struct DenseBox {
     std::vector<float> values;
 
     explicit DenseBox(const openvdb::CoordBBox& b) : box(b), dim(b.dim()), values(size_t(b.volume())) {}
-    size_t index(int x, int y, int z) const { return (size_t(x) * size_t(dim.y()) + size_t(y)) * size_t(dim.z()) + size_t(z); }
+    size_t index(int x, int y, int z) const
+    {
+        return (size_t(x) * size_t(dim.y()) + size_t(y)) * size_t(dim.z()) + size_t(z);
+    }
     openvdb::Coord coord(int x, int y, int z) const { return box.min().offsetBy(x, y, z); }
 };
 
@@ -95,14 +98,15 @@ void sweep(const DenseBox& d, std::vector<float>& to, const UpdateFn& update)
     });
 }
 
-} // namespace
+}  // namespace
 
 void redistanceBand(openvdb::FloatGrid& grid, const Capsule& zone)
 {
     const auto& xform = grid.transform();
     const double h = xform.voxelSize()[0], invH = 1.0 / h;
     const float background = grid.background();
-    openvdb::BBoxd world(openvdb::math::minComponent(zone.from, zone.to), openvdb::math::maxComponent(zone.from, zone.to));
+    openvdb::BBoxd world(openvdb::math::minComponent(zone.from, zone.to),
+                         openvdb::math::maxComponent(zone.from, zone.to));
     world.expand(zone.radius);
     openvdb::CoordBBox box(xform.worldToIndexCellCentered(world.min()), xform.worldToIndexCellCentered(world.max()));
     box.expand(1);  // apron: read, never written
@@ -144,4 +148,4 @@ void redistanceBand(openvdb::FloatGrid& grid, const Capsule& zone)
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

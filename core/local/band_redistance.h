@@ -22,4 +22,4 @@ namespace sculpt {
 /// Deterministic. Cost: the voxels of the zone's box.
 void redistanceBand(openvdb::FloatGrid& grid, const Capsule& zone);
 
-} // namespace sculpt
+}  // namespace sculpt

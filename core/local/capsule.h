@@ -36,4 +36,4 @@ struct Capsule {
     }
 };
 
-} // namespace sculpt
+}  // namespace sculpt

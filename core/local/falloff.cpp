@@ -9,10 +9,12 @@ namespace sculpt {
 
 namespace {
 
-constexpr EnumNames<Falloff, 4> kFalloffNames{{
-    {Falloff::Smooth, "smooth"}, {Falloff::Sphere, "sphere"}, {Falloff::Sharp, "sharp"}, {Falloff::Constant, "constant"}}};
+constexpr EnumNames<Falloff, 4> kFalloffNames{{{Falloff::Smooth, "smooth"},
+                                               {Falloff::Sphere, "sphere"},
+                                               {Falloff::Sharp, "sharp"},
+                                               {Falloff::Constant, "constant"}}};
 
-} // namespace
+}  // namespace
 
 double falloffWeight(Falloff falloff, double q)
 {
@@ -31,4 +33,4 @@ Falloff falloffFromName(const std::string& name) { return enumFromName(kFalloffN
 
 const char* falloffName(Falloff falloff) { return enumName(kFalloffNames, falloff); }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -36,4 +36,4 @@ struct FalloffBall {
     }
 };
 
-} // namespace sculpt
+}  // namespace sculpt

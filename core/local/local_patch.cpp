@@ -2,7 +2,6 @@
 
 #include "core/field/band_rule.h"
 #include "core/field/central_difference.h"
-
 #include "core/field/leaf_journal.h"
 #include "core/local/band_redistance.h"
 
@@ -15,7 +14,7 @@ namespace {
 
 using LeafT = openvdb::FloatTree::LeafNodeType;
 
-} // namespace
+}  // namespace
 
 int substepsFor(double motionWorld, double voxelSize)
 {
@@ -65,15 +64,14 @@ openvdb::FloatGrid::Ptr extractLeaves(const openvdb::FloatGrid& grid, const std:
     return sub;
 }
 
-} // namespace
+}  // namespace
 
 LocalPatch::LocalPatch(const FieldImage& field, const Capsule& region)
-    : mRegion(region),
-      mInnerLeaves(leavesMeeting(field.grid(), region)),
-      mField(extractLeaves(field.grid(), leavesMeeting(field.grid(), region.grownBy(kMarginVoxels * field.voxelSize()))),
-             field.units())
-{
-}
+    : mRegion(region), mInnerLeaves(leavesMeeting(field.grid(), region)),
+      mField(
+          extractLeaves(field.grid(), leavesMeeting(field.grid(), region.grownBy(kMarginVoxels * field.voxelSize()))),
+          field.units())
+{}
 
 void LocalPatch::redistance()
 {
@@ -102,7 +100,8 @@ void LocalPatch::offsetSurface(const FalloffBall& ball, double amountWorld)
     const auto& xform = mField.grid().transform();
     const int n = substepsFor(amountWorld, mField.voxelSize());
     for (int i = 0; i < n; ++i) {
-        remapActive(Capsule::ball(ball.centreWorld, ball.radiusWorld), [&](const openvdb::Coord& ijk, const ConstAccessor& acc) {
+        remapActive(Capsule::ball(ball.centreWorld, ball.radiusWorld), [&](const openvdb::Coord& ijk,
+                                                                           const ConstAccessor& acc) {
             return acc.getValue(ijk) - amountWorld / n * ball.weightAt(closestSurfacePointAt(acc, ijk, xform));
         });
         redistance();
@@ -149,4 +148,4 @@ DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal) const
     return touched;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

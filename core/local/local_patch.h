@@ -19,7 +19,6 @@
 
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tree/LeafManager.h>
-
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -113,7 +112,7 @@ void LocalPatch::remapActive(const Capsule& region, const ValueFn& value)
     const Capsule indexRegion = region.inIndexSpace(grid.transform());
     const float background = grid.background();
     openvdb::tree::LeafManager<openvdb::FloatTree> leaves(grid.tree());
-    leaves.foreach([&](LeafT& leaf, size_t) {
+    leaves.foreach ([&](LeafT& leaf, size_t) {
         const ConstAccessor acc = frozen->getConstAccessor();
         for (auto it = leaf.beginValueOn(); it; ++it) {
             if (!indexRegion.contains(it.getCoord().asVec3d())) continue;
@@ -138,9 +137,10 @@ void LocalPatch::combineVoxels(const Capsule& region, float keptTile, const Comb
             if (!acc.probeConstLeaf(origins[i]) && acc.getValue(origins[i]) == keptTile) continue;
             for (auto ijk = openvdb::CoordBBox::createCube(origins[i], LeafT::DIM).begin(); ijk; ++ijk) {
                 const float old = acc.getValue(*ijk);
-                const float value = indexRegion.contains((*ijk).asVec3d())
-                                        ? std::clamp(float(combine(xform.indexToWorld(*ijk), old)), -background, background)
-                                        : old;
+                const float value =
+                    indexRegion.contains((*ijk).asVec3d())
+                        ? std::clamp(float(combine(xform.indexToWorld(*ijk), old)), -background, background)
+                        : old;
                 values[i][LeafT::coordToOffset(*ijk)] = value;
                 changed[i] |= value != old;
             }
@@ -159,4 +159,4 @@ void LocalPatch::advect(const Capsule& region, const DisplacementFn& displacemen
     });
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,15 +1,14 @@
 #include "core/local/sphere_stamp.h"
 
-#include "core/field/band_rule.h"
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/field/band_rule.h"
 
 #include <cmath>
 
 namespace sculpt {
 
-DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, double radiusWorld,
-                        CsgMode mode)
+DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, double radiusWorld, CsgMode mode)
 {
     if (!(radiusWorld > 0.0) || !std::isfinite(radiusWorld)) {
         throw InputError("stamp radius must be a positive number (got " + formatNumber(radiusWorld) + ")");
@@ -31,8 +30,7 @@ DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, do
                 const openvdb::Coord ijk(x, y, z);
                 const double ball = (xform.indexToWorld(ijk) - centreWorld).length() - radiusWorld;
                 const float old = acc.getValue(ijk);
-                const float value = mode == CsgMode::Add ? std::min(old, float(ball))
-                                                         : std::max(old, float(-ball));
+                const float value = mode == CsgMode::Add ? std::min(old, float(ball)) : std::max(old, float(-ball));
                 if (value == old) continue;
                 setBandValue(acc, ijk, toBand(value, background));
                 touched.addVoxel(ijk);
@@ -43,4 +41,4 @@ DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, do
     return touched;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -17,7 +17,6 @@ enum class CsgMode { Add, Carve };
 /// Stamps a ball of `radiusWorld` at `centreWorld`; marks and returns the touched leaves.
 /// Cost: the (2 (radius + band))^3 voxels around the ball, independent of the model's size.
 /// @throws InputError if the radius is not positive and finite or the centre is not finite.
-DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, double radiusWorld,
-                        CsgMode mode);
+DirtyRegion stampSphere(FieldImage& field, const openvdb::Vec3d& centreWorld, double radiusWorld, CsgMode mode);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -8,4 +8,4 @@ std::size_t BlockMesh::memoryBytes() const
            keys.capacity() * sizeof(keys[0]) + triangles.capacity() * sizeof(triangles[0]);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -15,9 +15,9 @@ namespace sculpt {
 /// block; they are sorted by key so neighbours can find them. The remaining vertices lie on the
 /// block's far faces and are owned by a neighbour, which computes them bit for bit alike.
 struct BlockMesh {
-    std::vector<std::array<float, 3>> positions;  ///< world space
-    std::vector<std::array<float, 3>> normals;    ///< unit, outwards (towards positive distance)
-    std::vector<std::uint64_t> keys;              ///< edgeKey of each vertex
+    std::vector<std::array<float, 3>> positions;          ///< world space
+    std::vector<std::array<float, 3>> normals;            ///< unit, outwards (towards positive distance)
+    std::vector<std::uint64_t> keys;                      ///< edgeKey of each vertex
     std::vector<std::array<std::uint32_t, 3>> triangles;  ///< local indices, CCW from outside
     std::uint32_t ownedCount = 0;
     std::uint64_t version = 0;  ///< mesher version at which this mesh was made
@@ -33,8 +33,8 @@ struct BlockMesh {
 inline std::uint64_t edgeKey(int x, int y, int z, int axis)
 {
     constexpr std::int64_t bias = 1 << 19;
-    return (std::uint64_t(x + bias) << 42) | (std::uint64_t(y + bias) << 22) |
-           (std::uint64_t(z + bias) << 2) | std::uint64_t(axis);
+    return (std::uint64_t(x + bias) << 42) | (std::uint64_t(y + bias) << 22) | (std::uint64_t(z + bias) << 2) |
+           std::uint64_t(axis);
 }
 
 /// Voxel coordinate `axis` (0..2) of the start of the edge named by `key`.
@@ -45,4 +45,4 @@ inline int edgeKeyCoord(std::uint64_t key, int axis)
     return int(std::int64_t(key >> shift & 0xFFFFF) - bias);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

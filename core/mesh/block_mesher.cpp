@@ -23,26 +23,25 @@ constexpr double kMinEdgeFraction = 1e-3;
 /// Marks a slot holding an index among the foreign vertices (stored after the owned ones).
 constexpr std::uint32_t kForeign = 1u << 31;
 
-} // namespace
+}  // namespace
 
 /// Per-thread buffers, sized once for the block size and reused for every block.
 struct BlockMesher::Scratch {
     int B;
-    int S;                             // B + 3 samples per axis, from origin - 1
-    int N;                             // B + 1 voxels per axis in [origin, origin + B]
-    std::vector<float> values;         // S^3 samples
-    std::vector<std::uint8_t> inside;  // N^3: sample < iso
-    std::vector<std::uint32_t> slot;   // N^3 * 4: vertex of each edge (3 axes) and cell centre
-    std::vector<std::uint8_t> cubes;   // B^3: sign configuration of each cell
+    int S;                                    // B + 3 samples per axis, from origin - 1
+    int N;                                    // B + 1 voxels per axis in [origin, origin + B]
+    std::vector<float> values;                // S^3 samples
+    std::vector<std::uint8_t> inside;         // N^3: sample < iso
+    std::vector<std::uint32_t> slot;          // N^3 * 4: vertex of each edge (3 axes) and cell centre
+    std::vector<std::uint8_t> cubes;          // B^3: sign configuration of each cell
     std::vector<std::uint8_t> rowHasSurface;  // B^2: some cell of row (x, y) may be cut
     std::vector<std::uint8_t> columnSigns;    // N^2: bit 0 some voxel inside, bit 1 some outside
 
     explicit Scratch(int blockVoxels)
-        : B(blockVoxels), S(blockVoxels + 3), N(blockVoxels + 1), values(size_t(S) * S * S),
-          inside(size_t(N) * N * N), slot(size_t(N) * N * N * 4), cubes(size_t(B) * B * B),
-          rowHasSurface(size_t(B) * B), columnSigns(size_t(N) * N)
-    {
-    }
+        : B(blockVoxels), S(blockVoxels + 3), N(blockVoxels + 1), values(size_t(S) * S * S), inside(size_t(N) * N * N),
+          slot(size_t(N) * N * N * 4), cubes(size_t(B) * B * B), rowHasSurface(size_t(B) * B),
+          columnSigns(size_t(N) * N)
+    {}
 
     void gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin);
     /// Fills `inside`; false if the block's voxels all have one sign.
@@ -124,8 +123,7 @@ struct Placement {
     explicit Placement(const openvdb::math::Transform& xform)
         : worldFromIndex(xform.baseMap()->getAffineMap()->getMat4()),
           normalFromGradient(worldFromIndex.getMat3().inverse())
-    {
-    }
+    {}
 
     openvdb::Vec3d point(const openvdb::Vec3d& p) const { return worldFromIndex.transform(p); }
     openvdb::Vec3d normal(const openvdb::Vec3d& g) const { return normalFromGradient * g; }
@@ -135,11 +133,10 @@ struct Placement {
 /// order (owned, then foreign: no sort needed), then cell triangles, then centre vertices.
 class BlockBuilder {
 public:
-    BlockBuilder(BlockMesher::Scratch& s, const Placement& placement, const openvdb::Coord& origin,
-                 BlockMesh& out)
-        : s(s), B(s.B), N(s.N), placement(placement), origin(origin), out(out)
-    {
-    }
+    BlockBuilder(BlockMesher::Scratch& scratch, const Placement& place, const openvdb::Coord& blockOrigin,
+                 BlockMesh& mesh)
+        : s(scratch), B(scratch.B), N(scratch.N), placement(place), origin(blockOrigin), out(mesh)
+    {}
 
     void run()
     {
@@ -157,10 +154,7 @@ private:
     const mc::Case* const cases = &mc::cubeCase(0);  // the 256 cases, contiguous
 
     size_t voxel(int x, int y, int z) const { return size_t((x * N + y) * N + z); }
-    float value(int x, int y, int z) const
-    {
-        return s.values[size_t(((x + 1) * s.S + (y + 1)) * s.S + (z + 1))];
-    }
+    float value(int x, int y, int z) const { return s.values[size_t(((x + 1) * s.S + (y + 1)) * s.S + (z + 1))]; }
 
     unsigned cubeIndex(int x, int y, int z) const { return s.cubes[size_t((x * B + y) * B + z)]; }
     bool rowHasSurface(int x, int y) const
@@ -170,8 +164,7 @@ private:
     /// Edges from voxel row (x, y) belong only to cells of rows x-1..x, y-1..y.
     bool touchesSurface(int x, int y) const
     {
-        return rowHasSurface(x, y) || rowHasSurface(x - 1, y) || rowHasSurface(x, y - 1) ||
-               rowHasSurface(x - 1, y - 1);
+        return rowHasSurface(x, y) || rowHasSurface(x - 1, y) || rowHasSurface(x, y - 1) || rowHasSurface(x - 1, y - 1);
     }
 
     const mc::Triangulation& triangulation(int x, int y, int z, unsigned cube) const
@@ -298,7 +291,7 @@ private:
     }
 };
 
-} // namespace
+}  // namespace
 
 BlockMesh BlockMesher::mesh(const openvdb::FloatTree& tree, const openvdb::math::Transform& xform,
                             const openvdb::Coord& origin)
@@ -318,4 +311,4 @@ BlockMesh BlockMesher::mesh(const openvdb::FloatTree& tree, const openvdb::math:
     return out;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

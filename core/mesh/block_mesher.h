@@ -29,8 +29,7 @@ public:
 
     /// Meshes the block at `origin` (a multiple of B) of the zero iso-surface of `tree`.
     /// Cost: O(B^3) for the gather and sign test, plus O(triangles). Reusable; one per thread.
-    BlockMesh mesh(const openvdb::FloatTree& tree, const openvdb::math::Transform& xform,
-                   const openvdb::Coord& origin);
+    BlockMesh mesh(const openvdb::FloatTree& tree, const openvdb::math::Transform& xform, const openvdb::Coord& origin);
 
     struct Scratch;  ///< per-thread buffers (defined in the .cpp)
 
@@ -38,4 +37,4 @@ private:
     std::unique_ptr<Scratch> mScratch;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -3,7 +3,6 @@
 #include "core/mesh/incremental_mesher.h"
 
 #include <openvdb/tree/LeafManager.h>
-
 #include <tbb/parallel_reduce.h>
 
 #include <numeric>
@@ -34,8 +33,8 @@ struct CrossingBounds {
         }
     }
 
-    void addCrossings(openvdb::tree::ValueAccessor<const openvdb::FloatTree>& acc,
-                      const openvdb::Coord& ijk, float inside)
+    void addCrossings(openvdb::tree::ValueAccessor<const openvdb::FloatTree>& acc, const openvdb::Coord& ijk,
+                      float inside)
     {
         for (int axis = 0; axis < 3; ++axis) {
             for (int step : {-1, 1}) {
@@ -95,7 +94,7 @@ void measureMesh(const FieldImage& field, FieldMeasures& m)
     m.components = countShells(mesh);
 }
 
-} // namespace
+}  // namespace
 
 FieldMeasures measureField(const FieldImage& field)
 {
@@ -118,4 +117,4 @@ FieldMeasures measureField(const FieldImage& field)
     return m;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

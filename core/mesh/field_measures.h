@@ -9,16 +9,16 @@
 namespace sculpt {
 
 struct FieldMeasures {
-    double voxelSize = 0.0;            ///< world units per voxel edge
-    double halfWidthVoxels = 0.0;      ///< narrow-band half width
-    std::uint64_t activeVoxels = 0;    ///< voxels stored in the band
-    std::uint64_t memoryBytes = 0;     ///< in-core size of the grid's tree
-    openvdb::Vec3d bboxMin{0.0};       ///< world bounding box of the surface (empty shape: 0)
+    double voxelSize = 0.0;          ///< world units per voxel edge
+    double halfWidthVoxels = 0.0;    ///< narrow-band half width
+    std::uint64_t activeVoxels = 0;  ///< voxels stored in the band
+    std::uint64_t memoryBytes = 0;   ///< in-core size of the grid's tree
+    openvdb::Vec3d bboxMin{0.0};     ///< world bounding box of the surface (empty shape: 0)
     openvdb::Vec3d bboxMax{0.0};
-    double volume = 0.0;               ///< enclosed volume, world units^3 (of the welded mesh)
-    double area = 0.0;                 ///< surface area, world units^2 (of the welded mesh)
-    int eulerCharacteristic = 0;       ///< 2 - 2 genus per closed component (of the mesh)
-    int components = 0;                ///< closed shells (of the mesh)
+    double volume = 0.0;          ///< enclosed volume, world units^3 (of the welded mesh)
+    double area = 0.0;            ///< surface area, world units^2 (of the welded mesh)
+    int eulerCharacteristic = 0;  ///< 2 - 2 genus per closed component (of the mesh)
+    int components = 0;           ///< closed shells (of the mesh)
 };
 
 /// Measures a field image. Volume, area, Euler characteristic (V - E + F) and components (shells)
@@ -27,4 +27,4 @@ struct FieldMeasures {
 /// in the band size, parallel.
 FieldMeasures measureField(const FieldImage& field);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -10,9 +10,9 @@
 /// tells a viewer which blocks to upload or discard. weldedMesh() joins the blocks into one
 /// closed mesh by their exact global edge keys (Ferley et al., "Practical volumetric sculpting").
 
-#include "core/mesh/block_mesh.h"
 #include "core/field/dirty_region.h"
 #include "core/field/field_image.h"
+#include "core/mesh/block_mesh.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <map>
@@ -62,7 +62,6 @@ private:
 };
 
 /// One-shot: the welded zero iso-surface of a field image. Cost: linear in the band.
-TriangleMesh meshLevelSet(const FieldImage& field,
-                          int blockVoxels = IncrementalMesher::kDefaultBlockVoxels);
+TriangleMesh meshLevelSet(const FieldImage& field, int blockVoxels = IncrementalMesher::kDefaultBlockVoxels);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -118,8 +118,10 @@ std::vector<Triangle> triangulateLoop(const std::vector<int>& loop)
         for (int i = 0; i + len < n; ++i) {
             const int j = i + len;
             for (int k = i + 1; k < j && apex[size_t(i)][size_t(j)] < 0; ++k) {
-                const bool left = k == i + 1 || (apex[size_t(i)][size_t(k)] >= 0 && diagonalAllowed(loop[size_t(i)], loop[size_t(k)]));
-                const bool right = k == j - 1 || (apex[size_t(k)][size_t(j)] >= 0 && diagonalAllowed(loop[size_t(k)], loop[size_t(j)]));
+                const bool left = k == i + 1 || (apex[size_t(i)][size_t(k)] >= 0 &&
+                                                 diagonalAllowed(loop[size_t(i)], loop[size_t(k)]));
+                const bool right = k == j - 1 || (apex[size_t(k)][size_t(j)] >= 0 &&
+                                                  diagonalAllowed(loop[size_t(k)], loop[size_t(j)]));
                 if (left && right) apex[size_t(i)][size_t(j)] = k;
             }
         }
@@ -146,8 +148,7 @@ std::vector<Triangle> fanAroundCentre(const std::vector<int>& loop, Triangulatio
     std::vector<Triangle> out;
     for (size_t i = 0; i < loop.size(); ++i) {
         t.centreLoop[t.centreLoopSize++] = std::uint8_t(loop[i]);
-        out.push_back({std::uint8_t(kCentre), std::uint8_t(loop[i]),
-                       std::uint8_t(loop[(i + 1) % loop.size()])});
+        out.push_back({std::uint8_t(kCentre), std::uint8_t(loop[i]), std::uint8_t(loop[(i + 1) % loop.size()])});
     }
     return out;
 }
@@ -217,17 +218,14 @@ const Table& table()
     return instance;
 }
 
-} // namespace
+}  // namespace
 
 int edgeCorner(int e) { return kEdgeCorner[e]; }
 
 const Face& face(int f) { return kFaces[f]; }
 
-const Triangulation& Case::triangulation(unsigned bits) const
-{
-    return table().entries[firstEntry + bits];
-}
+const Triangulation& Case::triangulation(unsigned bits) const { return table().entries[firstEntry + bits]; }
 
 const Case& cubeCase(unsigned cubeIndex) { return table().cases[cubeIndex]; }
 
-} // namespace sculpt::mc
+}  // namespace sculpt::mc

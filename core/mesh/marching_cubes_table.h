@@ -56,7 +56,7 @@ struct Triangulation {
 struct Case {
     std::uint8_t ambiguousFaceCount = 0;
     std::array<std::uint8_t, 6> ambiguousFaces{};  ///< indices into face()
-    bool mayUseCentre = false;  ///< some triangulation of this case has a centre vertex
+    bool mayUseCentre = false;                     ///< some triangulation of this case has a centre vertex
     /// Triangulation for the decision bits `bits` (bit k: ambiguous face k joins its inside
     /// corners).
     const Triangulation& triangulation(unsigned bits) const;
@@ -76,4 +76,4 @@ inline bool insideCornersJoin(float v0, float v1, float v2, float v3)
     return v0 < 0.0f ? p02 > p13 : p13 > p02;
 }
 
-} // namespace sculpt::mc
+}  // namespace sculpt::mc

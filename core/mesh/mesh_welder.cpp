@@ -88,7 +88,7 @@ struct Welder {
     }
 };
 
-} // namespace
+}  // namespace
 
 TriangleMesh weldBlocks(const std::map<openvdb::Coord, BlockMesh>& blocks, int blockVoxels)
 {
@@ -109,4 +109,4 @@ TriangleMesh weldBlocks(const std::map<openvdb::Coord, BlockMesh>& blocks, int b
     return out;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

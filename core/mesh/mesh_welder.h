@@ -17,4 +17,4 @@ namespace sculpt {
 /// whose signs change outside its leaves) is appended once. Parallel, deterministic.
 TriangleMesh weldBlocks(const std::map<openvdb::Coord, BlockMesh>& blocks, int blockVoxels);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -13,17 +13,28 @@ namespace sculpt {
 /// are then filled in parallel (first touch on every core) instead of zeroed by one thread.
 template <typename T>
 struct UninitialisedAllocator : std::allocator<T> {
-    template <typename U> struct rebind { using other = UninitialisedAllocator<U>; };
+    template <typename U>
+    struct rebind {
+        using other = UninitialisedAllocator<U>;
+    };
     UninitialisedAllocator() = default;
-    template <typename U> UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
-    template <typename U> void construct(U* p) { ::new (static_cast<void*>(p)) U; }
-    template <typename U, typename... Args> void construct(U* p, Args&&... args)
+    template <typename U>
+    UninitialisedAllocator(const UninitialisedAllocator<U>&)
+    {}
+    template <typename U>
+    void construct(U* p)
+    {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U* p, Args&&... args)
     {
         ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 };
 
-template <typename T> using MeshArray = std::vector<T, UninitialisedAllocator<T>>;
+template <typename T>
+using MeshArray = std::vector<T, UninitialisedAllocator<T>>;
 
 struct TriangleMesh {
     /// #V world-space positions.
@@ -34,4 +45,4 @@ struct TriangleMesh {
     MeshArray<std::array<std::uint32_t, 3>> triangles;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,10 +1,10 @@
 #include "core/motion/level_set_evolution.h"
 
+#include "core/base/errors.h"
+#include "core/base/text_format.h"
 #include "core/field/central_difference.h"
 #include "core/field/dense_gather.h"
-#include "core/base/errors.h"
 #include "core/local/local_patch.h"
-#include "core/base/text_format.h"
 #include "core/motion/volume_estimate.h"
 
 #include <openvdb/math/FiniteDifference.h>
@@ -12,7 +12,6 @@
 #include <openvdb/tools/LevelSetTracker.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tree/LeafManager.h>
-
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
@@ -32,10 +31,14 @@ constexpr int kDim = int(LeafT::DIM) + 2 * kApron;
 /// A leaf and its apron, densely: at(x, y, z) for leaf-local x, y, z in [-3, 10].
 struct LeafStencil {
     std::array<float, kDim * kDim * kDim> v;
-    float at(int x, int y, int z) const { return v[size_t(((x + kApron) * kDim + (y + kApron)) * kDim + (z + kApron))]; }
+    float at(int x, int y, int z) const
+    {
+        return v[size_t(((x + kApron) * kDim + (y + kApron)) * kDim + (z + kApron))];
+    }
     void gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin)
     {
-        gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-kApron), origin.offsetBy(LeafT::DIM - 1 + kApron)), v.data());
+        gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-kApron), origin.offsetBy(LeafT::DIM - 1 + kApron)),
+                    v.data());
     }
 };
 
@@ -66,12 +69,10 @@ struct StepConstants {
 };
 
 /// One-sided differences along `axis` at (x, y, z): minus and plus.
-void oneSided(const LeafStencil& s, int x, int y, int z, int axis, GradientScheme scheme,
-              double invH, double& minus, double& plus)
+void oneSided(const LeafStencil& s, int x, int y, int z, int axis, GradientScheme scheme, double invH, double& minus,
+              double& plus)
 {
-    auto f = [&](int k) {
-        return s.at(x + (axis == 0) * k, y + (axis == 1) * k, z + (axis == 2) * k);
-    };
+    auto f = [&](int k) { return s.at(x + (axis == 0) * k, y + (axis == 1) * k, z + (axis == 2) * k); };
     if (scheme == GradientScheme::FirstOrder) {
         minus = (f(0) - f(-1)) * invH;
         plus = (f(1) - f(0)) * invH;
@@ -90,11 +91,15 @@ double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
     const double f = s.at(x, y, z);
     const double dx = 0.5 * (s.at(x + 1, y, z) - s.at(x - 1, y, z)), dy = 0.5 * (s.at(x, y + 1, z) - s.at(x, y - 1, z)),
                  dz = 0.5 * (s.at(x, y, z + 1) - s.at(x, y, z - 1));
-    const double dxx = s.at(x + 1, y, z) - 2 * f + s.at(x - 1, y, z), dyy = s.at(x, y + 1, z) - 2 * f + s.at(x, y - 1, z),
+    const double dxx = s.at(x + 1, y, z) - 2 * f + s.at(x - 1, y, z),
+                 dyy = s.at(x, y + 1, z) - 2 * f + s.at(x, y - 1, z),
                  dzz = s.at(x, y, z + 1) - 2 * f + s.at(x, y, z - 1);
-    const double dxy = 0.25 * (s.at(x + 1, y + 1, z) - s.at(x + 1, y - 1, z) - s.at(x - 1, y + 1, z) + s.at(x - 1, y - 1, z));
-    const double dxz = 0.25 * (s.at(x + 1, y, z + 1) - s.at(x + 1, y, z - 1) - s.at(x - 1, y, z + 1) + s.at(x - 1, y, z - 1));
-    const double dyz = 0.25 * (s.at(x, y + 1, z + 1) - s.at(x, y + 1, z - 1) - s.at(x, y - 1, z + 1) + s.at(x, y - 1, z - 1));
+    const double dxy =
+        0.25 * (s.at(x + 1, y + 1, z) - s.at(x + 1, y - 1, z) - s.at(x - 1, y + 1, z) + s.at(x - 1, y - 1, z));
+    const double dxz =
+        0.25 * (s.at(x + 1, y, z + 1) - s.at(x + 1, y, z - 1) - s.at(x - 1, y, z + 1) + s.at(x - 1, y, z - 1));
+    const double dyz =
+        0.25 * (s.at(x, y + 1, z + 1) - s.at(x, y + 1, z - 1) - s.at(x, y - 1, z + 1) + s.at(x, y - 1, z - 1));
     const double g2 = dx * dx + dy * dy + dz * dz;
     if (g2 < 1e-12) return 0.0;
     const double num = dx * dx * (dyy + dzz) + dy * dy * (dxx + dzz) + dz * dz * (dxx + dyy) -
@@ -105,7 +110,7 @@ double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
 /// The right-hand side dphi/dt at one voxel.
 class VoxelRate {
 public:
-    explicit VoxelRate(const StepConstants& c) : c(c)
+    explicit VoxelRate(const StepConstants& constants) : c(constants)
     {
         if (c.target) mTarget.emplace(*c.target);
     }
@@ -139,8 +144,8 @@ private:
     double extendedSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
         const openvdb::Vec3d foot = closestSurfacePoint(
-            ijk.asVec3d(), s.at(x, y, z), centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z),
-            c.invH);
+            ijk.asVec3d(), s.at(x, y, z),
+            centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z), c.invH);
         double speed = 0.0;
         if (mTarget) {
             const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
@@ -160,8 +165,8 @@ private:
 };
 
 /// One explicit Euler stage over every leaf: out[i] = phi + dt * rate (inactive voxels kept).
-void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves,
-                const StepConstants& c, double dt, std::vector<LeafValues>& out)
+void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves, const StepConstants& c, double dt,
+                std::vector<LeafValues>& out)
 {
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
         LeafStencil stencil;
@@ -226,8 +231,9 @@ void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
     auto& tree = grid.tree();
     auto leaves = leafList(tree);
     // Leaves that cannot move are neither copied nor written (a brush on a patch).
-    leaves.erase(std::remove_if(leaves.begin(), leaves.end(), [&](const LeafT* leaf) { return c.leafIsStill(leaf->origin()); }),
-                 leaves.end());
+    leaves.erase(
+        std::remove_if(leaves.begin(), leaves.end(), [&](const LeafT* leaf) { return c.leafIsStill(leaf->origin()); }),
+        leaves.end());
     if (c.firstOrderTime) {
         std::vector<LeafValues> next(leaves.size());
         eulerStage(tree, leaves, c, dt, next);
@@ -261,7 +267,7 @@ void redistanceGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
     tracker.track();
 }
 
-} // namespace
+}  // namespace
 
 LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
                                      std::optional<MotionRegion> region)
@@ -394,4 +400,4 @@ void LevelSetEvolution::advance(double duration)
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -27,10 +27,10 @@ enum class GradientScheme { FirstOrder, Weno5 };
 
 struct EvolutionOptions {
     GradientScheme scheme = GradientScheme::Weno5;  ///< upwind differences of the advection
-    double cfl = 0.5;                   ///< fraction of a voxel the surface may move per step
-    double redistanceAfterMovingVoxels = 0.5;   ///< rebuild the band once the surface may have moved this far
-    double redistanceAfterDiffusingVoxels2 = 0.5; ///< ... or once beta t (curvature diffusion) reaches this h^2
-    int normalizeIterations = 1;        ///< LevelSetTracker normalisation sweeps per rebuild
+    double cfl = 0.5;                               ///< fraction of a voxel the surface may move per step
+    double redistanceAfterMovingVoxels = 0.5;       ///< rebuild the band once the surface may have moved this far
+    double redistanceAfterDiffusingVoxels2 = 0.5;   ///< ... or once beta t (curvature diffusion) reaches this h^2
+    int normalizeIterations = 1;                    ///< LevelSetTracker normalisation sweeps per rebuild
     /// Forward Euler instead of TVD-RK2: half the work, for motions whose path in time does not
     /// matter, only where they lead (a smoothing brush); same stability limit for diffusion.
     bool firstOrderTime = false;
@@ -74,4 +74,4 @@ private:
     double mDiffusedSinceRedistance = 0.0;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

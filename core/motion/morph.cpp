@@ -1,14 +1,13 @@
 #include "core/motion/morph.h"
 
 #include "core/base/errors.h"
-#include "core/motion/level_set_evolution.h"
 #include "core/base/text_format.h"
+#include "core/motion/level_set_evolution.h"
 #include "core/motion/volume_estimate.h"
 
 #include <openvdb/tools/GridTransformer.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tree/LeafManager.h>
-
 #include <tbb/parallel_reduce.h>
 
 #include <cmath>
@@ -106,8 +105,8 @@ private:
 };
 
 /// First pass: how long the plain target-following motion takes to converge.
-double convergenceTime(const FieldImage& start, const FieldImage& target, const MorphOptions& o,
-                       double tolerance, const Progress& progress)
+double convergenceTime(const FieldImage& start, const FieldImage& target, const MorphOptions& o, double tolerance,
+                       const Progress& progress)
 {
     FieldImage field(start.grid().deepCopy());
     LevelSetEvolution evolution(field, targetTerms(target));
@@ -121,7 +120,7 @@ double convergenceTime(const FieldImage& start, const FieldImage& target, const 
     return evolution.time();
 }
 
-} // namespace
+}  // namespace
 
 double surfaceDistance(const FieldImage& field, const FieldImage& target)
 {
@@ -209,4 +208,4 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     return summary;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -5,8 +5,8 @@
 ///        where it is smaller, through changes of topology, optionally on a straight line of
 ///        volumes between the two shapes.
 
-#include "core/field/field_image.h"
 #include "core/base/progress.h"
+#include "core/field/field_image.h"
 
 #include <functional>
 #include <vector>
@@ -51,4 +51,4 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
 /// where the surface crosses grid edges. Both grids must share their transform.
 double surfaceDistance(const FieldImage& field, const FieldImage& target);
 
-} // namespace sculpt
+}  // namespace sculpt

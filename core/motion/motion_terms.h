@@ -63,4 +63,4 @@ struct MotionTerms {
     std::optional<UniformTerm> uniform;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,8 +1,8 @@
 #include "core/motion/surface_flows.h"
 
 #include "core/base/errors.h"
-#include "core/motion/level_set_evolution.h"
 #include "core/base/text_format.h"
+#include "core/motion/level_set_evolution.h"
 #include "core/motion/volume_estimate.h"
 
 #include <cmath>
@@ -38,4 +38,4 @@ void offset(FieldImage& field, double distanceWorld, const Progress& progress)
     evolution.redistance();
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -2,8 +2,8 @@
 /// @file level_set_operations.h
 /// @brief Whole-shape operations built on LevelSetEvolution: smooth and offset.
 
-#include "core/field/field_image.h"
 #include "core/base/progress.h"
+#include "core/field/field_image.h"
 
 namespace sculpt {
 
@@ -18,4 +18,4 @@ void smooth(FieldImage& field, int iterations, bool keepVolume = false, const Pr
 /// voxel per step, renormalising as it goes. Cost: |distance| / (h / 2) steps x band.
 void offset(FieldImage& field, double distanceWorld, const Progress& progress = {});
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,8 +1,8 @@
 #include "core/motion/volume_estimate.h"
 
 #include "core/field/central_difference.h"
-#include <openvdb/tree/LeafManager.h>
 
+#include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_reduce.h>
 
 #include <cmath>
@@ -44,4 +44,4 @@ VolumeArea estimateVolumeArea(const openvdb::FloatGrid& grid)
     return {(voxels.first + tileVoxels) * h * h * h, voxels.second * h * h};
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -20,4 +20,4 @@ struct VolumeArea {
 /// Cost: one parallel pass over the leaves, plus the tiles.
 VolumeArea estimateVolumeArea(const openvdb::FloatGrid& grid);
 
-} // namespace sculpt
+}  // namespace sculpt

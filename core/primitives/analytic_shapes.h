@@ -28,4 +28,4 @@ FieldImage makeBox(double halfSideWorld, double voxelSize,
 FieldImage makeTorus(double majorRadiusWorld, double minorRadiusWorld, double voxelSize,
                      double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -12,15 +12,14 @@ constexpr EnumNames<KernelType, 3> kKernelNames{{{KernelType::BlobbyMolecule, "b
                                                  {KernelType::Metaball, "metaball"},
                                                  {KernelType::SoftObject, "soft-object"}}};
 
-} // namespace
+}  // namespace
 
 double Kernel::value(double r) const
 {
     if (r >= radius) return 0.0;
     const double q = r / radius, q2 = q * q;
     switch (type) {
-    case KernelType::BlobbyMolecule:
-        return strength * std::exp(-9.0 * q2);
+    case KernelType::BlobbyMolecule: return strength * std::exp(-9.0 * q2);
     case KernelType::Metaball:
         return q <= 1.0 / 3.0 ? strength * (1.0 - 3.0 * q2) : 1.5 * strength * (1.0 - q) * (1.0 - q);
     case KernelType::SoftObject:
@@ -45,4 +44,4 @@ const char* kernelName(KernelType type) { return enumName(kKernelNames, type); }
 
 KernelType kernelFromName(const std::string& name) { return enumFromName(kKernelNames, name, "kernel"); }
 
-} // namespace sculpt
+}  // namespace sculpt

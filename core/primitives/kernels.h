@@ -33,4 +33,4 @@ const char* kernelName(KernelType type);
 /// @throws InputError naming the unknown kernel.
 KernelType kernelFromName(const std::string& name);
 
-} // namespace sculpt
+}  // namespace sculpt

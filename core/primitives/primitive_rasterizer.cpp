@@ -1,12 +1,11 @@
 #include "core/primitives/primitive_rasterizer.h"
 
+#include "core/base/memory_budget.h"
 #include "core/field/band_rule.h"
 #include "core/field/central_difference.h"
-#include "core/base/memory_budget.h"
 
 #include <openvdb/tools/LevelSetTracker.h>
 #include <openvdb/tools/SignedFloodFill.h>
-
 #include <tbb/parallel_for.h>
 
 #include <map>
@@ -22,15 +21,16 @@ constexpr int kSamples = kLeafDim + 2;  // the leaf and one voxel around it, for
 
 /// Leaf origins meeting any primitive's influence (grown by `marginVoxels`), each with the
 /// primitives that reach it.
-std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set,
-                                                         const openvdb::math::Transform& xform, int marginVoxels)
+std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set, const openvdb::math::Transform& xform,
+                                                         int marginVoxels)
 {
     std::map<openvdb::Coord, std::vector<int>> leaves;
     for (int i = 0; i < int(set.primitives().size()); ++i) {
         const openvdb::BBoxd box = set.influence(i);
         const openvdb::Coord lo = xform.worldToIndexCellCentered(box.min()).offsetBy(-marginVoxels);
         const openvdb::Coord hi = xform.worldToIndexCellCentered(box.max()).offsetBy(marginVoxels);
-        requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float), describePrimitive(i, set.primitives()[size_t(i)].name));
+        requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float),
+                      describePrimitive(i, set.primitives()[size_t(i)].name));
         for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(openvdb::CoordBBox(lo, hi))) {
             leaves[origin].push_back(i);
         }
@@ -43,7 +43,9 @@ std::unique_ptr<LeafT> sampleLeaf(const PrimitiveSet& set, const std::vector<int
                                   const openvdb::math::Transform& xform, const openvdb::Coord& origin, float background)
 {
     std::array<double, kSamples * kSamples * kSamples> g;
-    auto at = [&](int x, int y, int z) -> double& { return g[size_t(((x + 1) * kSamples + (y + 1)) * kSamples + (z + 1))]; };
+    auto at = [&](int x, int y, int z) -> double& {
+        return g[size_t(((x + 1) * kSamples + (y + 1)) * kSamples + (z + 1))];
+    };
     const openvdb::Mat4d worldFromIndex = xform.baseMap()->getAffineMap()->getMat4();  // no virtual call per sample
     for (int x = -1; x <= kLeafDim; ++x)
         for (int y = -1; y <= kLeafDim; ++y)
@@ -58,7 +60,8 @@ std::unique_ptr<LeafT> sampleLeaf(const PrimitiveSet& set, const std::vector<int
         const int x = c.x(), y = c.y(), z = c.z();
         const double slope = centralDifference(at, x, y, z).length() / (2.0 * h);
         const double value = at(x, y, z);
-        const double distance = std::abs(value) < slope * background ? value / slope : (value < 0 ? -background : background);
+        const double distance =
+            std::abs(value) < slope * background ? value / slope : (value < 0 ? -background : background);
         const BandValue band = toBand(distance, double(background));
         it.setValue(band.value);
         it.setValueOn(band.active);
@@ -89,7 +92,7 @@ LeafClass classifyLeaf(const PrimitiveSet& set, const std::vector<int>& nearby, 
     return LeafClass::Surface;
 }
 
-} // namespace
+}  // namespace
 
 FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform, double halfWidthVoxels)
 {
@@ -105,7 +108,8 @@ FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Tra
     tbb::parallel_for(tbb::blocked_range<size_t>(0, work.size()), [&](const auto& r) {
         for (size_t i = r.begin(); i < r.end(); ++i) {
             classes[i] = classifyLeaf(set, *work[i].second, xform, work[i].first, margin);
-            if (classes[i] == LeafClass::Surface) leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
+            if (classes[i] == LeafClass::Surface)
+                leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
         }
     });
     for (size_t i = 0; i < work.size(); ++i) {
@@ -121,4 +125,4 @@ FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Tra
     return FieldImage(grid);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -20,4 +20,4 @@ namespace sculpt {
 FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform,
                                double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -18,7 +18,8 @@ PrimitiveSet::PrimitiveSet(std::vector<Primitive> primitives, double iso, bool u
     : mPrimitives(std::move(primitives)), mIso(iso), mUseGraph(useGraph)
 {
     if (mPrimitives.empty()) throw InputError("the scene has no primitives");
-    if (!(iso > 0.0) || !std::isfinite(iso)) throw InputError("iso must be a positive number (got " + formatNumber(iso) + ")");
+    if (!(iso > 0.0) || !std::isfinite(iso))
+        throw InputError("iso must be a positive number (got " + formatNumber(iso) + ")");
     const int count = int(mPrimitives.size());
     for (int i = 0; i < count; ++i) {
         Primitive& p = mPrimitives[size_t(i)];
@@ -28,11 +29,12 @@ PrimitiveSet::PrimitiveSet(std::vector<Primitive> primitives, double iso, bool u
             throw InputError(what + ": radius must be a positive number (got " + formatNumber(p.kernel.radius) + ")");
         }
         if (!(p.kernel.strength > iso) || !std::isfinite(p.kernel.strength)) {
-            throw InputError(what + ": strength " + formatNumber(p.kernel.strength) +
-                             " must exceed the iso-value " + formatNumber(iso) + " or it has no surface");
+            throw InputError(what + ": strength " + formatNumber(p.kernel.strength) + " must exceed the iso-value " +
+                             formatNumber(iso) + " or it has no surface");
         }
         for (int j : p.neighbours) {
-            if (j < 0 || j >= count || j == i) throw InputError(what + ": neighbour " + std::to_string(j) + " names no other primitive");
+            if (j < 0 || j >= count || j == i)
+                throw InputError(what + ": neighbour " + std::to_string(j) + " names no other primitive");
         }
     }
     for (int i = 0; i < count; ++i) {  // blending is mutual
@@ -95,4 +97,4 @@ PrimitiveSet PrimitiveSet::translated(const openvdb::Vec3d& offset) const
     return moved;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

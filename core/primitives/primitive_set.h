@@ -55,4 +55,4 @@ private:
 /// "primitive 3 ('head')" or "primitive 3": how messages name a primitive.
 std::string describePrimitive(int index, const std::string& name);
 
-} // namespace sculpt
+}  // namespace sculpt

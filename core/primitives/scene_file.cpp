@@ -14,18 +14,19 @@ namespace sculpt {
 
 namespace {
 
-using nlohmann::json;
 using json_fields::field;
 using json_fields::number;
 using json_fields::vec3;
+using nlohmann::json;
 
 openvdb::Mat3d rotationFromDegrees(const openvdb::Vec3d& degrees)
 {
     openvdb::Mat3d m = openvdb::Mat3d::identity();
     for (int axis = 0; axis < 3; ++axis) {
-        openvdb::Mat3d r = openvdb::math::rotation<openvdb::Mat3d>(
-            axis == 0 ? openvdb::math::X_AXIS : axis == 1 ? openvdb::math::Y_AXIS : openvdb::math::Z_AXIS,
-            degrees[axis] * M_PI / 180.0);
+        openvdb::Mat3d r = openvdb::math::rotation<openvdb::Mat3d>(axis == 0   ? openvdb::math::X_AXIS
+                                                                   : axis == 1 ? openvdb::math::Y_AXIS
+                                                                               : openvdb::math::Z_AXIS,
+                                                                   degrees[axis] * M_PI / 180.0);
         m = r * m;
     }
     return m;
@@ -52,7 +53,8 @@ Skeleton parseSkeleton(const json& j, const std::string& where)
     case SkeletonType::Box:
         s.points[0] = vec3(field(j, "center", where), where + ": 'center'");
         s.halfExtents = vec3(field(j, "half_extents", where), where + ": 'half_extents'");
-        if (j.contains("rotation_degrees")) s.worldFromBox = rotationFromDegrees(vec3(j["rotation_degrees"], where + ": 'rotation_degrees'"));
+        if (j.contains("rotation_degrees"))
+            s.worldFromBox = rotationFromDegrees(vec3(j["rotation_degrees"], where + ": 'rotation_degrees'"));
         break;
     }
     return s;
@@ -97,7 +99,7 @@ std::vector<Primitive> parsePrimitives(const json& list, bool& graph, const std:
     return primitives;
 }
 
-} // namespace
+}  // namespace
 
 Scene parseScene(const std::string& text, const std::string& source)
 {
@@ -107,12 +109,13 @@ Scene parseScene(const std::string& text, const std::string& source)
     std::vector<Primitive> primitives = parsePrimitives(field(root, "primitives", source), graph, source);
     const double iso = root.contains("iso") ? number(root, "iso", source) : 0.5;
     Scene scene{[&] {
-        try {
-            return PrimitiveSet(std::move(primitives), iso, graph);
-        } catch (const InputError& e) {
-            throw InputError(source + ": " + e.what(), e.remedy());
-        }
-    }(), CsgOperation::Union, std::nullopt};
+                    try {
+                        return PrimitiveSet(std::move(primitives), iso, graph);
+                    } catch (const InputError& e) {
+                        throw InputError(source + ": " + e.what(), e.remedy());
+                    }
+                }(),
+                CsgOperation::Union, std::nullopt};
     if (root.contains("operation")) {
         const json& op = root["operation"];
         if (!op.is_string()) throw InputError(source + ": field 'operation' must be a string");
@@ -134,4 +137,4 @@ Scene readScene(const std::filesystem::path& path)
     return parseScene(text.str(), path.string());
 }
 
-} // namespace sculpt
+}  // namespace sculpt

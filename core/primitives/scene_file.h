@@ -31,4 +31,4 @@ Scene parseScene(const std::string& text, const std::string& source);
 /// Reads and parses a scene file. @throws InputError as parseScene, or if unreadable.
 Scene readScene(const std::filesystem::path& path);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,12 +1,11 @@
 #include "core/primitives/sdf_rasterizer.h"
 
-#include "core/field/band_rule.h"
 #include "core/base/errors.h"
-#include "core/base/text_format.h"
 #include "core/base/memory_budget.h"
+#include "core/base/text_format.h"
+#include "core/field/band_rule.h"
 
 #include <openvdb/tools/SignedFloodFill.h>
-
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -24,8 +23,7 @@ constexpr int kLeafDim = int(LeafT::DIM);
 void validate(const AnalyticSdf& sdf, double voxelSize, double halfWidthVoxels)
 {
     if (!(voxelSize > 0.0) || !std::isfinite(voxelSize)) {
-        throw InputError("voxel size must be a positive number (got " +
-                         formatNumber(voxelSize) + ")");
+        throw InputError("voxel size must be a positive number (got " + formatNumber(voxelSize) + ")");
     }
     if (!(halfWidthVoxels >= 1.0) || halfWidthVoxels > 64.0) {
         throw InputError("band half width must be between 1 and 64 voxels");
@@ -34,7 +32,7 @@ void validate(const AnalyticSdf& sdf, double voxelSize, double halfWidthVoxels)
     const double minExtent = std::min({extent.x(), extent.y(), extent.z()});
     if (!(minExtent >= 2.0 * voxelSize)) {
         throw InputError("the " + sdf.description + " is less than two voxels across at voxel size " +
-                         formatNumber(voxelSize) + "; choose a finer voxel size",
+                             formatNumber(voxelSize) + "; choose a finer voxel size",
                          Remedy::FinerVoxelSize);
     }
     const double maxIndex = std::max(sdf.bounds.min().length(), sdf.bounds.max().length()) / voxelSize;
@@ -47,8 +45,7 @@ void validate(const AnalyticSdf& sdf, double voxelSize, double halfWidthVoxels)
 }
 
 /// Origins of the leaves that may contain band voxels, sorted.
-std::vector<openvdb::Coord> candidateLeaves(const AnalyticSdf& sdf,
-                                            const openvdb::math::Transform& xform,
+std::vector<openvdb::Coord> candidateLeaves(const AnalyticSdf& sdf, const openvdb::math::Transform& xform,
                                             double bandWorld)
 {
     const int margin = int(std::ceil(bandWorld / xform.voxelSize()[0])) + 1;
@@ -67,8 +64,7 @@ std::vector<openvdb::Coord> candidateLeaves(const AnalyticSdf& sdf,
             for (int y = lo.y(); y <= hi.y(); y += kLeafDim) {
                 for (int z = lo.z(); z <= hi.z(); z += kLeafDim) {
                     const openvdb::Coord origin(x, y, z);
-                    const openvdb::Vec3d centre =
-                        xform.indexToWorld(origin.asVec3d() + 0.5 * (kLeafDim - 1));
+                    const openvdb::Vec3d centre = xform.indexToWorld(origin.asVec3d() + 0.5 * (kLeafDim - 1));
                     if (std::abs(sdf.distance(centre)) <= bandWorld + halfDiagonal) {
                         local.push_back(origin);
                     }
@@ -96,7 +92,7 @@ std::unique_ptr<LeafT> sampleLeaf(const AnalyticSdf& sdf, const openvdb::math::T
     return leaf;
 }
 
-} // namespace
+}  // namespace
 
 FieldImage rasterizeSdf(const AnalyticSdf& sdf, double voxelSize, double halfWidthVoxels)
 {
@@ -119,4 +115,4 @@ FieldImage rasterizeSdf(const AnalyticSdf& sdf, double voxelSize, double halfWid
     return FieldImage(grid);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -32,4 +32,4 @@ struct AnalyticSdf {
 FieldImage rasterizeSdf(const AnalyticSdf& sdf, double voxelSize,
                         double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels);
 
-} // namespace sculpt
+}  // namespace sculpt

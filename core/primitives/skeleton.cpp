@@ -56,7 +56,7 @@ double boxDistance(const Vec& p, const Skeleton& s)
     return outside.length();
 }
 
-} // namespace
+}  // namespace
 
 double Skeleton::distance(const openvdb::Vec3d& p) const
 {
@@ -74,8 +74,13 @@ openvdb::BBoxd Skeleton::bounds() const
     openvdb::BBoxd box;
     switch (type) {
     case SkeletonType::Point: box.expand(points[0]); break;
-    case SkeletonType::Segment: box.expand(points[0]); box.expand(points[1]); break;
-    case SkeletonType::Triangle: for (const auto& q : points) box.expand(q); break;
+    case SkeletonType::Segment:
+        box.expand(points[0]);
+        box.expand(points[1]);
+        break;
+    case SkeletonType::Triangle:
+        for (const auto& q : points) box.expand(q);
+        break;
     case SkeletonType::Box:
         for (int corner = 0; corner < 8; ++corner) {
             const Vec local((corner & 1 ? 1 : -1) * halfExtents[0], (corner & 2 ? 1 : -1) * halfExtents[1],
@@ -106,4 +111,4 @@ void Skeleton::validate(const std::string& what) const
 
 SkeletonType skeletonFromName(const std::string& name) { return enumFromName(kSkeletonNames, name, "skeleton"); }
 
-} // namespace sculpt
+}  // namespace sculpt

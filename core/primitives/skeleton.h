@@ -16,7 +16,7 @@ struct Skeleton {
     SkeletonType type = SkeletonType::Point;
     /// Point: [0]; segment: [0]-[1]; triangle: [0], [1], [2]; box: [0] the centre.
     std::array<openvdb::Vec3d, 3> points{};
-    openvdb::Vec3d halfExtents{0.0};                 ///< box only
+    openvdb::Vec3d halfExtents{0.0};                           ///< box only
     openvdb::Mat3d worldFromBox = openvdb::Mat3d::identity();  ///< box orientation (rotation)
 
     /// Distance from `p` to the skeleton (0 inside a box).
@@ -31,4 +31,4 @@ struct Skeleton {
 /// "point", "segment", "triangle", "box". @throws InputError for other names.
 SkeletonType skeletonFromName(const std::string& name);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -23,7 +23,7 @@ float godunov(float a, float b, float c, float h)
     return (s + std::sqrt(std::max(s * s - 3.0f * (a * a + b * b + c * c - h * h), 0.0f))) / 3.0f;
 }
 
-} // namespace
+}  // namespace
 
 void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, std::vector<float>& distance)
 {
@@ -42,7 +42,8 @@ void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, s
             for (std::ptrdiff_t x = 0; x < nx; ++x, ++i) {
                 const bool face = x == 0 || y == 0 || z == 0 || x == nx - 1 || y == ny - 1 || z == nz - 1;
                 mState[size_t(i)] = face ? kWall : distance[size_t(i)] < kFar ? kSeed : kOpen;
-                if (!face && distance[size_t(i)] < limit) mBuckets[bucketOf(distance[size_t(i)])].push_back(std::uint32_t(i));
+                if (!face && distance[size_t(i)] < limit)
+                    mBuckets[bucketOf(distance[size_t(i)])].push_back(std::uint32_t(i));
             }
         }
     }
@@ -56,7 +57,8 @@ void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, s
         for (const std::ptrdiff_t offset : {-stride[0], stride[0], -stride[1], stride[1], -stride[2], stride[2]}) {
             const size_t j = size_t(std::ptrdiff_t(i) + offset);
             if (mState[j] != kOpen) continue;
-            const float u = godunov(acceptedAlong(j, stride[0]), acceptedAlong(j, stride[1]), acceptedAlong(j, stride[2]), h);
+            const float u =
+                godunov(acceptedAlong(j, stride[0]), acceptedAlong(j, stride[1]), acceptedAlong(j, stride[2]), h);
             if (u < distance[j]) {
                 distance[j] = u;
                 if (u < limit) mBuckets[bucketOf(u)].push_back(std::uint32_t(j));
@@ -76,4 +78,4 @@ void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, s
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -32,4 +32,4 @@ private:
     std::vector<unsigned char> mState;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -35,7 +35,7 @@ void keepOnly(openvdb::FloatTree& tree, const openvdb::BoolTree& kept)
 {
     const float background = tree.background();
     openvdb::tree::LeafManager<openvdb::FloatTree> leaves(tree);
-    leaves.foreach([&](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
+    leaves.foreach ([&](openvdb::FloatTree::LeafNodeType& leaf, size_t) {
         const openvdb::tree::ValueAccessor<const openvdb::BoolTree> inKept(kept);
         for (auto it = leaf.beginValueAll(); it; ++it) {
             const bool member = inKept.isValueOn(it.getCoord());
@@ -50,7 +50,7 @@ void keepOnly(openvdb::FloatTree& tree, const openvdb::BoolTree& kept)
     openvdb::tools::pruneLevelSet(tree);
 }
 
-} // namespace
+}  // namespace
 
 LargestComponentReport keepLargestComponent(FieldImage& field)
 {
@@ -76,4 +76,4 @@ LargestComponentReport keepLargestComponent(FieldImage& field)
     return report;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -21,4 +21,4 @@ struct LargestComponentReport {
 /// Keeps the solid piece with the most voxels, its cavities filled.
 LargestComponentReport keepLargestComponent(FieldImage& field);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -13,9 +13,9 @@ using Leaf = openvdb::BoolTree::LeafNodeType;
 using Bits = std::array<std::uint64_t, 8>;
 
 constexpr std::uint64_t kZ0 = 0x0101010101010101ull;  // bits with z = 0
-constexpr std::uint64_t kZ7 = kZ0 << 7;                // bits with z = 7
-constexpr std::uint64_t kY0 = 0xFFull;                 // bits with y = 0
-constexpr std::uint64_t kY7 = kY0 << 56;               // bits with y = 7
+constexpr std::uint64_t kZ7 = kZ0 << 7;               // bits with z = 7
+constexpr std::uint64_t kY0 = 0xFFull;                // bits with y = 0
+constexpr std::uint64_t kY7 = kY0 << 56;              // bits with y = 7
 
 Bits bitsOf(const Leaf::NodeMaskType& mask)
 {
@@ -37,7 +37,8 @@ Bits dilated(const Bits& b)
     Bits d;
     for (size_t x = 0; x < 8; ++x) {
         const std::uint64_t w = b[x];
-        d[x] = w | ((w << 1) & ~kZ0) | ((w >> 1) & ~kZ7) | (w << 8) | (w >> 8) | (x > 0 ? b[x - 1] : 0) | (x < 7 ? b[x + 1] : 0);
+        d[x] = w | ((w << 1) & ~kZ0) | ((w >> 1) & ~kZ7) | (w << 8) | (w >> 8) | (x > 0 ? b[x - 1] : 0) |
+               (x < 7 ? b[x + 1] : 0);
     }
     return d;
 }
@@ -113,7 +114,7 @@ void flood(const openvdb::BoolTree& mask, openvdb::BoolTree& visited, const open
     }
 }
 
-} // namespace
+}  // namespace
 
 openvdb::Index64 MaskRegion::voxelCount() const
 {
@@ -151,4 +152,4 @@ void forEachConnectedRegion(const openvdb::BoolTree& mask, const std::function<v
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

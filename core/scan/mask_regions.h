@@ -33,4 +33,4 @@ MaskRegion connectedRegion(const openvdb::BoolTree& mask, const openvdb::Coord& 
 /// Calls `visit` with every face-connected region of `mask`, in the order of their first voxels.
 void forEachConnectedRegion(const openvdb::BoolTree& mask, const std::function<void(const MaskRegion& region)>& visit);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,12 +1,11 @@
 #include "core/scan/scan_to_level_set.h"
 
 #include "core/base/errors.h"
-#include "core/scan/fast_marching.h"
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
+#include "core/scan/fast_marching.h"
 
 #include <openvdb/tools/SignedFloodFill.h>
-
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -24,9 +23,9 @@ namespace {
 using Leaf = openvdb::FloatGrid::TreeType::LeafNodeType;
 using LeafList = std::vector<std::unique_ptr<Leaf>>;
 
-constexpr int kBlock = 8;                      // scan samples per edge of a range block
-const openvdb::Coord kTile(32, 32, 16);        // output voxels per tile: 4 x 4 x 2 leaves
-constexpr int kHalo = 5;                       // tile margin: the band (3), marching slack (1), gradient (1)
+constexpr int kBlock = 8;                            // scan samples per edge of a range block
+const openvdb::Coord kTile(32, 32, 16);              // output voxels per tile: 4 x 4 x 2 leaves
+constexpr int kHalo = 5;                             // tile margin: the band (3), marching slack (1), gradient (1)
 constexpr double kMaxBoxVoxels = double(1LL << 37);  // about 5000^3: beyond, ask for a larger voxel size
 
 /// The bounds of an index box's corners mapped by an affine transform (all it reaches).
@@ -48,7 +47,8 @@ public:
     explicit BlockRanges(const ScanVolume& scan) : mDims(scan.dims())
     {
         for (int a = 0; a < 3; ++a) mBlocks[a] = (mDims[a] + kBlock - 1) / kBlock;
-        mRanges.assign(size_t(mBlocks.x()) * mBlocks.y() * mBlocks.z(), {std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()});
+        mRanges.assign(size_t(mBlocks.x()) * mBlocks.y() * mBlocks.z(),
+                       {std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()});
         tbb::parallel_for(0, mBlocks.z(), [&](int bz) {  // each task owns one layer of blocks
             std::vector<float> slice(size_t(mDims.x()) * size_t(mDims.y()));
             for (int k = bz * kBlock; k < std::min((bz + 1) * kBlock, mDims.z()); ++k) {
@@ -90,7 +90,10 @@ public:
     }
 
 private:
-    size_t index(int bx, int by, int bz) const { return (size_t(bz) * mBlocks.y() + size_t(by)) * mBlocks.x() + size_t(bx); }
+    size_t index(int bx, int by, int bz) const
+    {
+        return (size_t(bz) * mBlocks.y() + size_t(by)) * mBlocks.x() + size_t(bx);
+    }
 
     openvdb::Coord mDims, mBlocks;
     std::vector<std::pair<float, float>> mRanges;
@@ -151,9 +154,12 @@ private:
         for (int z0 = 0; z0 < mDims.z(); z0 += kChunk) {
             for (int y0 = 0; y0 < mDims.y(); y0 += kChunk) {
                 for (int x0 = 0; x0 < mDims.x(); x0 += kChunk) {
-                    const openvdb::CoordBBox chunk(openvdb::Coord(x0, y0, z0),
-                                                   openvdb::Coord::minComponent(openvdb::Coord(x0, y0, z0).offsetBy(kChunk - 1), mDims.offsetBy(-1)));
-                    const auto [lo, hi] = range(openvdb::CoordBBox(chunk.min().offsetBy(-kReach), chunk.max().offsetBy(kReach)));
+                    const openvdb::CoordBBox chunk(
+                        openvdb::Coord(x0, y0, z0),
+                        openvdb::Coord::minComponent(openvdb::Coord(x0, y0, z0).offsetBy(kChunk - 1),
+                                                     mDims.offsetBy(-1)));
+                    const auto [lo, hi] =
+                        range(openvdb::CoordBBox(chunk.min().offsetBy(-kReach), chunk.max().offsetBy(kReach)));
                     if (lo > mIso || hi <= mIso) {
                         fill(chunk, lo > mIso ? lo : hi);
                     } else {
@@ -187,9 +193,11 @@ private:
         for (int z = chunk.min().z(); z <= chunk.max().z(); ++z) {
             for (int y = chunk.min().y(); y <= chunk.max().y(); ++y) {
                 for (int x = 0; x < chunk.dim().x(); ++x) {
-                    mPoints[size_t(x)] = mScanFromOutput.transform((mLow + openvdb::Coord(chunk.min().x() + x, y, z)).asVec3d());
+                    mPoints[size_t(x)] =
+                        mScanFromOutput.transform((mLow + openvdb::Coord(chunk.min().x() + x, y, z)).asVec3d());
                 }
-                mScan.sample(mPoints.data(), mPoints.size(), mOutside, &mSamples[index(openvdb::Coord(chunk.min().x(), y, z))]);
+                mScan.sample(mPoints.data(), mPoints.size(), mOutside,
+                             &mSamples[index(openvdb::Coord(chunk.min().x(), y, z))]);
             }
         }
     }
@@ -220,7 +228,8 @@ private:
     {
         const bool inside = mSamples[i] > mIso;
         bool crosses = false;
-        for (const size_t step : mStep) crosses |= (mSamples[i - step] > mIso) != inside || (mSamples[i + step] > mIso) != inside;
+        for (const size_t step : mStep)
+            crosses |= (mSamples[i - step] > mIso) != inside || (mSamples[i + step] > mIso) != inside;
         return crosses;
     }
 
@@ -264,8 +273,8 @@ private:
     const BlockRanges& mRanges;
     float mIso, mH, mBackground, mOutside;
     openvdb::Mat4d mScanFromOutput;  // scan sample index from output voxel index
-    openvdb::Coord mDims, mLow;    // the window: the tile and its margin
-    std::array<size_t, 3> mStep;   // index offsets of a voxel's neighbours along x, y, z
+    openvdb::Coord mDims, mLow;      // the window: the tile and its margin
+    std::array<size_t, 3> mStep;     // index offsets of a voxel's neighbours along x, y, z
     std::vector<openvdb::Vec3d> mPoints;
     std::vector<float> mSamples, mDistance;
     FastMarching mMarching;
@@ -294,7 +303,7 @@ std::vector<openvdb::Coord> tileLayer(const openvdb::CoordBBox& box, int z)
     return origins;
 }
 
-} // namespace
+}  // namespace
 
 double nativeVoxelSize(const ScanVolume& scan)
 {
@@ -312,12 +321,14 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
         throw InputError(scan.source() + ": iso-value " + formatNumber(iso) + " is outside the samples' range (" +
                          formatNumber(lo) + " .. " + formatNumber(hi) + "): nothing would be inside");
     }
-    if (!(h > 0.0) || !std::isfinite(h)) throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
+    if (!(h > 0.0) || !std::isfinite(h))
+        throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
     openvdb::CoordBBox box = outputBox(scan, h);
     const openvdb::Coord dim = box.dim();
     if (double(dim.x()) * dim.y() * dim.z() > kMaxBoxVoxels) {
-        throw InputError(scan.source() + ": voxel size " + formatNumber(h) + " would give " + std::to_string(dim.x()) + " x " +
-                         std::to_string(dim.y()) + " x " + std::to_string(dim.z()) + " voxels; choose a coarser voxel size",
+        throw InputError(scan.source() + ": voxel size " + formatNumber(h) + " would give " + std::to_string(dim.x()) +
+                             " x " + std::to_string(dim.y()) + " x " + std::to_string(dim.z()) +
+                             " voxels; choose a coarser voxel size",
                          Remedy::CoarserVoxelSize);
     }
     for (int a = 0; a < 3; ++a) box.min()[a] &= ~(kTile[a] - 1);  // tiles on leaf boundaries (kTile: powers of two)
@@ -338,10 +349,11 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Pr
                       scan.source() + "'s surface at voxel size " + formatNumber(h));
         report(progress, 0.05 + 0.95 * std::min(1.0, double(z + kTile.z() - box.min().z()) / box.dim().z()));
     }
-    if (grid->tree().leafCount() == 0) throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
+    if (grid->tree().leafCount() == 0)
+        throw InputError(scan.source() + ": no surface at iso-value " + formatNumber(iso));
     openvdb::tools::signedFloodFill(grid->tree());
     report(progress, 1.0);
     return FieldImage(grid);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

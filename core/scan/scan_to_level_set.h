@@ -13,8 +13,8 @@
 /// (bright tissue on CT and T1 MRI); the scan's outside counts as outside, so surfaces cut by the
 /// scan's border are capped there.
 
-#include "core/field/field_image.h"
 #include "core/base/progress.h"
+#include "core/field/field_image.h"
 #include "core/scan/scan_volume.h"
 
 namespace sculpt {
@@ -27,4 +27,4 @@ FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double voxelSizeWo
 /// The smallest distance between neighbouring samples: the scan's native voxel size.
 double nativeVoxelSize(const ScanVolume& scan);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -17,8 +17,8 @@
 #include <vtkMetaImageReader.h>
 #include <vtkNIFTIImageHeader.h>
 #include <vtkNIFTIImageReader.h>
-#include <vtkNrrdReader.h>
 #include <vtkNew.h>
+#include <vtkNrrdReader.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -73,7 +73,8 @@ vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::stri
                          " x " + std::to_string(dims[2]) + " samples: not a real scan");
     }
     requireMemory(voxels * bytesPerSample * 1.5, source + " (" + std::to_string(dims[0]) + " x " +
-                                                     std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " samples)");
+                                                     std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
+                                                     " samples)");
     reader->Update();
     if (!catcher->message.empty()) throw InputError(source + ": " + cleanMessage(catcher->message));
     vtkSmartPointer<vtkImageData> image = reader->GetOutput();
@@ -133,8 +134,8 @@ ScanVolume readNifti(const fs::path& path)
         const double needed = double(reader->GetNIFTIHeader()->GetVoxOffset()) +
                               double(image->GetNumberOfPoints()) * image->GetScalarSize();
         if (double(fs::file_size(path)) < needed) {
-            throw InputError(path.string() + ": " + std::to_string(fs::file_size(path)) + " bytes, but the header needs " +
-                             formatNumber(needed) + " (truncated file)");
+            throw InputError(path.string() + ": " + std::to_string(fs::file_size(path)) +
+                             " bytes, but the header needs " + formatNumber(needed) + " (truncated file)");
         }
     }
     vtkMatrix4x4* orientation = reader->GetSFormMatrix() ? reader->GetSFormMatrix() : reader->GetQFormMatrix();
@@ -221,15 +222,19 @@ ScanVolume readDicomSeries(const fs::path& dir)
         int d[3];
         s.image->GetDimensions(d);
         if (d[0] != dims[0] || d[1] != dims[1] || (s.rowDirection - first.rowDirection).length() > 1e-4 ||
-            (s.columnDirection - first.columnDirection).length() > 1e-4 || s.image->GetScalarType() != first.image->GetScalarType()) {
+            (s.columnDirection - first.columnDirection).length() > 1e-4 ||
+            s.image->GetScalarType() != first.image->GetScalarType()) {
             throw InputError(dir.string() + ": mixed series: " + s.file + " differs from " + first.file +
                              " in size, orientation or sample type");
         }
     }
-    std::sort(slices.begin(), slices.end(),
-              [&](const DicomSlice& a, const DicomSlice& b) { return a.position.dot(normal) < b.position.dot(normal); });
+    std::sort(slices.begin(), slices.end(), [&](const DicomSlice& a, const DicomSlice& b) {
+        return a.position.dot(normal) < b.position.dot(normal);
+    });
     const double step = (slices[1].position - slices[0].position).dot(normal);
-    if (!(step > 1e-6)) throw InputError(dir.string() + ": two slices at the same position (" + slices[0].file + ", " + slices[1].file + "): mixed series?");
+    if (!(step > 1e-6))
+        throw InputError(dir.string() + ": two slices at the same position (" + slices[0].file + ", " + slices[1].file +
+                         "): mixed series?");
     for (size_t i = 1; i < slices.size(); ++i) {
         const double gap = (slices[i].position - slices[i - 1].position).dot(normal);
         if (std::abs(gap - step) > 0.01 * step) {
@@ -262,13 +267,14 @@ ScanVolume readDicomSeries(const fs::path& dir)
 
 int vtkTypeOf(const std::string& type)
 {
-    static const std::map<std::string, int> types{{"uint8", VTK_UNSIGNED_CHAR}, {"int8", VTK_SIGNED_CHAR},
+    static const std::map<std::string, int> types{{"uint8", VTK_UNSIGNED_CHAR},   {"int8", VTK_SIGNED_CHAR},
                                                   {"uint16", VTK_UNSIGNED_SHORT}, {"int16", VTK_SHORT},
-                                                  {"uint32", VTK_UNSIGNED_INT}, {"int32", VTK_INT},
-                                                  {"float32", VTK_FLOAT}, {"float64", VTK_DOUBLE}};
+                                                  {"uint32", VTK_UNSIGNED_INT},   {"int32", VTK_INT},
+                                                  {"float32", VTK_FLOAT},         {"float64", VTK_DOUBLE}};
     const auto found = types.find(type);
     if (found == types.end()) {
-        throw InputError("unknown sample type \"" + type + "\" (expected uint8, int8, uint16, int16, uint32, int32, float32 or float64)");
+        throw InputError("unknown sample type \"" + type +
+                         "\" (expected uint8, int8, uint16, int16, uint32, int32, float32 or float64)");
     }
     return found->second;
 }
@@ -283,8 +289,8 @@ void copyRow(const void* src, size_t count, float* out)
 /// Trilinear interpolation in the samples of a dims-sized lattice; an axis of one sample has
 /// stride 0, so its single layer is read for both corners.
 template <typename T>
-void sampleTrilinear(const void* src, const openvdb::Coord& dims, const openvdb::Vec3d* points, size_t count, float outside,
-                     float* out)
+void sampleTrilinear(const void* src, const openvdb::Coord& dims, const openvdb::Vec3d* points, size_t count,
+                     float outside, float* out)
 {
     const T* data = static_cast<const T*>(src);
     const size_t step[3] = {1, size_t(dims.x()), size_t(dims.x()) * size_t(dims.y())};
@@ -305,15 +311,19 @@ void sampleTrilinear(const void* src, const openvdb::Coord& dims, const openvdb:
             f[a] = p[a] - i;
             base += size_t(i) * step[a];
         }
-        const auto at = [&](int dx, int dy, int dz) { return double(data[base + dx * stride[0] + dy * stride[1] + dz * stride[2]]); };
-        const double c00 = at(0, 0, 0) + f[0] * (at(1, 0, 0) - at(0, 0, 0)), c10 = at(0, 1, 0) + f[0] * (at(1, 1, 0) - at(0, 1, 0));
-        const double c01 = at(0, 0, 1) + f[0] * (at(1, 0, 1) - at(0, 0, 1)), c11 = at(0, 1, 1) + f[0] * (at(1, 1, 1) - at(0, 1, 1));
+        const auto at = [&](int dx, int dy, int dz) {
+            return double(data[base + dx * stride[0] + dy * stride[1] + dz * stride[2]]);
+        };
+        const double c00 = at(0, 0, 0) + f[0] * (at(1, 0, 0) - at(0, 0, 0)),
+                     c10 = at(0, 1, 0) + f[0] * (at(1, 1, 0) - at(0, 1, 0));
+        const double c01 = at(0, 0, 1) + f[0] * (at(1, 0, 1) - at(0, 0, 1)),
+                     c11 = at(0, 1, 1) + f[0] * (at(1, 1, 1) - at(0, 1, 1));
         const double c0 = c00 + f[1] * (c10 - c00), c1 = c01 + f[1] * (c11 - c01);
         out[n] = float(c0 + f[2] * (c1 - c0));
     }
 }
 
-} // namespace
+}  // namespace
 
 ScanVolume::ScanVolume(std::shared_ptr<const Impl> impl) : mImpl(std::move(impl)) {}
 
@@ -367,11 +377,11 @@ ScanVolume ScanVolume::cropped(const openvdb::CoordBBox& box) const
     openvdb::CoordBBox clipped = box;
     clipped.intersect(openvdb::CoordBBox(openvdb::Coord(0), d.offsetBy(-1)));
     if (clipped.empty()) {
-        throw InputError(source() + ": the crop box " + std::to_string(box.min().x()) + "," + std::to_string(box.min().y()) +
-                         "," + std::to_string(box.min().z()) + " .. " + std::to_string(box.max().x()) + "," +
-                         std::to_string(box.max().y()) + "," + std::to_string(box.max().z()) +
-                         " misses the scan (0,0,0 .. " + std::to_string(d.x() - 1) + "," + std::to_string(d.y() - 1) +
-                         "," + std::to_string(d.z() - 1) + ")");
+        throw InputError(source() + ": the crop box " + std::to_string(box.min().x()) + "," +
+                         std::to_string(box.min().y()) + "," + std::to_string(box.min().z()) + " .. " +
+                         std::to_string(box.max().x()) + "," + std::to_string(box.max().y()) + "," +
+                         std::to_string(box.max().z()) + " misses the scan (0,0,0 .. " + std::to_string(d.x() - 1) +
+                         "," + std::to_string(d.y() - 1) + "," + std::to_string(d.z() - 1) + ")");
     }
     vtkNew<vtkExtractVOI> extract;
     extract->SetInputData(mImpl->image);
@@ -397,9 +407,11 @@ std::optional<ScanVolume> ScanVolume::antiAliased(double voxelSizeWorld) const
     openvdb::Vec3d sigmaVoxels(0.0);
     for (int a = 0; a < 3; ++a) {
         const double s = spacing(a);
-        if (dims()[a] > 1 && voxelSizeWorld > s) sigmaVoxels[a] = 0.5 * std::sqrt(voxelSizeWorld * voxelSizeWorld - s * s) / s;
+        if (dims()[a] > 1 && voxelSizeWorld > s)
+            sigmaVoxels[a] = 0.5 * std::sqrt(voxelSizeWorld * voxelSizeWorld - s * s) / s;
     }
-    if (sigmaVoxels.x() < kMinSigmaVoxels && sigmaVoxels.y() < kMinSigmaVoxels && sigmaVoxels.z() < kMinSigmaVoxels) return std::nullopt;
+    if (sigmaVoxels.x() < kMinSigmaVoxels && sigmaVoxels.y() < kMinSigmaVoxels && sigmaVoxels.z() < kMinSigmaVoxels)
+        return std::nullopt;
     return gaussian(sigmaVoxels);
 }
 
@@ -425,7 +437,8 @@ ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
 double ScanVolume::otsuThreshold() const
 {
     const auto [lo, hi] = range();
-    if (!(hi > lo)) throw InputError(source() + ": every sample is " + formatNumber(lo) + ": there is no surface to find");
+    if (!(hi > lo))
+        throw InputError(source() + ": every sample is " + formatNumber(lo) + ": there is no surface to find");
     constexpr int kBins = 256;
     std::array<double, kBins> histogram{};
     const openvdb::Coord d = dims();
@@ -472,8 +485,9 @@ ScanVolume readScan(const fs::path& path)
     if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
     if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);
     throw InputError(path.string() + ": unknown scan format '" + ext +
-                     "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw samples "
-                     "with their dimensions given)", Remedy::DescribeRawLayout);
+                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw samples "
+                         "with their dimensions given)",
+                     Remedy::DescribeRawLayout);
 }
 
 ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
@@ -483,7 +497,8 @@ ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
         throw InputError(path.string() + ": raw dimensions must be positive");
     }
     for (int a = 0; a < 3; ++a) {
-        if (!(layout.spacing[a] > 0.0) || !std::isfinite(layout.spacing[a])) throw InputError("raw spacing must be positive");
+        if (!(layout.spacing[a] > 0.0) || !std::isfinite(layout.spacing[a]))
+            throw InputError("raw spacing must be positive");
     }
     if (!fs::is_regular_file(path)) throw InputError(path.string() + ": no such file");
     const double needed = double(layout.headerBytes) + double(layout.dims.x()) * layout.dims.y() * layout.dims.z() *
@@ -508,4 +523,4 @@ ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
     return makeScan(image, placement(image, nullptr), path.string());
 }
 
-} // namespace sculpt
+}  // namespace sculpt

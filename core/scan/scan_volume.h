@@ -21,12 +21,12 @@ namespace sculpt {
 
 /// How the samples of a headerless raw file are laid out.
 struct RawLayout {
-    openvdb::Coord dims{0, 0, 0};   ///< samples along x (fastest), y, z
-    std::string type = "uint8";     ///< uint8, int8, uint16, int16, uint32, int32, float32, float64
-    openvdb::Vec3d spacing{1.0};    ///< voxel size along x, y, z (world units)
-    openvdb::Vec3d origin{0.0};     ///< world position of sample (0, 0, 0)
+    openvdb::Coord dims{0, 0, 0};  ///< samples along x (fastest), y, z
+    std::string type = "uint8";    ///< uint8, int8, uint16, int16, uint32, int32, float32, float64
+    openvdb::Vec3d spacing{1.0};   ///< voxel size along x, y, z (world units)
+    openvdb::Vec3d origin{0.0};    ///< world position of sample (0, 0, 0)
     bool bigEndian = false;
-    std::size_t headerBytes = 0;    ///< bytes to skip at the start of the file
+    std::size_t headerBytes = 0;  ///< bytes to skip at the start of the file
 };
 
 class ScanVolume {
@@ -86,4 +86,4 @@ ScanVolume readRawScan(const std::filesystem::path& path, const RawLayout& layou
 /// True if readScan knows the path's extension (or it is a directory).
 bool isScanPath(const std::filesystem::path& path);
 
-} // namespace sculpt
+}  // namespace sculpt

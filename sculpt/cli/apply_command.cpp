@@ -1,12 +1,10 @@
-#include "sculpt/cli/commands.h"
-#include "sculpt/cli/mesh_output.h"
-#include "sculpt/cli/edit_document.h"
-
-#include "sculpt/session/stroke_script.h"
 #include "core/base/text_format.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/mesh_output.h"
+#include "sculpt/session/stroke_script.h"
 
 #include <CLI/CLI.hpp>
-
 #include <tbb/global_control.h>
 
 #include <iostream>
@@ -41,7 +39,7 @@ void runApply(const ApplyOptions& o)
     writeMeshOutput(result, o.mesh);
 }
 
-} // namespace
+}  // namespace
 
 void addApplyCommand(CLI::App& app)
 {
@@ -58,4 +56,4 @@ void addApplyCommand(CLI::App& app)
     cmd->callback([options] { runApply(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

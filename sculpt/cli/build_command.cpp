@@ -1,12 +1,11 @@
-#include "sculpt/cli/commands.h"
-#include "sculpt/cli/mesh_output.h"
-
 #include "core/base/atomic_file.h"
-#include "core/field/csg_combine.h"
 #include "core/base/errors.h"
+#include "core/field/csg_combine.h"
+#include "core/io/vdb_file.h"
 #include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
-#include "core/io/vdb_file.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
 
 #include <CLI/CLI.hpp>
 
@@ -44,15 +43,15 @@ void runBuild(const BuildOptions& o)
     writeMeshOutput(result, o.mesh);
 }
 
-} // namespace
+}  // namespace
 
 void addBuildCommand(CLI::App& app)
 {
     auto options = std::make_shared<BuildOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "build", "Bake a scene of implicit primitives (skeletons with field kernels, blended, see\n"
-                 "data/scene.schema.json) into a document, alone or combined into a base document\n"
-                 "by the scene's operation (union, difference, intersection, replace).");
+    CLI::App* cmd =
+        app.add_subcommand("build", "Bake a scene of implicit primitives (skeletons with field kernels, blended, see\n"
+                                    "data/scene.schema.json) into a document, alone or combined into a base document\n"
+                                    "by the scene's operation (union, difference, intersection, replace).");
     cmd->add_option("scene", options->scene, "the scene .json file")->required();
     cmd->add_option("--voxel-size", options->voxelSize,
                     "voxel size without --into (default: the scene's voxel_size, else 0.5)");
@@ -62,4 +61,4 @@ void addBuildCommand(CLI::App& app)
     cmd->callback([options] { runBuild(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

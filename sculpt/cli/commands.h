@@ -29,4 +29,4 @@ void addApplyCommand(CLI::App& app);
 /// `sculpt import`: a scan or a mesh as a new document.
 void addImportCommand(CLI::App& app);
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -1,9 +1,8 @@
 #include "sculpt/cli/edit_document.h"
 
-#include "sculpt/cli/progress_bar.h"
-
 #include "core/base/atomic_file.h"
 #include "core/io/vdb_file.h"
+#include "sculpt/cli/progress_bar.h"
 
 namespace sculpt::cli {
 
@@ -20,4 +19,4 @@ FieldImage editDocument(const std::string& input, const std::string& output, con
     return field;
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

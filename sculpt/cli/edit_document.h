@@ -3,8 +3,8 @@
 /// @brief The shape of every editing command: read a document, change it with a progress bar,
 ///        write the result atomically (the input is never touched).
 
-#include "core/field/field_image.h"
 #include "core/base/progress.h"
+#include "core/field/field_image.h"
 
 #include <functional>
 #include <string>
@@ -16,4 +16,4 @@ namespace sculpt::cli {
 FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
                         const std::function<void(FieldImage&, const Progress&)>& edit);
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -1,12 +1,11 @@
+#include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/io/vdb_file.h"
+#include "core/mesh/field_measures.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/progress_bar.h"
-
-#include "core/base/atomic_file.h"
-#include "core/base/errors.h"
-#include "core/mesh/field_measures.h"
 #include "sculpt/session/shape_import.h"
-#include "core/io/vdb_file.h"
 
 #include <CLI/CLI.hpp>
 
@@ -70,7 +69,8 @@ void runImport(const ImportCommandOptions& o)
     const FieldMeasures m = measureField(field);
     std::cout << "imported " << o.input << " (" << report.kind << ")";
     if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
-    std::cout << ", voxel size " << report.voxelSize << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
+    std::cout << ", voxel size " << report.voxelSize
+              << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
     if (o.largest) {
         std::cout << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
                   << " cavities filled";
@@ -80,7 +80,7 @@ void runImport(const ImportCommandOptions& o)
     writeMeshOutput(field, o.mesh);
 }
 
-} // namespace
+}  // namespace
 
 void addImportCommand(CLI::App& app)
 {
@@ -96,19 +96,23 @@ void addImportCommand(CLI::App& app)
     o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");
     cmd->add_flag("--auto-iso", o->autoIso, "choose the iso-value by Otsu's method (the default without --iso)")
         ->excludes(o->isoOption);
-    o->voxelOption = cmd->add_option("--voxel-size", o->voxelSize,
-                                     "voxel size of the document (default: the scan's smallest spacing; a mesh's longest side / 256)");
+    o->voxelOption = cmd->add_option(
+        "--voxel-size", o->voxelSize,
+        "voxel size of the document (default: the scan's smallest spacing; a mesh's longest side / 256)");
     cmd->add_option("--crop", o->crop, "scan sample box x0,y0,z0,x1,y1,z1 (indices, inclusive)")
         ->delimiter(',')
         ->expected(6);
     cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_flag("--largest-component", o->largest, "keep only the largest solid piece: drops islands, fills closed cavities");
+    cmd->add_flag("--largest-component", o->largest,
+                  "keep only the largest solid piece: drops islands, fills closed cavities");
     cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);
     cmd->add_option("--raw-type", o->rawType, "raw input: uint8, int8, uint16, int16, uint32, int32, float32, float64")
         ->capture_default_str();
     cmd->add_option("--raw-spacing", o->rawSpacing, "raw input: voxel size along x,y,z")->delimiter(',')->expected(3);
-    cmd->add_option("--raw-origin", o->rawOrigin, "raw input: world position of the first sample")->delimiter(',')->expected(3);
+    cmd->add_option("--raw-origin", o->rawOrigin, "raw input: world position of the first sample")
+        ->delimiter(',')
+        ->expected(3);
     cmd->add_flag("--raw-big-endian", o->rawBigEndian, "raw input: most significant byte first");
     cmd->add_option("--raw-header", o->rawHeader, "raw input: bytes to skip before the samples");
     cmd->add_option("-o,--output", o->output, "the .vdb document to write")->required();
@@ -116,4 +120,4 @@ void addImportCommand(CLI::App& app)
     cmd->callback([o] { runImport(*o); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

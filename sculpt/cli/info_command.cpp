@@ -1,8 +1,7 @@
-#include "sculpt/cli/commands.h"
-
-#include "core/mesh/field_measures.h"
 #include "core/base/text_format.h"
 #include "core/io/vdb_file.h"
+#include "core/mesh/field_measures.h"
+#include "sculpt/cli/commands.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -40,12 +39,11 @@ void printText(const FieldMeasures& m, const std::string& units, const std::stri
 {
     const char* u = units.c_str();
     std::printf("file:                 %s\n", input.c_str());
-    std::printf("voxel size:           %g %s (band half width %g voxels)\n", m.voxelSize, u,
-                m.halfWidthVoxels);
+    std::printf("voxel size:           %g %s (band half width %g voxels)\n", m.voxelSize, u, m.halfWidthVoxels);
     std::printf("active voxels:        %llu\n", static_cast<unsigned long long>(m.activeVoxels));
     std::printf("memory:               %s\n", formatBytes(double(m.memoryBytes)).c_str());
-    std::printf("bounding box:         (%g, %g, %g) .. (%g, %g, %g) %s\n", m.bboxMin.x(),
-                m.bboxMin.y(), m.bboxMin.z(), m.bboxMax.x(), m.bboxMax.y(), m.bboxMax.z(), u);
+    std::printf("bounding box:         (%g, %g, %g) .. (%g, %g, %g) %s\n", m.bboxMin.x(), m.bboxMin.y(), m.bboxMin.z(),
+                m.bboxMax.x(), m.bboxMax.y(), m.bboxMax.z(), u);
     std::printf("volume:               %g %s^3\n", m.volume, u);
     std::printf("area:                 %g %s^2\n", m.area, u);
     std::printf("euler characteristic: %d\n", m.eulerCharacteristic);
@@ -63,15 +61,15 @@ void runInfo(const InfoOptions& o)
     }
 }
 
-} // namespace
+}  // namespace
 
 void addInfoCommand(CLI::App& app)
 {
     auto options = std::make_shared<InfoOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "info", "Print a document's voxel size, active voxels, memory, bounding box, volume,\n"
-                "area, Euler characteristic (2 per sphere-like piece, 0 per torus) and\n"
-                "number of connected surface components.");
+    CLI::App* cmd =
+        app.add_subcommand("info", "Print a document's voxel size, active voxels, memory, bounding box, volume,\n"
+                                   "area, Euler characteristic (2 per sphere-like piece, 0 per torus) and\n"
+                                   "number of connected surface components.");
     cmd->add_option("input", options->input, "the .vdb document to measure")->required();
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
@@ -80,4 +78,4 @@ void addInfoCommand(CLI::App& app)
     cmd->callback([options] { runInfo(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

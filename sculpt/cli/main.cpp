@@ -1,10 +1,9 @@
 // The `sculpt` command-line program: every edit the UI can make, headless.
 // Exit codes: 0 success, 2 bad input or usage, 1 internal error.
 
-#include "sculpt/cli/commands.h"
-
 #include "core/base/errors.h"
 #include "core/base/progress.h"
+#include "sculpt/cli/commands.h"
 
 #include <CLI/CLI.hpp>
 
@@ -37,7 +36,7 @@ const char* remedyFlag(sculpt::Remedy remedy)
     return "";
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv)
 {

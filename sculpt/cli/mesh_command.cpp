@@ -1,9 +1,8 @@
-#include "sculpt/cli/commands.h"
-
 #include "core/base/atomic_file.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
+#include "core/mesh/incremental_mesher.h"
+#include "sculpt/cli/commands.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,22 +25,22 @@ void runMesh(const MeshOptions& o)
     const FieldImage field = readFieldImage(o.input);
     const TriangleMesh mesh = meshLevelSet(field);
     writeMesh(mesh, o.output);
-    std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, "
-              << mesh.triangles.size() << " triangles\n";
+    std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
+              << " triangles\n";
 }
 
-} // namespace
+}  // namespace
 
 void addMeshCommand(CLI::App& app)
 {
     auto options = std::make_shared<MeshOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
-                "or rendering. The format follows the output's extension: .ply (binary, with\n"
-                "normals), .obj (text) or .stl (binary).");
+    CLI::App* cmd =
+        app.add_subcommand("mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
+                                   "or rendering. The format follows the output's extension: .ply (binary, with\n"
+                                   "normals), .obj (text) or .stl (binary).");
     cmd->add_option("input", options->input, "the .vdb document to mesh")->required();
     cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
     cmd->callback([options] { runMesh(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -1,8 +1,8 @@
 #include "sculpt/cli/mesh_output.h"
 
 #include "core/base/atomic_file.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/io/mesh_file.h"
+#include "core/mesh/incremental_mesher.h"
 
 #include <iostream>
 
@@ -23,4 +23,4 @@ void writeMeshOutput(const FieldImage& field, const std::string& path)
     std::cout << "wrote " << path << ": " << mesh.triangles.size() << " triangles\n";
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -13,4 +13,4 @@ void checkMeshOutput(const std::string& path);
 /// Writes the field's welded surface and reports it on stdout (no-op if empty).
 void writeMeshOutput(const FieldImage& field, const std::string& path);
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -1,13 +1,12 @@
-#include "sculpt/cli/commands.h"
-#include "sculpt/cli/progress_bar.h"
-
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/io/mesh_file.h"
-#include "core/motion/morph.h"
-#include "sculpt/session/shape_import.h"
 #include "core/io/vdb_file.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/motion/morph.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/progress_bar.h"
+#include "sculpt/session/shape_import.h"
 
 #include <CLI/CLI.hpp>
 
@@ -61,42 +60,46 @@ void runMorph(const MorphCommandOptions& o)
     MorphSummary summary;
     {
         ProgressBar bar("morphing");
-        summary = morph(source, target, o.morph, [&](const MorphFrame& frame) {
-            writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
-            if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
-        }, bar.callback());
+        summary = morph(
+            source, target, o.morph,
+            [&](const MorphFrame& frame) {
+                writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
+                if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
+            },
+            bar.callback());
     }
-    std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames,
-                o.directory.c_str(), o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
+    std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames, o.directory.c_str(),
+                o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
     if (summary.translation != openvdb::Vec3d(0.0)) {
         std::printf("aligned: source moved by (%g, %g, %g)\n", summary.translation.x(), summary.translation.y(),
                     summary.translation.z());
     }
-    std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps,
-                summary.duration, summary.finalDistanceWorld, target.units().c_str(),
+    std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps, summary.duration,
+                summary.finalDistanceWorld, target.units().c_str(),
                 summary.converged ? "converged" : "NOT converged: raise --max-steps or --tolerance");
     for (size_t i = 0; i < summary.frameVolumes.size(); ++i) {
         std::printf("frame %04zu volume %g %s^3\n", i, summary.frameVolumes[i], target.units().c_str());
     }
 }
 
-} // namespace
+}  // namespace
 
 void addMorphCommand(CLI::App& app)
 {
     auto options = std::make_shared<MorphCommandOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "morph", "Morph the source shape into the target: the source surface follows the target\n"
-                 "by level-set motion (growing where the target is larger, shrinking where it is\n"
-                 "smaller, changing topology as needed). Writes DIR/frame_0000.vdb ... evenly\n"
-                 "spaced in morph time; the last frame is the converged shape.");
-    cmd->add_option("source", options->source, "the shape to start from: a .vdb document, a scan or a mesh (as for import)")->required();
+    CLI::App* cmd =
+        app.add_subcommand("morph", "Morph the source shape into the target: the source surface follows the target\n"
+                                    "by level-set motion (growing where the target is larger, shrinking where it is\n"
+                                    "smaller, changing topology as needed). Writes DIR/frame_0000.vdb ... evenly\n"
+                                    "spaced in morph time; the last frame is the converged shape.");
+    cmd->add_option("source", options->source,
+                    "the shape to start from: a .vdb document, a scan or a mesh (as for import)")
+        ->required();
     cmd->add_option("target", options->target, "the shape to arrive at: a .vdb document, a scan or a mesh")->required();
     cmd->add_option("--frames", options->morph.frames, "number of frames, first and last included")
         ->check(CLI::Range(2, 100000))
         ->capture_default_str();
-    cmd->add_option("-o,--output", options->directory, "directory for the frames (created if missing)")
-        ->required();
+    cmd->add_option("-o,--output", options->directory, "directory for the frames (created if missing)")->required();
     cmd->add_option("--mesh", options->mesh, "also write a mesh per frame: ply, obj or stl")
         ->check(CLI::IsMember({"ply", "obj", "stl"}));
     cmd->add_flag("--keep-volume", options->morph.keepVolume,
@@ -114,4 +117,4 @@ void addMorphCommand(CLI::App& app)
     cmd->callback([options] { runMorph(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

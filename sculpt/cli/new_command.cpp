@@ -1,8 +1,7 @@
-#include "sculpt/cli/commands.h"
-
-#include "core/primitives/analytic_shapes.h"
 #include "core/base/atomic_file.h"
 #include "core/io/vdb_file.h"
+#include "core/primitives/analytic_shapes.h"
+#include "sculpt/cli/commands.h"
 
 #include <CLI/CLI.hpp>
 
@@ -38,34 +37,29 @@ void runNew(const NewOptions& o)
     FieldImage field = rasterizeSdf(shape, o.voxelSize);
     field.setUnits(o.units);
     writeFieldImage(field, o.output);
-    std::cout << "wrote " << o.output << ": " << shape.description << " " << o.units
-              << ", voxel size " << o.voxelSize << " " << o.units << ", "
-              << field.grid().activeVoxelCount() << " active voxels\n";
+    std::cout << "wrote " << o.output << ": " << shape.description << " " << o.units << ", voxel size " << o.voxelSize
+              << " " << o.units << ", " << field.grid().activeVoxelCount() << " active voxels\n";
 }
 
-} // namespace
+}  // namespace
 
 void addNewCommand(CLI::App& app)
 {
     auto options = std::make_shared<NewOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "new", "Create a document holding a starting shape, centred at the origin.\n"
-               "The defaults give the clay ball a sculptor starts from.");
+    CLI::App* cmd = app.add_subcommand("new", "Create a document holding a starting shape, centred at the origin.\n"
+                                              "The defaults give the clay ball a sculptor starts from.");
     cmd->add_option("--shape", options->shape, "sphere, box or torus")
         ->check(CLI::IsMember({"sphere", "box", "torus"}))
         ->capture_default_str();
-    cmd->add_option("--radius", options->radius,
-                    "sphere radius, box half side, or torus major radius (world units)")
+    cmd->add_option("--radius", options->radius, "sphere radius, box half side, or torus major radius (world units)")
         ->capture_default_str();
-    cmd->add_option("--minor-radius", options->minorRadius,
-                    "torus tube radius (default: radius / 3)");
+    cmd->add_option("--minor-radius", options->minorRadius, "torus tube radius (default: radius / 3)");
     cmd->add_option("--voxel-size", options->voxelSize,
                     "edge of a voxel in world units: smaller is finer and costs more memory")
         ->capture_default_str();
-    cmd->add_option("--units", options->units, "length unit recorded in the document")
-        ->capture_default_str();
+    cmd->add_option("--units", options->units, "length unit recorded in the document")->capture_default_str();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->callback([options] { runNew(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

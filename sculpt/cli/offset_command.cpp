@@ -1,7 +1,6 @@
+#include "core/motion/surface_flows.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
-
-#include "core/motion/surface_flows.h"
 
 #include <CLI/CLI.hpp>
 
@@ -19,25 +18,24 @@ struct OffsetOptions {
 
 void runOffset(const OffsetOptions& o)
 {
-    const FieldImage field = editDocument(o.input, o.output, "offsetting", [&](FieldImage& f, const Progress& p) {
-        offset(f, o.distance, p);
-    });
+    const FieldImage field = editDocument(o.input, o.output, "offsetting",
+                                          [&](FieldImage& f, const Progress& p) { offset(f, o.distance, p); });
     std::cout << "wrote " << o.output << ": surface moved " << o.distance << " " << field.units()
               << " along its normal\n";
 }
 
-} // namespace
+}  // namespace
 
 void addOffsetCommand(CLI::App& app)
 {
     auto options = std::make_shared<OffsetOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "offset", "Move the whole surface along its normal by a distance: positive grows\n"
-                  "(thickens), negative shrinks (thins). Cost grows with |distance| / voxel size.");
+    CLI::App* cmd =
+        app.add_subcommand("offset", "Move the whole surface along its normal by a distance: positive grows\n"
+                                     "(thickens), negative shrinks (thins). Cost grows with |distance| / voxel size.");
     cmd->add_option("input", options->input, "the .vdb document")->required();
     cmd->add_option("--distance", options->distance, "offset in world units (> 0 grows)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->callback([options] { runOffset(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -29,9 +29,9 @@ void ProgressBar::draw(double fraction)
     mShownPercent = percent;
     constexpr int width = 40;
     const int filled = percent * width / 100;
-    std::fprintf(stderr, "\r%s [%.*s%*s] %3d%%", mLabel.c_str(), filled,
-                 "########################################", width - filled, "", percent);
+    std::fprintf(stderr, "\r%s [%.*s%*s] %3d%%", mLabel.c_str(), filled, "########################################",
+                 width - filled, "", percent);
     std::fflush(stderr);
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -27,4 +27,4 @@ private:
     int mShownPercent = -1;
 };
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

@@ -1,8 +1,7 @@
-#include "sculpt/cli/commands.h"
-#include "sculpt/cli/edit_document.h"
-
 #include "core/mesh/field_measures.h"
 #include "core/motion/surface_flows.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
 
 #include <CLI/CLI.hpp>
 
@@ -26,18 +25,18 @@ void runSmooth(const SmoothOptions& o)
         before = measureField(f).volume;
         smooth(f, o.iterations, o.keepVolume, p);
     });
-    std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume "
-              << before << " -> " << measureField(field).volume << " " << field.units() << "^3\n";
+    std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume " << before << " -> "
+              << measureField(field).volume << " " << field.units() << "^3\n";
 }
 
-} // namespace
+}  // namespace
 
 void addSmoothCommand(CLI::App& app)
 {
     auto options = std::make_shared<SmoothOptions>();
-    CLI::App* cmd = app.add_subcommand(
-        "smooth", "Smooth the whole surface by mean-curvature flow: bumps and creases relax,\n"
-                  "small features vanish first. One iteration is one stable step (dt = h^2/6).");
+    CLI::App* cmd =
+        app.add_subcommand("smooth", "Smooth the whole surface by mean-curvature flow: bumps and creases relax,\n"
+                                     "small features vanish first. One iteration is one stable step (dt = h^2/6).");
     cmd->add_option("input", options->input, "the .vdb document to smooth")->required();
     cmd->add_option("--iterations", options->iterations, "number of smoothing steps")
         ->check(CLI::NonNegativeNumber)
@@ -48,4 +47,4 @@ void addSmoothCommand(CLI::App& app)
     cmd->callback([options] { runSmooth(*options); });
 }
 
-} // namespace sculpt::cli
+}  // namespace sculpt::cli

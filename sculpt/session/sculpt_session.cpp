@@ -1,9 +1,9 @@
 #include "sculpt/session/sculpt_session.h"
 
-#include "core/brushes/brush.h"
 #include "core/base/errors.h"
-#include "core/field/leaf_journal.h"
 #include "core/base/text_format.h"
+#include "core/brushes/brush.h"
+#include "core/field/leaf_journal.h"
 
 #include <cmath>
 
@@ -13,7 +13,7 @@ namespace {
 
 bool finite(const openvdb::Vec3d& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
 
-} // namespace
+}  // namespace
 
 void validateStroke(const Stroke& stroke)
 {
@@ -97,4 +97,4 @@ void SculptSession::updateMesh()
     if (mMesher) mMesher->update(mField, dirty);
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -6,11 +6,10 @@
 /// stamp by stamp (each stamp journals the leaves it changes, then the mesher re-meshes just
 /// those), then recorded as one undo step.
 
-#include "sculpt/session/stroke.h"
-#include "sculpt/session/undo_history.h"
-
 #include "core/field/field_image.h"
 #include "core/mesh/incremental_mesher.h"
+#include "sculpt/session/stroke.h"
+#include "sculpt/session/undo_history.h"
 
 #include <optional>
 
@@ -56,4 +55,4 @@ private:
 ///         there are no samples, the spacing is not in (0, 4], or the brush settings are invalid.
 void validateStroke(const Stroke& stroke);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -2,10 +2,10 @@
 
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
-#include "core/io/mesh_import.h"
-#include "core/scan/scan_to_level_set.h"
 #include "core/base/text_format.h"
+#include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
+#include "core/scan/scan_to_level_set.h"
 
 namespace sculpt {
 
@@ -21,8 +21,9 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     const TriangleMesh mesh = readMesh(input);
     const MeshImportReport inspection = inspectMesh(mesh);
     if (!inspection.closed()) {
-        report.warnings.push_back(input.string() + ": the mesh is not closed (" + std::to_string(inspection.boundaryEdges) +
-                                  " open edges, " + std::to_string(inspection.nonManifoldEdges) +
+        report.warnings.push_back(input.string() + ": the mesh is not closed (" +
+                                  std::to_string(inspection.boundaryEdges) + " open edges, " +
+                                  std::to_string(inspection.nonManifoldEdges) +
                                   " non-manifold): inside and outside are guessed where it is open");
     }
     report.kind = "mesh";
@@ -30,7 +31,8 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     return meshToField(mesh, report.voxelSize);
 }
 
-FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report, const Progress& progress)
+FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,
+                      const Progress& progress)
 {
     ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
     if (options.crop) scan = scan.cropped(*options.crop);
@@ -46,15 +48,16 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
 }
 
-} // namespace
+}  // namespace
 
-FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report, const Progress& progress)
+FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report,
+                       const Progress& progress)
 {
     if (options.voxelSize && !(*options.voxelSize > 0.0)) {
         throw InputError("--voxel-size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
     }
     FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
-                                                          : importScan(input, options, report, progress);
+                                                         : importScan(input, options, report, progress);
     if (options.largestComponent) report.pieces = keepLargestComponent(field);
     return field;
 }
@@ -70,4 +73,4 @@ FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std
     return field;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -2,9 +2,9 @@
 /// @file shape_import.h
 /// @brief Any shape a user brings — a document, a scan, a mesh — as a field image.
 
+#include "core/base/progress.h"
 #include "core/field/field_image.h"
 #include "core/scan/largest_component.h"
-#include "core/base/progress.h"
 #include "core/scan/scan_volume.h"
 
 #include <filesystem>
@@ -15,12 +15,12 @@
 namespace sculpt {
 
 struct ImportOptions {
-    std::optional<double> iso;             ///< scans: the surface's value; Otsu's threshold if unset
-    std::optional<double> voxelSize;       ///< scans: native (smallest spacing); meshes: longest side / 256
+    std::optional<double> iso;               ///< scans: the surface's value; Otsu's threshold if unset
+    std::optional<double> voxelSize;         ///< scans: native (smallest spacing); meshes: longest side / 256
     std::optional<openvdb::CoordBBox> crop;  ///< scans: sample index box, inclusive
-    double smoothSigma = 0.0;              ///< scans: Gaussian pre-smoothing, world units (0: none)
-    bool largestComponent = false;         ///< keep only the largest solid piece, cavities filled
-    std::optional<RawLayout> raw;          ///< read the input as raw samples with this layout
+    double smoothSigma = 0.0;                ///< scans: Gaussian pre-smoothing, world units (0: none)
+    bool largestComponent = false;           ///< keep only the largest solid piece, cavities filled
+    std::optional<RawLayout> raw;            ///< read the input as raw samples with this layout
 };
 
 /// What an import did, for the user.
@@ -29,7 +29,7 @@ struct ImportReport {
     double iso = 0.0;
     bool isoChosen = false;  ///< by Otsu
     double voxelSize = 0.0;
-    bool antiAliased = false;  ///< scans: low-pass filtered for a voxel size coarser than the scan's
+    bool antiAliased = false;       ///< scans: low-pass filtered for a voxel size coarser than the scan's
     LargestComponentReport pieces;  ///< with largestComponent
     std::vector<std::string> warnings;
 };
@@ -45,4 +45,4 @@ FieldImage importShape(const std::filesystem::path& input, const ImportOptions& 
 FieldImage loadShape(const std::filesystem::path& input, std::optional<double> voxelSize,
                      std::vector<std::string>& warnings);
 
-} // namespace sculpt
+}  // namespace sculpt

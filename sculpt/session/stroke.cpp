@@ -46,7 +46,7 @@ std::vector<openvdb::Vec3d> mirrorSigns(const Symmetry& symmetry)
     return signs;
 }
 
-} // namespace
+}  // namespace
 
 std::vector<BrushStamp> strokeStamps(const Stroke& stroke)
 {
@@ -64,4 +64,4 @@ std::vector<BrushStamp> strokeStamps(const Stroke& stroke)
     return stamps;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

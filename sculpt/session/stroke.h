@@ -10,8 +10,8 @@ namespace sculpt {
 
 /// One sample of the pointer along a stroke.
 struct StrokeSample {
-    openvdb::Vec3d positionWorld{0.0};  ///< on (or near) the surface
-    double pressure = 1.0;              ///< (0, 1]; 1 for a mouse
+    openvdb::Vec3d positionWorld{0.0};             ///< on (or near) the surface
+    double pressure = 1.0;                         ///< (0, 1]; 1 for a mouse
     openvdb::Vec3d viewDirection{0.0, 0.0, -1.0};  ///< from the eye into the scene
 };
 
@@ -33,4 +33,4 @@ struct Stroke {
 /// by its mirror images, each mirror image chaining to its own previous stamp.
 std::vector<BrushStamp> strokeStamps(const Stroke& stroke);
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -1,8 +1,8 @@
 #include "sculpt/session/stroke_script.h"
 
-#include "core/field/csg_combine.h"
 #include "core/base/errors.h"
 #include "core/base/json_fields.h"
+#include "core/field/csg_combine.h"
 #include "core/primitives/scene_file.h"
 
 #include <fstream>
@@ -72,7 +72,8 @@ std::shared_ptr<const PrimitiveStamp> parsePrimitives(const json& j, const std::
 
 Stroke parseStroke(const json& j, const std::string& where, const std::filesystem::path& baseDir)
 {
-    onlyFields(j, {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives"},
+    onlyFields(j,
+               {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives"},
                where);
     Stroke stroke;
     BrushSettings& brush = stroke.brush;
@@ -87,7 +88,8 @@ Stroke parseStroke(const json& j, const std::string& where, const std::filesyste
     brush.keepVolume = flagOr(j, "keep_volume", false, where);
     stroke.spacing = numberOr(j, "spacing", stroke.spacing, where);
     if (j.contains("symmetry")) stroke.symmetry = parseSymmetry(j["symmetry"], where);
-    if (brush.tool == BrushTool::Primitive) brush.primitive = parsePrimitives(field(j, "primitives", where), where, baseDir);
+    if (brush.tool == BrushTool::Primitive)
+        brush.primitive = parsePrimitives(field(j, "primitives", where), where, baseDir);
     const json& samples = field(j, "samples", where);
     if (!samples.is_array()) throw InputError(where + ": field 'samples' must be an array");
     for (size_t i = 0; i < samples.size(); ++i) {
@@ -115,7 +117,7 @@ ScriptEvent parseEvent(const json& j, const std::string& where, const std::files
     return {ScriptEvent::Kind::Stroke, parseStroke(j, where, baseDir)};
 }
 
-} // namespace
+}  // namespace
 
 StrokeScript parseStrokeScript(const std::string& text, const std::string& source, const std::filesystem::path& baseDir)
 {
@@ -127,8 +129,8 @@ StrokeScript parseStrokeScript(const std::string& text, const std::string& sourc
     }
     const double version = numberOr(root, "version", kVersion, source);
     if (version != kVersion) {
-        throw InputError(source + ": version " + root["version"].dump() + " is not supported (this program reads version " +
-                         std::to_string(kVersion) + ")");
+        throw InputError(source + ": version " + root["version"].dump() +
+                         " is not supported (this program reads version " + std::to_string(kVersion) + ")");
     }
     const json& events = field(root, "events", source);
     if (!events.is_array()) throw InputError(source + ": field 'events' must be an array");
@@ -156,11 +158,10 @@ ReplayReport replayScript(SculptSession& session, const StrokeScript& script, co
         const ScriptEvent& event = script.events[i];
         const std::string where = source + ": events[" + std::to_string(i) + "]";
         switch (event.kind) {
-        case ScriptEvent::Kind::Stroke:
-            try {
-                done.stamps += session.applyStroke(event.stroke).stamps;
+        case ScriptEvent::Kind::Stroke: try { done.stamps += session.applyStroke(event.stroke).stamps;
             } catch (const InputError& e) {
-                throw InputError(where + " ('" + brushToolName(event.stroke.brush.tool) + "' stroke): " + e.what(), e.remedy());
+                throw InputError(where + " ('" + brushToolName(event.stroke.brush.tool) + "' stroke): " + e.what(),
+                                 e.remedy());
             }
             ++done.strokes;
             break;
@@ -178,4 +179,4 @@ ReplayReport replayScript(SculptSession& session, const StrokeScript& script, co
     return done;
 }
 
-} // namespace sculpt
+}  // namespace sculpt

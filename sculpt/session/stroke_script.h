@@ -10,9 +10,8 @@
 ///        {"action": "undo"}, {"action": "redo"}]}
 /// A sample is an object or just its position. Schema: data/strokes.schema.json; format: README.
 
-#include "sculpt/session/sculpt_session.h"
-
 #include "core/base/progress.h"
+#include "sculpt/session/sculpt_session.h"
 
 #include <filesystem>
 #include <string>
@@ -49,4 +48,4 @@ struct ReplayReport {
 ReplayReport replayScript(SculptSession& session, const StrokeScript& script, const std::string& source,
                           const Progress& progress = {});
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -53,4 +53,4 @@ void UndoHistory::enforceBudget()
     }
 }
 
-} // namespace sculpt
+}  // namespace sculpt

@@ -45,4 +45,4 @@ private:
     std::size_t mDropped = 0;
 };
 
-} // namespace sculpt
+}  // namespace sculpt

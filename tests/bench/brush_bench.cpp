@@ -8,16 +8,15 @@
 //                       counter undo_bytes = the stroke's journal bytes per stamp
 // BM_NaiveUnion/R     : createLevelSetSphere(16) + csgUnion into the sphere + volumeToMesh
 
-#include "core/primitives/analytic_shapes.h"
 #include "core/brushes/brush.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/field/leaf_journal.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 
+#include <benchmark/benchmark.h>
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
 #include <openvdb/tools/VolumeToMesh.h>
-
-#include <benchmark/benchmark.h>
 
 #include <cmath>
 
@@ -93,4 +92,4 @@ BENCHMARK(BM_Stamp)
 BENCHMARK(BM_Stamp)->ArgsProduct({{3, 4, 5, 6}, {256}})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
 BENCHMARK(BM_NaiveUnion)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
-} // namespace
+}  // namespace

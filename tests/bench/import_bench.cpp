@@ -12,18 +12,17 @@
 // BM_ImportScan/1, BM_FlyingEdges/1 : the same for a synthetic 512^3 uint8 scan of a ball
 //                         (raw file, written once to the temporary directory)
 
-#include "core/scan/scan_to_level_set.h"
 #include "core/io/vdb_file.h"
+#include "core/scan/scan_to_level_set.h"
 
+#include <malloc.h>
+
+#include <benchmark/benchmark.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageReader2.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-
-#include <benchmark/benchmark.h>
-
-#include <malloc.h>
 
 #include <algorithm>
 #include <cmath>
@@ -160,4 +159,4 @@ BENCHMARK(BM_FlyingEdges)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime()-
 BENCHMARK(BM_ImportScan)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 BENCHMARK(BM_FlyingEdges)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
-} // namespace
+}  // namespace

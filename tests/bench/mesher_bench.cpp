@@ -6,13 +6,12 @@
 // BM_OursIncremental/R     : re-mesh after one radius-16 stamp at the surface of a radius-R sphere
 // BM_OursRebuild/R         : re-mesh of every block (no welding): the incremental path's baseline
 
-#include "core/primitives/analytic_shapes.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/local/sphere_stamp.h"
-
-#include <openvdb/tools/VolumeToMesh.h>
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 
 #include <benchmark/benchmark.h>
+#include <openvdb/tools/VolumeToMesh.h>
 
 #include <map>
 #include <memory>
@@ -81,10 +80,14 @@ void BM_OursIncremental(benchmark::State& state)
 
 BENCHMARK(BM_OursFull)
     ->ArgsProduct({{64, 128, 256, 512}, {16}})
-    ->Args({128, 8})->Args({128, 32})->Args({256, 8})->Args({256, 32})
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Args({128, 8})
+    ->Args({128, 32})
+    ->Args({256, 8})
+    ->Args({256, 32})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_VolumeToMesh)->Arg(64)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OursRebuild)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OursIncremental)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-} // namespace
+}  // namespace

@@ -8,14 +8,13 @@
 //                              0.4 voxel of the box (checked every 4 steps / 4 CFL steps)
 // BM_OursRegionSmoothStep/R  : one smoothing step limited to a radius-16 ball on a radius-R sphere
 
-#include "core/primitives/analytic_shapes.h"
 #include "core/motion/level_set_evolution.h"
 #include "core/motion/morph.h"
-
-#include <openvdb/tools/LevelSetFilter.h>
-#include <openvdb/tools/LevelSetMorph.h>
+#include "core/primitives/analytic_shapes.h"
 
 #include <benchmark/benchmark.h>
+#include <openvdb/tools/LevelSetFilter.h>
+#include <openvdb/tools/LevelSetMorph.h>
 
 namespace {
 
@@ -102,4 +101,4 @@ BENCHMARK(BM_OursRegionSmoothStep)->Arg(128)->Arg(256)->Unit(benchmark::kMillise
 BENCHMARK(BM_OursMorph)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_OpenVdbMorph)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
-} // namespace
+}  // namespace

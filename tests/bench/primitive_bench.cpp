@@ -5,14 +5,13 @@
 // BM_OursStamp/R       : rasterize the primitive over its own box, union into a radius-R sphere
 // BM_OpenVdbCsgUnion/R : createLevelSetSphere(16) then tools::csgUnion into a radius-R sphere
 
-#include "core/primitives/analytic_shapes.h"
 #include "core/field/csg_combine.h"
+#include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
 
+#include <benchmark/benchmark.h>
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
-
-#include <benchmark/benchmark.h>
 
 namespace {
 
@@ -54,4 +53,4 @@ void BM_OpenVdbCsgUnion(benchmark::State& state)
 BENCHMARK(BM_OursStamp)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenVdbCsgUnion)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-} // namespace
+}  // namespace

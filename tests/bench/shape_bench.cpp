@@ -3,9 +3,8 @@
 
 #include "core/primitives/analytic_shapes.h"
 
-#include <openvdb/tools/LevelSetSphere.h>
-
 #include <benchmark/benchmark.h>
+#include <openvdb/tools/LevelSetSphere.h>
 
 namespace {
 
@@ -22,8 +21,8 @@ void BM_OpenVdbSphere(benchmark::State& state)
 {
     const float radiusVoxels = float(state.range(0));
     for (auto _ : state) {
-        auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
-            radiusVoxels, openvdb::Vec3f(0.0f), 1.0f, 3.0f);
+        auto grid =
+            openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(radiusVoxels, openvdb::Vec3f(0.0f), 1.0f, 3.0f);
         benchmark::DoNotOptimize(grid->activeVoxelCount());
     }
 }
@@ -31,4 +30,4 @@ void BM_OpenVdbSphere(benchmark::State& state)
 BENCHMARK(BM_SculptSphere)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OpenVdbSphere)->Arg(64)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond);
 
-} // namespace
+}  // namespace

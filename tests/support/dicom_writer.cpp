@@ -59,7 +59,7 @@ std::string decimals(std::initializer_list<double> values)
     return s.str();
 }
 
-} // namespace
+}  // namespace
 
 void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& d)
 {
@@ -74,8 +74,9 @@ void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& d)
     w.text(0x0020, 0x000E, "UI", d.seriesUid);
     w.text(0x0020, 0x0013, "IS", std::to_string(d.instanceNumber));
     w.text(0x0020, 0x0032, "DS", decimals({d.position.x(), d.position.y(), d.position.z()}));
-    w.text(0x0020, 0x0037, "DS", decimals({d.rowDirection.x(), d.rowDirection.y(), d.rowDirection.z(), d.columnDirection.x(),
-                                           d.columnDirection.y(), d.columnDirection.z()}));
+    w.text(0x0020, 0x0037, "DS",
+           decimals({d.rowDirection.x(), d.rowDirection.y(), d.rowDirection.z(), d.columnDirection.x(),
+                     d.columnDirection.y(), d.columnDirection.z()}));
     w.ushort(0x0028, 0x0002, 1);
     w.text(0x0028, 0x0004, "CS", "MONOCHROME2");
     w.ushort(0x0028, 0x0010, std::uint16_t(d.rows));
@@ -88,4 +89,4 @@ void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& d)
     w.pixels(d.pixels);
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -15,7 +15,7 @@ namespace sculpt::test {
 struct DicomSliceSpec {
     int rows = 0, columns = 0;
     double rowSpacing = 1.0, columnSpacing = 1.0, sliceThickness = 1.0;
-    openvdb::Vec3d position{0.0};               ///< (0020,0032) of the first pixel
+    openvdb::Vec3d position{0.0};                   ///< (0020,0032) of the first pixel
     openvdb::Vec3d rowDirection{1.0, 0.0, 0.0};     ///< along a row (increasing column)
     openvdb::Vec3d columnDirection{0.0, 1.0, 0.0};  ///< down a column (increasing row)
     int instanceNumber = 1;
@@ -25,4 +25,4 @@ struct DicomSliceSpec {
 
 void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& slice);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -17,4 +17,4 @@ FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values)
     return FieldImage(grid);
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -13,4 +13,4 @@ namespace sculpt::test {
 /// the surface closes in the neighbouring cells.
 FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -72,7 +72,7 @@ std::int64_t featureEdgeCount(vtkPolyData* poly, bool boundary)
     return edges->GetOutput()->GetNumberOfCells();
 }
 
-} // namespace
+}  // namespace
 
 MeshTopology meshTopology(const TriangleMesh& mesh)
 {
@@ -138,4 +138,4 @@ VtkMeshReport vtkMeshReport(const std::filesystem::path& meshFile)
     return r;
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -11,19 +11,18 @@ namespace sculpt::test {
 
 /// Edge statistics of an indexed mesh (vertices identified by index).
 struct MeshTopology {
-    std::int64_t vertices = 0;           ///< vertices used by at least one triangle
+    std::int64_t vertices = 0;  ///< vertices used by at least one triangle
     std::int64_t edges = 0;
     std::int64_t faces = 0;
-    std::int64_t boundaryEdges = 0;      ///< edges with one triangle
-    std::int64_t nonManifoldEdges = 0;   ///< edges with three or more triangles
-    std::int64_t misorientedEdges = 0;   ///< interior edges traversed twice in one direction
-    std::int64_t degenerateFaces = 0;    ///< triangles repeating a vertex index
+    std::int64_t boundaryEdges = 0;     ///< edges with one triangle
+    std::int64_t nonManifoldEdges = 0;  ///< edges with three or more triangles
+    std::int64_t misorientedEdges = 0;  ///< interior edges traversed twice in one direction
+    std::int64_t degenerateFaces = 0;   ///< triangles repeating a vertex index
 
     std::int64_t eulerCharacteristic() const { return vertices - edges + faces; }
     bool closedManifold() const
     {
-        return boundaryEdges == 0 && nonManifoldEdges == 0 && misorientedEdges == 0 &&
-               degenerateFaces == 0;
+        return boundaryEdges == 0 && nonManifoldEdges == 0 && misorientedEdges == 0 && degenerateFaces == 0;
     }
 };
 
@@ -45,4 +44,4 @@ struct VtkMeshReport {
 };
 VtkMeshReport vtkMeshReport(const std::filesystem::path& meshFile);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -31,4 +31,4 @@ TriangleMesh meshWithVolumeToMesh(const FieldImage& field)
     return mesh;
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

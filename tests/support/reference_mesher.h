@@ -14,4 +14,4 @@ namespace sculpt::test {
 /// shorter diagonal. Cost: linear in the band size.
 TriangleMesh meshWithVolumeToMesh(const FieldImage& field);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -18,13 +18,13 @@ std::string slurp(const std::string& path)
     return text.str();
 }
 
-} // namespace
+}  // namespace
 
 CommandResult runSculpt(const std::string& args, const std::string& workDir)
 {
     const std::string outFile = workDir + "/.stdout", errFile = workDir + "/.stderr";
-    const std::string command = "cd '" + workDir + "' && '" SCULPT_EXECUTABLE "' " + args +
-                                " >'" + outFile + "' 2>'" + errFile + "' </dev/null";
+    const std::string command = "cd '" + workDir + "' && '" SCULPT_EXECUTABLE "' " + args + " >'" + outFile + "' 2>'" +
+                                errFile + "' </dev/null";
     const int status = std::system(command.c_str());
     CommandResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -35,4 +35,4 @@ CommandResult runSculpt(const std::string& args, const std::string& workDir)
     return result;
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

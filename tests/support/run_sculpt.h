@@ -15,4 +15,4 @@ struct CommandResult {
 /// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
 CommandResult runSculpt(const std::string& args, const std::string& workDir);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -31,7 +31,8 @@ double curvatureVariance(const FieldImage& field, std::optional<std::pair<openvd
     const double h = field.voxelSize();
     for (auto it = field.grid().cbeginValueOn(); it; ++it) {
         if (std::abs(*it) > 0.5 * h) continue;
-        if (ball && (field.grid().transform().indexToWorld(it.getCoord()) - ball->first).length() > ball->second) continue;
+        if (ball && (field.grid().transform().indexToWorld(it.getCoord()) - ball->first).length() > ball->second)
+            continue;
         stencil.moveTo(it.getCoord());
         const double k = stencil.meanCurvature();
         sum += k;
@@ -42,4 +43,4 @@ double curvatureVariance(const FieldImage& field, std::optional<std::pair<openvd
     return sum2 / double(n) - mean * mean;
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

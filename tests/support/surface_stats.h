@@ -18,4 +18,4 @@ RadiusStats surfaceRadius(const FieldImage& field, const openvdb::Vec3d& centre 
 /// the surface, optionally only those within `radius` of `centre`.
 double curvatureVariance(const FieldImage& field, std::optional<std::pair<openvdb::Vec3d, double>> ball = std::nullopt);
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -31,4 +31,4 @@ std::vector<std::string> TempDir::entries() const
     return names;
 }
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -24,4 +24,4 @@ private:
     std::filesystem::path mPath;
 };
 
-} // namespace sculpt::test
+}  // namespace sculpt::test

@@ -1,20 +1,18 @@
 // Brushes (core/brush.h): each tool's effect against what it promises, on analytic shapes.
 
-#include "tests/support/surface_stats.h"
-
-#include "core/primitives/analytic_shapes.h"
+#include "core/base/errors.h"
 #include "core/brushes/brush.h"
 #include "core/field/csg_combine.h"
-#include "core/base/errors.h"
-#include "core/mesh/field_measures.h"
 #include "core/field/grid_checksum.h"
-#include "core/mesh/incremental_mesher.h"
 #include "core/field/leaf_journal.h"
+#include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
-
-#include <openvdb/tools/Interpolation.h>
+#include "tests/support/surface_stats.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/tools/Interpolation.h>
 
 #include <cmath>
 #include <set>
@@ -64,7 +62,8 @@ double crossingAlong(const FieldImage& field, const Vec3d& origin, const Vec3d& 
 /// Volume of the lens where balls of radii R and r, centres d apart, overlap.
 double lensVolume(double R, double r, double d)
 {
-    return M_PI * (R + r - d) * (R + r - d) * (d * d + 2 * d * r - 3 * r * r + 2 * d * R + 6 * r * R - 3 * R * R) / (12 * d);
+    return M_PI * (R + r - d) * (R + r - d) * (d * d + 2 * d * r - 3 * r * r + 2 * d * R + 6 * r * R - 3 * R * R) /
+           (12 * d);
 }
 
 /// Every voxel (active or not, of either grid's leaves) farther than `radius` from `centre` is
@@ -284,12 +283,14 @@ TEST(Brush, PrimitiveStampCombinesTheSetAtTheStamp)
     blob.skeleton.type = SkeletonType::Point;
     blob.kernel.type = KernelType::SoftObject;
     blob.kernel.radius = 6.0;
-    auto stamp = std::make_shared<PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
+    auto stamp =
+        std::make_shared<PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
     BrushSettings settings = brush(BrushTool::Primitive, 3.0);
     settings.primitive = stamp;
     applyStamp(field, settings, stampAt(Vec3d(30, 0, 0)), nullptr);
     const double added = volumeOf(field) - before;
-    const double alone = volumeOf(rasterizePrimitives(stamp->primitives.translated(Vec3d(30, 0, 0)), field.grid().transform()));
+    const double alone =
+        volumeOf(rasterizePrimitives(stamp->primitives.translated(Vec3d(30, 0, 0)), field.grid().transform()));
     EXPECT_NEAR(added, alone, 0.02 * alone);
     EXPECT_EQ(measureField(field).components, 2);
 }
@@ -334,5 +335,5 @@ TEST(Brush, RejectsBadSettingsNamingTheField)
     EXPECT_THROW(falloffFromName("linear"), InputError);
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

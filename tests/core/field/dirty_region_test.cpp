@@ -42,5 +42,5 @@ TEST(DirtyRegion, FieldImageAccumulatesUntilTaken)
     EXPECT_TRUE(field.dirtyRegion().empty());
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

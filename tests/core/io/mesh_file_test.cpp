@@ -1,14 +1,13 @@
 // Exported meshes, re-read by VTK: closed, 2-manifold, enclosing the grid's volume.
 
+#include "core/base/errors.h"
+#include "core/io/mesh_file.h"
+#include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/reference_mesher.h"
 #include "tests/support/temp_dir.h"
-
-#include "core/primitives/analytic_shapes.h"
-#include "core/base/errors.h"
-#include "core/mesh/field_measures.h"
-#include "core/mesh/incremental_mesher.h"
-#include "core/io/mesh_file.h"
 
 #include <gtest/gtest.h>
 
@@ -37,7 +36,7 @@ TEST_P(MeshFileFormats, ExportIsClosedAndKeepsVolume)
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFormats, MeshFileFormats, ::testing::Values(".ply", ".obj", ".stl"),
-                         [](const auto& info) { return info.param.substr(1); });
+                         [](const auto& test) { return test.param.substr(1); });
 
 TEST(MeshFile, ReferenceMeshIsOrientedOutwards)
 {
@@ -65,5 +64,5 @@ TEST(MeshFile, MissingDirectoryIsAnInputError)
     EXPECT_TRUE(dir.entries().empty());
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

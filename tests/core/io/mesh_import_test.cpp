@@ -1,22 +1,20 @@
 // Importing meshes (core/mesh_import.h): closed meshes keep their volume, open ones are reported,
 // bad files are refused.
 
+#include "core/base/errors.h"
+#include "core/io/mesh_file.h"
+#include "core/io/mesh_import.h"
+#include "core/mesh/incremental_mesher.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/temp_dir.h"
 
-#include "core/base/errors.h"
-#include "core/mesh/incremental_mesher.h"
-#include "core/io/mesh_file.h"
-#include "core/io/mesh_import.h"
-
+#include <gtest/gtest.h>
 #include <vtkNew.h>
 #include <vtkOBJWriter.h>
 #include <vtkPLYWriter.h>
 #include <vtkSTLWriter.h>
 #include <vtkSphereSource.h>
 #include <vtkTriangleFilter.h>
-
-#include <gtest/gtest.h>
 
 #include <fstream>
 
@@ -48,7 +46,8 @@ TEST(MeshImport, ClosedMeshesInEveryFormatKeepTheirVolume)
     {  // OFF by hand: a cube of side 8 with quad faces
         std::ofstream off(dir / "cube.off");
         off << "OFF\n8 6 0\n";
-        for (int i = 0; i < 8; ++i) off << (i & 1 ? 4 : -4) << " " << (i & 2 ? 4 : -4) << " " << (i & 4 ? 4 : -4) << "\n";
+        for (int i = 0; i < 8; ++i)
+            off << (i & 1 ? 4 : -4) << " " << (i & 2 ? 4 : -4) << " " << (i & 4 ? 4 : -4) << "\n";
         off << "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
     }
     for (const char* name : {"ball.stl", "ball.ply", "ball.obj", "cube.off"}) {
@@ -97,5 +96,5 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -1,15 +1,13 @@
 // Documents in .vdb files: exact round trips, foreign files, and damaged files refused cleanly.
 
-#include "tests/support/temp_dir.h"
-
-#include "core/primitives/analytic_shapes.h"
 #include "core/base/errors.h"
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
-
-#include <openvdb/io/File.h>
+#include "core/primitives/analytic_shapes.h"
+#include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/io/File.h>
 
 #include <fstream>
 #include <random>
@@ -89,7 +87,7 @@ TEST(VdbFile, ReadsForeignLevelSetWithoutOurMetadata)
     const FieldImage sphere = makeSphere(8.0, 1.0);
     auto grid = sphere.grid().deepCopy();
     grid->setName("houdini_sdf");
-    openvdb::io::File(( dir / "foreign.vdb").string()).write({grid});
+    openvdb::io::File((dir / "foreign.vdb").string()).write({grid});
     const FieldImage back = readFieldImage(dir / "foreign.vdb");
     EXPECT_EQ(back.units(), FieldImage::kDefaultUnits);
     expectIdenticalGrids(sphere.grid(), back.grid());
@@ -175,5 +173,5 @@ TEST(VdbFile, OverwriteReplacesWholeFile)
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"doc.vdb"});
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

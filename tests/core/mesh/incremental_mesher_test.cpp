@@ -1,21 +1,19 @@
 // The block mesher on analytic shapes, after random local edits, and against OpenVDB and VTK.
 
+#include "core/local/sphere_stamp.h"
+#include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/reference_mesher.h"
 
-#include "core/primitives/analytic_shapes.h"
-#include "core/mesh/field_measures.h"
-#include "core/mesh/incremental_mesher.h"
-#include "core/local/sphere_stamp.h"
-
-#include <vtkFlyingEdges3D.h>
+#include <gtest/gtest.h>
 #include <vtkFloatArray.h>
+#include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkMassProperties.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-
-#include <gtest/gtest.h>
 
 #include <random>
 
@@ -32,8 +30,8 @@ TEST_P(SphereMesh, IsClosedAccurateAndOnTheSurface)
     const double r = GetParam(), h = 1.0;
     const TriangleMesh mesh = meshLevelSet(makeSphere(r, h));
     const test::MeshTopology t = meshTopology(mesh);
-    EXPECT_TRUE(t.closedManifold()) << t.boundaryEdges << " boundary, " << t.nonManifoldEdges
-                                    << " non-manifold, " << t.misorientedEdges << " misoriented";
+    EXPECT_TRUE(t.closedManifold()) << t.boundaryEdges << " boundary, " << t.nonManifoldEdges << " non-manifold, "
+                                    << t.misorientedEdges << " misoriented";
     EXPECT_EQ(t.eulerCharacteristic(), 2);
     double worst = 0.0;
     for (const auto& p : mesh.positions) {
@@ -50,7 +48,7 @@ TEST_P(SphereMesh, IsClosedAccurateAndOnTheSurface)
 }
 
 INSTANTIATE_TEST_SUITE_P(RadiusVoxels, SphereMesh, ::testing::Values(8.0, 13.7, 30.0, 64.0, 100.0),
-                         [](const auto& info) { return "r" + std::to_string(int(info.param)); });
+                         [](const auto& test) { return "r" + std::to_string(int(test.param)); });
 
 TEST(IncrementalMesher, TorusIsClosedWithEulerZero)
 {
@@ -200,5 +198,5 @@ TEST(IncrementalMesher, AgreesWithVtkFlyingEdges)
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -1,10 +1,9 @@
 // The generated marching-cubes table: every configuration and every ambiguous face pair closes.
 
-#include "tests/support/grid_builders.h"
-#include "tests/support/mesh_checks.h"
-
 #include "core/mesh/incremental_mesher.h"
 #include "core/mesh/marching_cubes_table.h"
+#include "tests/support/grid_builders.h"
+#include "tests/support/mesh_checks.h"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +17,7 @@ using test::fieldFromVoxels;
 using test::meshTopology;
 
 /// Corner c of the cube at `base`: inside (negative) iff bit c of `cube` is set.
-void setCube(std::map<openvdb::Coord, float>& values, const openvdb::Coord& base, unsigned cube,
-             std::mt19937& random)
+void setCube(std::map<openvdb::Coord, float>& values, const openvdb::Coord& base, unsigned cube, std::mt19937& random)
 {
     std::uniform_real_distribution<float> magnitude(0.05f, 1.0f);
     for (int c = 0; c < 8; ++c) {
@@ -110,12 +108,12 @@ TEST(MarchingCubes, CubePairsSharingAnAmbiguousFaceClose)
                 std::map<openvdb::Coord, float> second;
                 setCube(second, step, anyCube(random), random);
                 for (const auto& [ijk, v] : values) second[ijk] = v;  // shared face: cube one's values
-                expectClosed(second, "axis " + std::to_string(axis) + " pattern " +
-                                         std::to_string(pattern) + " trial " + std::to_string(trial));
+                expectClosed(second, "axis " + std::to_string(axis) + " pattern " + std::to_string(pattern) +
+                                         " trial " + std::to_string(trial));
             }
         }
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

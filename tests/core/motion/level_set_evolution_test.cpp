@@ -1,18 +1,16 @@
 // Level-set motion against analytic laws: curvature flow, offsets, volume control, locality.
 
-#include "tests/support/surface_stats.h"
-
-#include "core/primitives/analytic_shapes.h"
 #include "core/base/errors.h"
-#include "core/mesh/field_measures.h"
 #include "core/field/grid_checksum.h"
+#include "core/local/sphere_stamp.h"
+#include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
 #include "core/motion/surface_flows.h"
-#include "core/local/sphere_stamp.h"
-
-#include <openvdb/tools/LevelSetMeasure.h>
+#include "core/primitives/analytic_shapes.h"
+#include "tests/support/surface_stats.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/tools/LevelSetMeasure.h>
 
 #include <cmath>
 
@@ -54,8 +52,9 @@ TEST_P(OffsetSphere, ChangesRadiusByTheDistance)
     EXPECT_LT(radius.max - radius.min, 0.3 * h);  // still round
 }
 
-INSTANTIATE_TEST_SUITE_P(Distances, OffsetSphere, ::testing::Values(3.7, -4.2, 9.0),
-                         [](const auto& info) { return info.param > 0 ? "grow" + std::to_string(int(info.param)) : "shrink" + std::to_string(int(-info.param)); });
+INSTANTIATE_TEST_SUITE_P(Distances, OffsetSphere, ::testing::Values(3.7, -4.2, 9.0), [](const auto& test) {
+    return test.param > 0 ? "grow" + std::to_string(int(test.param)) : "shrink" + std::to_string(int(-test.param));
+});
 
 /// A sphere with six blobs stuck on it, redistanced as a sculpting session leaves it.
 FieldImage bumpySphere()
@@ -129,5 +128,5 @@ TEST(LevelSetEvolution, RejectsBadCoefficients)
     EXPECT_THROW(offset(field, std::nan("")), InputError);
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

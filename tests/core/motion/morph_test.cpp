@@ -1,11 +1,10 @@
 // Morphing between shapes: convergence, topology change, volume line, refusal of disjoint shapes.
 
-#include "core/primitives/analytic_shapes.h"
 #include "core/base/errors.h"
 #include "core/mesh/field_measures.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph.h"
-
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -101,5 +100,5 @@ TEST(Morph, DisjointShapesNeedAlign)
     expectConverged(s, target);
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -1,13 +1,12 @@
 // Starting shapes against their analytic volume, area and topology, and against OpenVDB's own
 // sphere builder.
 
-#include "core/primitives/analytic_shapes.h"
 #include "core/base/errors.h"
 #include "core/mesh/field_measures.h"
-
-#include <openvdb/tools/LevelSetSphere.h>
+#include "core/primitives/analytic_shapes.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/tools/LevelSetSphere.h>
 
 #include <cmath>
 
@@ -21,7 +20,8 @@ struct Expected {
     int euler;
 };
 
-void expectMeasures(const FieldImage& field, const Expected& e, double areaTolerance = 0.01, double volumeTolerance = 0.01)
+void expectMeasures(const FieldImage& field, const Expected& e, double areaTolerance = 0.01,
+                    double volumeTolerance = 0.01)
 {
     const FieldMeasures m = measureField(field);
     EXPECT_NEAR(m.volume, e.volume, volumeTolerance * e.volume);
@@ -123,5 +123,5 @@ TEST(AnalyticShapes, RefusesShapesLargerThanMemoryBeforeAllocating)
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

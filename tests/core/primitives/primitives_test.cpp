@@ -1,13 +1,12 @@
 // Implicit primitives: kernels, lone primitives against analytic shapes, blending graph, CSG.
 
-#include "tests/support/surface_stats.h"
-
-#include "core/primitives/analytic_shapes.h"
-#include "core/field/csg_combine.h"
 #include "core/base/errors.h"
+#include "core/field/csg_combine.h"
 #include "core/mesh/field_measures.h"
+#include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
+#include "tests/support/surface_stats.h"
 
 #include <gtest/gtest.h>
 
@@ -60,7 +59,7 @@ TEST_P(LonePoint, IsASphereOfRadiusInverseIso)
 }
 
 INSTANTIATE_TEST_SUITE_P(Kernels, LonePoint, ::testing::ValuesIn(kAllKernels),
-                         [](const auto& info) { return std::string(kernelName(info.param)).substr(0, 4); });
+                         [](const auto& test) { return std::string(kernelName(test.param)).substr(0, 4); });
 
 TEST(Primitives, SegmentMakesACapsule)
 {
@@ -85,9 +84,10 @@ TEST(Primitives, NeighboursFuseNonNeighboursMeetInACrease)
 {
     const double h = 0.25, d = 7.0;
     const auto pair = [&](bool neighbours) {
-        return PrimitiveSet({point({-d / 2, 0, 0}, KernelType::SoftObject, 8.0, neighbours ? std::vector<int>{1} : std::vector<int>{}),
-                             point({d / 2, 0, 0}, KernelType::SoftObject, 8.0)},
-                            0.5, true);
+        return PrimitiveSet(
+            {point({-d / 2, 0, 0}, KernelType::SoftObject, 8.0, neighbours ? std::vector<int>{1} : std::vector<int>{}),
+             point({d / 2, 0, 0}, KernelType::SoftObject, 8.0)},
+            0.5, true);
     };
     const double r = Kernel{KernelType::SoftObject, 8.0, 1.0}.inverse(0.5);  // 4: the balls overlap
     const FieldMeasures fused = measureField(rasterizePrimitives(pair(true), *voxels(h)));
@@ -97,7 +97,7 @@ TEST(Primitives, NeighboursFuseNonNeighboursMeetInACrease)
     EXPECT_EQ(creased.components, 1);
     EXPECT_EQ(creased.eulerCharacteristic, 2);
     EXPECT_NEAR(creased.volume, twoBallsVolume(r, d), 0.01 * twoBallsVolume(r, d));  // no bridge
-    EXPECT_GT(fused.volume, 1.05 * creased.volume);                                    // a bridge
+    EXPECT_GT(fused.volume, 1.05 * creased.volume);                                  // a bridge
 }
 
 TEST(Primitives, ChainEndsTouchWithoutFusing)
@@ -172,11 +172,17 @@ TEST(SceneFile, BadScenesNameThePrimitiveAndField)
     };
     const std::string point = R"("skeleton": {"type": "point", "position": [0, 0, 0]})";
     expectError(R"({"primitives": [{"kernel": "gauss", "radius": 1, )" + point + "}]}", "gauss");
-    expectError(R"({"primitives": [{"name": "x", "kernel": "metaball", "radius": 0, )" + point + "}]}", "primitive 0 ('x'): radius");
+    expectError(R"({"primitives": [{"name": "x", "kernel": "metaball", "radius": 0, )" + point + "}]}",
+                "primitive 0 ('x'): radius");
     expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "skeleton": {"type": "cone"}}]})", "cone");
-    expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "neighbours": ["ghost"], )" + point + "}]}", "ghost");
-    expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "skeleton": {"type": "segment", "from": [1, 1, 1], "to": [1, 1, 1]}}]})", "degenerate segment");
-    expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "skeleton": {"type": "triangle", "points": [[0,0,0],[1,1,1],[2,2,2]]}}]})", "degenerate triangle");
+    expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "neighbours": ["ghost"], )" + point + "}]}",
+                "ghost");
+    expectError(
+        R"({"primitives": [{"kernel": "metaball", "radius": 1, "skeleton": {"type": "segment", "from": [1, 1, 1], "to": [1, 1, 1]}}]})",
+        "degenerate segment");
+    expectError(
+        R"({"primitives": [{"kernel": "metaball", "radius": 1, "skeleton": {"type": "triangle", "points": [[0,0,0],[1,1,1],[2,2,2]]}}]})",
+        "degenerate triangle");
     expectError(R"({"primitives": [{"kernel": "metaball", )" + point + "}]}", "missing field 'radius'");
     expectError(R"({"primitives": [)", "malformed JSON");
     expectError(R"({"primitives": [{"kernel": "metaball", "radius": 1, "strength": 0.2, )" + point + "}]}", "strength");
@@ -191,5 +197,5 @@ TEST(SceneFile, ExampleScenesBuild)
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

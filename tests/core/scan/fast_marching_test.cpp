@@ -32,7 +32,8 @@ void seedExact(Box& box, Sdf sdf)
             for (int x = 1; x < n - 1; ++x) {
                 const double d = sdf(x, y, z);
                 bool crossing = false;
-                for (const auto& o : {openvdb::math::Coord(1, 0, 0), openvdb::math::Coord(0, 1, 0), openvdb::math::Coord(0, 0, 1)}) {
+                for (const auto& o :
+                     {openvdb::math::Coord(1, 0, 0), openvdb::math::Coord(0, 1, 0), openvdb::math::Coord(0, 0, 1)}) {
                     crossing = crossing || (sdf(x + o.x(), y + o.y(), z + o.z()) < 0) != (d < 0) ||
                                (sdf(x - o.x(), y - o.y(), z - o.z()) < 0) != (d < 0);
                 }
@@ -106,5 +107,5 @@ TEST(FastMarching, SeedsKeepTheirValuesAndFacesAreLeftAlone)
     EXPECT_EQ(box.distance[box.index(0, 3, 3)], kFar) << "faces only border the march";
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

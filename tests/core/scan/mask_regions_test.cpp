@@ -3,9 +3,8 @@
 
 #include "core/scan/mask_regions.h"
 
-#include <openvdb/tools/LevelSetUtil.h>
-
 #include <gtest/gtest.h>
+#include <openvdb/tools/LevelSetUtil.h>
 
 #include <algorithm>
 #include <random>
@@ -56,7 +55,7 @@ TEST(MaskRegions, ActiveTilesAndLeafFacesConnect)
 {
     openvdb::BoolTree mask(false);
     mask.fill(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(127)), true, true);  // one tile of 128^3
-    mask.setValueOn(openvdb::Coord(128, 5, 5));  // touches the tile's face
+    mask.setValueOn(openvdb::Coord(128, 5, 5));                                         // touches the tile's face
     mask.setValueOn(openvdb::Coord(129, 6, 5));  // touches that voxel along an edge only: apart
     const MaskRegion region = connectedRegion(mask, openvdb::Coord(128, 5, 5));
     EXPECT_EQ(region.voxelCount(), openvdb::Index64(128) * 128 * 128 + 1);
@@ -68,5 +67,5 @@ TEST(MaskRegions, ActiveTilesAndLeafFacesConnect)
     EXPECT_EQ(regionSizes(mask).size(), 2u);
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -1,18 +1,20 @@
 // Importing scans (core/scan_volume.h, core/scan_to_level_set.h): every format, world placement,
 // agreement with VTK on a real MRI, and refusal of bad files.
 
-#include "tests/support/dicom_writer.h"
-#include "tests/support/mesh_checks.h"
-#include "tests/support/temp_dir.h"
-
 #include "core/base/errors.h"
-#include "core/mesh/field_measures.h"
 #include "core/field/grid_checksum.h"
+#include "core/mesh/field_measures.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/scan/largest_component.h"
 #include "core/scan/scan_to_level_set.h"
 #include "core/scan/scan_volume.h"
+#include "tests/support/dicom_writer.h"
+#include "tests/support/mesh_checks.h"
+#include "tests/support/temp_dir.h"
 
+#include <gtest/gtest.h>
+#include <openvdb/tools/FastSweeping.h>
+#include <tbb/global_control.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
 #include <vtkMassProperties.h>
@@ -20,15 +22,9 @@
 #include <vtkMetaImageWriter.h>
 #include <vtkNIFTIImageReader.h>
 #include <vtkNIFTIImageWriter.h>
-#include <vtkSmartPointer.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
-
-#include <gtest/gtest.h>
-
-#include <openvdb/tools/FastSweeping.h>
-
-#include <tbb/global_control.h>
 
 #include <cmath>
 #include <filesystem>
@@ -45,7 +41,8 @@ const char* kMri = "/usr/share/mricron/templates/ch2bet.nii.gz";
 /// inside with a linear ramp across the surface (100 on it), on a lattice with the given spacing
 /// and origin.
 vtkSmartPointer<vtkImageData> sampledImage(const openvdb::Coord& dims, const openvdb::Vec3d& spacing,
-                                           const openvdb::Vec3d& origin, const std::function<double(const openvdb::Vec3d&)>& sdf)
+                                           const openvdb::Vec3d& origin,
+                                           const std::function<double(const openvdb::Vec3d&)>& sdf)
 {
     auto image = vtkSmartPointer<vtkImageData>::New();
     image->SetDimensions(dims.x(), dims.y(), dims.z());
@@ -71,7 +68,8 @@ std::pair<double, openvdb::Vec3d> sphereOf(const FieldImage& field)
     openvdb::Vec3d centre(0.0);
     for (const auto& p : mesh.positions) centre += openvdb::Vec3d(p[0], p[1], p[2]) / double(mesh.positions.size());
     double radius = 0.0;
-    for (const auto& p : mesh.positions) radius += (openvdb::Vec3d(p[0], p[1], p[2]) - centre).length() / double(mesh.positions.size());
+    for (const auto& p : mesh.positions)
+        radius += (openvdb::Vec3d(p[0], p[1], p[2]) - centre).length() / double(mesh.positions.size());
     return {radius, centre};
 }
 
@@ -83,7 +81,8 @@ struct SyntheticBall {
     double radius = 12.0;
     vtkSmartPointer<vtkImageData> image() const
     {
-        return sampledImage(dims, spacing, origin, [&](const openvdb::Vec3d& p) { return (p - centre).length() - radius; });
+        return sampledImage(dims, spacing, origin,
+                            [&](const openvdb::Vec3d& p) { return (p - centre).length() - radius; });
     }
 };
 
@@ -93,7 +92,8 @@ void writeMetaImage(vtkImageData* image, const std::filesystem::path& path)
     vtkNew<vtkMetaImageWriter> writer;
     writer->SetInputData(image);
     writer->SetFileName(path.c_str());
-    if (path.extension() == ".mhd") writer->SetRAWFileName(path.parent_path().append(path.stem().string() + ".raw").c_str());
+    if (path.extension() == ".mhd")
+        writer->SetRAWFileName(path.parent_path().append(path.stem().string() + ".raw").c_str());
     writer->SetCompression(false);
     writer->Write();
 }
@@ -104,7 +104,8 @@ void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::
     EXPECT_DOUBLE_EQ(field.voxelSize(), 1.0) << format;
     const auto [radius, centre] = sphereOf(field);
     EXPECT_NEAR(radius, ball.radius, 0.5) << format;
-    EXPECT_NEAR((centre - ball.centre).length(), 0.0, 0.5) << format << " centre " << centre << " expected " << ball.centre;
+    EXPECT_NEAR((centre - ball.centre).length(), 0.0, 0.5)
+        << format << " centre " << centre << " expected " << ball.centre;
 }
 
 TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
@@ -134,8 +135,8 @@ TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
     {
         std::ofstream header(dir / "ball.nhdr");
         header << "NRRD0004\ntype: short\ndimension: 3\nsizes: " << ball.dims.x() << " " << ball.dims.y() << " "
-               << ball.dims.z() << "\nspacings: 1 1 2\nencoding: raw\nendian: little\nspace origin: (" << ball.origin.x()
-               << "," << ball.origin.y() << "," << ball.origin.z() << ")\ndata file: ball.raw\n";
+               << ball.dims.z() << "\nspacings: 1 1 2\nencoding: raw\nendian: little\nspace origin: ("
+               << ball.origin.x() << "," << ball.origin.y() << "," << ball.origin.z() << ")\ndata file: ball.raw\n";
         header.close();
         const ScanVolume nrrd = readScan(dir / "ball.nhdr");
         EXPECT_EQ(nrrd.dims(), ball.dims);
@@ -206,7 +207,8 @@ TEST(ScanImport, CropSmoothAndLargestComponent)
     writeMetaImage(ball.image(), dir / "ball.mha");
     const ScanVolume scan = readScan(dir / "ball.mha");
     // The lower half in z (samples 0..10 of 22): a capped half ball, still placed in the world.
-    const FieldImage half = scanToLevelSet(scan.cropped(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(39, 39, 10))), 100.0, 1.0);
+    const FieldImage half =
+        scanToLevelSet(scan.cropped(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(39, 39, 10))), 100.0, 1.0);
     const openvdb::CoordBBox box = half.grid().evalActiveVoxelBoundingBox();
     EXPECT_LT(half.grid().transform().indexToWorld(box.max()).z(), ball.origin.z() + 2 * 10 + 4);
     const double halfBall = 2.0 / 3.0 * M_PI * std::pow(ball.radius, 3);
@@ -226,7 +228,8 @@ TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
         return std::min({std::max(r - 14.0, 8.0 - r), r - 3.0, (p - beside).length() - 5.0});
     };
     test::TempDir dir;
-    writeMetaImage(sampledImage(openvdb::Coord(56, 48, 48), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), sdf), dir / "pieces.mha");
+    writeMetaImage(sampledImage(openvdb::Coord(56, 48, 48), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), sdf),
+                   dir / "pieces.mha");
     FieldImage field = scanToLevelSet(readScan(dir / "pieces.mha"), 100.0, 1.0);
     EXPECT_EQ(test::meshTopology(meshLevelSet(field)).eulerCharacteristic(), 8) << "four sphere-like surfaces";
 
@@ -264,7 +267,7 @@ TEST(ScanImport, CoarseVoxelSizeAveragesNoiseInsteadOfAliasingIt)
     const double aliased = test::meshArea(meshLevelSet(scanToLevelSet(scan, 100.0, 2.0))) / sphereArea - 1.0;
     const double smooth = test::meshArea(meshLevelSet(scanToLevelSet(*filtered, 100.0, 2.0))) / sphereArea - 1.0;
     EXPECT_GT(aliased, 0.1) << "point samples of the noise: a rough surface";  // measured +25%
-    EXPECT_NEAR(smooth, 0.0, 0.05) << "filtered: the ball";                       // measured -3.0%
+    EXPECT_NEAR(smooth, 0.0, 0.05) << "filtered: the ball";                    // measured -3.0%
     EXPECT_NEAR(sphereOf(scanToLevelSet(*filtered, 100.0, 2.0)).first, 12.0, 1.0) << "within half a voxel";
 }
 
@@ -322,7 +325,8 @@ std::vector<std::filesystem::path> writeBallSeries(const std::filesystem::path& 
         slice.seriesUid = seriesUid;
         for (int r = 0; r < slice.rows; ++r) {
             for (int c = 0; c < slice.columns; ++c) {
-                const openvdb::Vec3d world = slice.position + openvdb::Vec3d(c * ball.spacing.x(), r * ball.spacing.y(), 0);
+                const openvdb::Vec3d world =
+                    slice.position + openvdb::Vec3d(c * ball.spacing.x(), r * ball.spacing.y(), 0);
                 const double d = (world - ball.centre).length() - ball.radius;
                 slice.pixels.push_back(std::uint16_t(std::clamp(100.0 - 40.0 * d, 0.0, 200.0)));
             }
@@ -380,25 +384,25 @@ TEST(ScanImport, RealMriAgreesWithFlyingEdgesAndMassProperties)
 {
     if (!std::filesystem::exists(kMri)) GTEST_SKIP() << kMri << " missing: apt-get install mricron-data";
     for (const double iso : {35.0, 60.0}) {
-    vtkNew<vtkNIFTIImageReader> reader;
-    reader->SetFileName(kMri);
-    vtkNew<vtkFlyingEdges3D> edges;
-    edges->SetInputConnection(reader->GetOutputPort());
-    edges->SetValue(0, iso);
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputConnection(edges->GetOutputPort());
-    vtkNew<vtkMassProperties> mass;
-    mass->SetInputConnection(triangles->GetOutputPort());
-    mass->Update();
+        vtkNew<vtkNIFTIImageReader> reader;
+        reader->SetFileName(kMri);
+        vtkNew<vtkFlyingEdges3D> edges;
+        edges->SetInputConnection(reader->GetOutputPort());
+        edges->SetValue(0, iso);
+        vtkNew<vtkTriangleFilter> triangles;
+        triangles->SetInputConnection(edges->GetOutputPort());
+        vtkNew<vtkMassProperties> mass;
+        mass->SetInputConnection(triangles->GetOutputPort());
+        mass->Update();
 
-    const ScanVolume scan = readScan(kMri);
-    const FieldImage field = scanToLevelSet(scan, iso, nativeVoxelSize(scan));
-    const TriangleMesh mesh = meshLevelSet(field);
-    EXPECT_TRUE(test::meshTopology(mesh).closedManifold());
-    EXPECT_NEAR(test::meshVolume(mesh), std::abs(mass->GetVolume()), 0.02 * std::abs(mass->GetVolume())) << iso;
-    EXPECT_NEAR(test::meshArea(mesh), mass->GetSurfaceArea(), 0.02 * mass->GetSurfaceArea()) << iso;
+        const ScanVolume scan = readScan(kMri);
+        const FieldImage field = scanToLevelSet(scan, iso, nativeVoxelSize(scan));
+        const TriangleMesh mesh = meshLevelSet(field);
+        EXPECT_TRUE(test::meshTopology(mesh).closedManifold());
+        EXPECT_NEAR(test::meshVolume(mesh), std::abs(mass->GetVolume()), 0.02 * std::abs(mass->GetVolume())) << iso;
+        EXPECT_NEAR(test::meshArea(mesh), mass->GetSurfaceArea(), 0.02 * mass->GetSurfaceArea()) << iso;
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -4,9 +4,8 @@
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
 
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -42,8 +41,8 @@ TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
     EXPECT_NE(r.out.find("clay.vdb"), std::string::npos);
 
     const auto info = infoJson(dir, "clay.vdb");
-    for (const char* key : {"voxel_size", "active_voxels", "memory_bytes", "bbox_min", "bbox_max",
-                            "volume", "area", "euler_characteristic", "components"}) {
+    for (const char* key : {"voxel_size", "active_voxels", "memory_bytes", "bbox_min", "bbox_max", "volume", "area",
+                            "euler_characteristic", "components"}) {
         EXPECT_TRUE(info.contains(key)) << key;
     }
     const double radius = info["bbox_max"][0].get<double>();
@@ -61,8 +60,8 @@ TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
 TEST(SculptCli, NewHonoursShapeAndSizes)
 {
     TempDir dir;
-    ASSERT_EQ(runSculpt("new --shape torus --radius 12 --minor-radius 3 --voxel-size 0.25 -o t.vdb",
-                        dir.path()).exitCode, 0);
+    ASSERT_EQ(
+        runSculpt("new --shape torus --radius 12 --minor-radius 3 --voxel-size 0.25 -o t.vdb", dir.path()).exitCode, 0);
     const auto torus = infoJson(dir, "t.vdb");
     EXPECT_EQ(torus["euler_characteristic"], 0);
     EXPECT_DOUBLE_EQ(torus["voxel_size"].get<double>(), 0.25);
@@ -81,8 +80,8 @@ TEST(SculptCli, TextInfoNamesEveryMeasure)
     ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
     const auto r = runSculpt("info s.vdb", dir.path());
     ASSERT_EQ(r.exitCode, 0);
-    for (const char* label : {"voxel size", "active voxels", "memory", "bounding box", "volume",
-                              "area", "euler characteristic", "components"}) {
+    for (const char* label : {"voxel size", "active voxels", "memory", "bounding box", "volume", "area",
+                              "euler characteristic", "components"}) {
         EXPECT_NE(r.out.find(label), std::string::npos) << label;
     }
 }
@@ -106,11 +105,13 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "broken.json") << R"({"primitives": [)";
     const std::string stroke = R"({"tool": "add", "radius": 1, "samples": [[5, 0, 0]]})";
     std::ofstream(dir / "s_ok.json") << R"({"events": [)" << stroke << "]}";
-    std::ofstream(dir / "s_tool.json") << R"({"events": [)" << stroke << R"(, {"tool": "sponge", "radius": 1, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_tool.json") << R"({"events": [)" << stroke
+                                       << R"(, {"tool": "sponge", "radius": 1, "samples": [[5, 0, 0]]}]})";
     std::ofstream(dir / "s_field.json") << R"({"events": [{"tool": "add", "radius": 1}]})";
     std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
     std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
-    std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
+    std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke
+                                       << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
     std::ofstream(dir / "junk.nii") << "not a NIfTI header, just some words";
     std::ofstream(dir / "tiny.raw") << "tiny";
     const auto before = dir.entries();
@@ -126,40 +127,37 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
 
 INSTANTIATE_TEST_SUITE_P(
     Calls, SculptCliBadInput,
-    ::testing::Values(BadCall{"info missing.vdb", "missing.vdb"},
-                      BadCall{"info corrupt.vdb", "corrupt.vdb"},
-                      BadCall{"mesh corrupt.vdb -o out.ply", "corrupt.vdb"},
-                      BadCall{"mesh good.vdb -o out.xyz", "out.xyz"},
-                      BadCall{"mesh good.vdb -o nodir/out.ply", "nodir"},
-                      BadCall{"new --voxel-size 0 -o out.vdb", "voxel size"},
-                      BadCall{"new --voxel-size -1 -o out.vdb", "voxel size"},
-                      BadCall{"new --radius 1e5 --voxel-size 0.001 -o out.vdb", "memory"},
-                      BadCall{"new --shape cone -o out.vdb", "cone"},
-                      BadCall{"new -o nodir/out.vdb", "nodir"},
-                      BadCall{"frobnicate", "frobnicate"},
-                      BadCall{"smooth good.vdb --iterations -2 -o out.vdb", "iterations"},
-                      BadCall{"offset corrupt.vdb --distance 1 -o out.vdb", "corrupt.vdb"},
-                      BadCall{"morph good.vdb missing.vdb -o frames", "missing.vdb"},
-                      BadCall{"morph good.vdb good.vdb --frames 1 -o frames", "frames"},
-                      BadCall{"build bad.json -o out.vdb", "primitive 0 ('arm'): radius"},
-                      BadCall{"build broken.json -o out.vdb", "malformed JSON"},
-                      BadCall{"build missing.json -o out.vdb", "missing.json"},
-                      BadCall{"build bad.json --into corrupt.vdb -o out.vdb", "radius"},
-                      BadCall{"apply good.vdb s_tool.json -o out.vdb", "s_tool.json: events[1] ('sponge' stroke): unknown tool"},
-                      BadCall{"apply good.vdb s_field.json -o out.vdb", "events[0] ('add' stroke): missing field 'samples'"},
-                      BadCall{"apply good.vdb s_inf.json -o out.vdb", "malformed JSON at events[0].samples[0][2]"},
-                      BadCall{"apply good.vdb s_radius.json -o out.vdb", "events[0] ('carve' stroke): field 'radius' must be a positive"},
-                      BadCall{"apply good.vdb s_huge.json -o out.vdb", "events[1] ('inflate' stroke): field 'radius' (90) is larger than the model"},
-                      BadCall{"apply corrupt.vdb s_ok.json -o out.vdb", "corrupt.vdb"},
-                      BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
-                      BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
-                      BadCall{"import junk.nii -o out.vdb", "junk.nii"},
-                      BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
-                      BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
-                      BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
-                      BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
-                      BadCall{"", "ubcommand"}),
-    [](const auto& info) { return "case" + std::to_string(info.index); });
+    ::testing::Values(
+        BadCall{"info missing.vdb", "missing.vdb"}, BadCall{"info corrupt.vdb", "corrupt.vdb"},
+        BadCall{"mesh corrupt.vdb -o out.ply", "corrupt.vdb"}, BadCall{"mesh good.vdb -o out.xyz", "out.xyz"},
+        BadCall{"mesh good.vdb -o nodir/out.ply", "nodir"}, BadCall{"new --voxel-size 0 -o out.vdb", "voxel size"},
+        BadCall{"new --voxel-size -1 -o out.vdb", "voxel size"},
+        BadCall{"new --radius 1e5 --voxel-size 0.001 -o out.vdb", "memory"},
+        BadCall{"new --shape cone -o out.vdb", "cone"}, BadCall{"new -o nodir/out.vdb", "nodir"},
+        BadCall{"frobnicate", "frobnicate"}, BadCall{"smooth good.vdb --iterations -2 -o out.vdb", "iterations"},
+        BadCall{"offset corrupt.vdb --distance 1 -o out.vdb", "corrupt.vdb"},
+        BadCall{"morph good.vdb missing.vdb -o frames", "missing.vdb"},
+        BadCall{"morph good.vdb good.vdb --frames 1 -o frames", "frames"},
+        BadCall{"build bad.json -o out.vdb", "primitive 0 ('arm'): radius"},
+        BadCall{"build broken.json -o out.vdb", "malformed JSON"},
+        BadCall{"build missing.json -o out.vdb", "missing.json"},
+        BadCall{"build bad.json --into corrupt.vdb -o out.vdb", "radius"},
+        BadCall{"apply good.vdb s_tool.json -o out.vdb", "s_tool.json: events[1] ('sponge' stroke): unknown tool"},
+        BadCall{"apply good.vdb s_field.json -o out.vdb", "events[0] ('add' stroke): missing field 'samples'"},
+        BadCall{"apply good.vdb s_inf.json -o out.vdb", "malformed JSON at events[0].samples[0][2]"},
+        BadCall{"apply good.vdb s_radius.json -o out.vdb",
+                "events[0] ('carve' stroke): field 'radius' must be a positive"},
+        BadCall{"apply good.vdb s_huge.json -o out.vdb",
+                "events[1] ('inflate' stroke): field 'radius' (90) is larger than the model"},
+        BadCall{"apply corrupt.vdb s_ok.json -o out.vdb", "corrupt.vdb"},
+        BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
+        BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
+        BadCall{"import junk.nii -o out.vdb", "junk.nii"}, BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
+        BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
+        BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
+        BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
+        BadCall{"", "ubcommand"}),
+    [](const auto& test) { return "case" + std::to_string(test.index); });
 
 TEST(SculptCli, SmoothAndOffsetChangeTheShape)
 {
@@ -182,7 +180,8 @@ TEST(SculptCli, MorphWritesFramesAndMeshes)
 {
     TempDir dir;
     ASSERT_EQ(runSculpt("new --radius 6 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
-    ASSERT_EQ(runSculpt("new --shape torus --radius 6 --minor-radius 2.5 --voxel-size 0.5 -o t.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(
+        runSculpt("new --shape torus --radius 6 --minor-radius 2.5 --voxel-size 0.5 -o t.vdb", dir.path()).exitCode, 0);
     const auto r = runSculpt("morph s.vdb t.vdb --frames 3 -o frames --mesh stl", dir.path());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("converged"), std::string::npos) << r.out;
@@ -198,7 +197,9 @@ TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
 {
     TempDir dir;
     ASSERT_EQ(runSculpt("new --radius 3 --voxel-size 0.5 -o a.vdb", dir.path()).exitCode, 0);
-    ASSERT_EQ(runSculpt("new --shape torus --radius 30 --minor-radius 3 --voxel-size 0.5 -o ring.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(
+        runSculpt("new --shape torus --radius 30 --minor-radius 3 --voxel-size 0.5 -o ring.vdb", dir.path()).exitCode,
+        0);
     const auto r = runSculpt("morph a.vdb ring.vdb --frames 2 -o frames", dir.path());
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("do not overlap"), std::string::npos) << r.err;
@@ -285,5 +286,5 @@ TEST(SculptCli, HelpExplainsEveryCommand)
     EXPECT_NE(r.out.find("--voxel-size FLOAT=0.5"), std::string::npos) << r.out;
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt

@@ -1,15 +1,14 @@
 // The sculpting session (sculpt/): strokes, symmetry, undo/redo, stroke scripts and replays.
 
-#include "core/primitives/analytic_shapes.h"
-#include "core/field/csg_combine.h"
 #include "core/base/errors.h"
+#include "core/field/csg_combine.h"
 #include "core/field/grid_checksum.h"
+#include "core/primitives/analytic_shapes.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
 
-#include <tbb/global_control.h>
-
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <random>
@@ -35,7 +34,8 @@ std::shared_ptr<const PrimitiveStamp> blobStamp()
 {
     Primitive blob;
     blob.kernel.radius = 3.0;
-    return std::make_shared<const PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
+    return std::make_shared<const PrimitiveStamp>(
+        PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
 }
 
 TEST(StrokeStamps, SpacedAlongThePathWithInterpolatedPressure)
@@ -111,9 +111,9 @@ TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitFo
     const std::uint64_t original = checksumOf(session);
     std::mt19937 random(7);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), radius(1.5, 4.0), strength(0.2, 1.0);
-    const std::vector<BrushTool> tools{BrushTool::Add,    BrushTool::Carve,   BrushTool::Inflate,
-                                       BrushTool::Deflate, BrushTool::Smooth,  BrushTool::Flatten,
-                                       BrushTool::Grab,   BrushTool::Pinch,   BrushTool::Primitive};
+    const std::vector<BrushTool> tools{BrushTool::Add,     BrushTool::Carve,  BrushTool::Inflate,
+                                       BrushTool::Deflate, BrushTool::Smooth, BrushTool::Flatten,
+                                       BrushTool::Grab,    BrushTool::Pinch,  BrushTool::Primitive};
     const auto onSurface = [&] {
         Vec3d d(unit(random), unit(random), unit(random));
         return d.unit() * R;
@@ -132,12 +132,10 @@ TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitFo
     const std::uint64_t result = checksumOf(session);
     ASSERT_NE(result, original);
     EXPECT_EQ(session.history().undoCount(), 100u);
-    while (session.undo()) {
-    }
+    while (session.undo()) {}
     EXPECT_EQ(checksumOf(session), original);
     EXPECT_EQ(session.history().redoCount(), 100u);
-    while (session.redo()) {
-    }
+    while (session.redo()) {}
     EXPECT_EQ(checksumOf(session), result);
 }
 
@@ -239,13 +237,15 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
     EXPECT_EQ(parseError(R"([{"action": "undo"}, {"tool": "sponge", "radius": 1, )" + ok + "}]"),
               "s.json: events[1] ('sponge' stroke): unknown tool \"sponge\" (expected add, carve, inflate, "
               "deflate, smooth, flatten, grab, pinch or primitive)");
-    EXPECT_EQ(parseError(R"([{"tool": "add", )" + ok + "}]"), "s.json: events[0] ('add' stroke): missing field 'radius'");
+    EXPECT_EQ(parseError(R"([{"tool": "add", )" + ok + "}]"),
+              "s.json: events[0] ('add' stroke): missing field 'radius'");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 0, )" + ok + "}]"),
               "s.json: events[0] ('add' stroke): field 'radius' must be a positive number (got 0)");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": -2, )" + ok + "}]"),
               "s.json: events[0] ('add' stroke): field 'radius' must be a positive number (got -2)");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [[1, 1e999, 3]]}])"),
-              "s.json: malformed JSON at events[0].samples[0][1] ([json.exception.out_of_range.406] number overflow parsing '1e999')");
+              "s.json: malformed JSON at events[0].samples[0][1] ([json.exception.out_of_range.406] number overflow "
+              "parsing '1e999')");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [[1, "inf", 3]]}])"),
               "s.json: events[0] ('add' stroke): samples[0]: field 'position' must be an array of 3 finite numbers");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": [{"position": [1, 2, 3], "pressure": 2}]}])"),
@@ -275,17 +275,18 @@ TEST(StrokeScript, ReplayNamesTheEventThatCannotBeApplied)
     } catch (const InputError& e) {
         EXPECT_STREQ(e.what(), "s.json: events[2]: undo with nothing to undo");
     }
-    const auto huge = parseStrokeScript(R"({"events": [{"tool": "add", "radius": 300, "samples": [[10, 0, 0]]}]})",
-                                        "s.json", ".");
+    const auto huge =
+        parseStrokeScript(R"({"events": [{"tool": "add", "radius": 300, "samples": [[10, 0, 0]]}]})", "s.json", ".");
     try {
         replayScript(session, huge, "s.json");
         ADD_FAILURE() << "no error";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("s.json: events[0] ('add' stroke): field 'radius' (300) is larger than the model"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "s.json: events[0] ('add' stroke): field 'radius' (300) is larger than the model"),
                   std::string::npos)
             << e.what();
     }
 }
 
-} // namespace
-} // namespace sculpt
+}  // namespace
+}  // namespace sculpt
