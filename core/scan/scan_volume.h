@@ -3,31 +3,17 @@
 /// @brief A medical volume (CT, MRI) as read from its file: samples on a lattice and the lattice's
 ///        place in the world.
 ///
-/// Readers are VTK's: NIfTI (.nii, .nii.gz, with its sform or else qform), NRRD (.nrrd, .nhdr),
-/// MetaImage (.mha, .mhd), a DICOM series (a directory of slices, sorted by position along the
-/// slice normal, with patient orientation), and raw samples with a layout given by the user.
-/// The samples stay in the file's type (an 8-bit scan costs one byte per voxel) and are read a
+/// Made by the readers (scan_readers.h). The samples stay in the file's type (an 8-bit scan costs one byte per voxel) and are read a
 /// slice or a few points at a time as floats, so converting a scan never needs a float copy of
 /// all of it.
 
 #include <openvdb/openvdb.h>
 
-#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 
 namespace sculpt {
-
-/// How the samples of a headerless raw file are laid out.
-struct RawLayout {
-    openvdb::Coord dims{0, 0, 0};  ///< samples along x (fastest), y, z
-    std::string type = "uint8";    ///< uint8, int8, uint16, int16, uint32, int32, float32, float64
-    openvdb::Vec3d spacing{1.0};   ///< voxel size along x, y, z (world units)
-    openvdb::Vec3d origin{0.0};    ///< world position of sample (0, 0, 0)
-    bool bigEndian = false;
-    std::size_t headerBytes = 0;  ///< bytes to skip at the start of the file
-};
 
 class ScanVolume {
 public:
@@ -72,18 +58,5 @@ private:
 
     std::shared_ptr<const Impl> mImpl;
 };
-
-/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd) or, for a
-/// directory, as a DICOM series.
-/// @throws InputError naming the file and the problem: unknown format, unreadable, truncated
-///         or corrupt, absurd dimensions (refused before allocating), a DICOM directory with
-///         mixed sizes or missing slices.
-ScanVolume readScan(const std::filesystem::path& path);
-/// Reads headerless samples. @throws InputError as readScan, or if the file is shorter than
-/// the layout says.
-ScanVolume readRawScan(const std::filesystem::path& path, const RawLayout& layout);
-
-/// True if readScan knows the path's extension (or it is a directory).
-bool isScanPath(const std::filesystem::path& path);
 
 }  // namespace sculpt

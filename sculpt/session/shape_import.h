@@ -5,7 +5,7 @@
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
 #include "core/scan/largest_component.h"
-#include "core/scan/scan_volume.h"
+#include "core/scan/scan_readers.h"
 
 #include <filesystem>
 #include <optional>

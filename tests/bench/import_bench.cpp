@@ -13,6 +13,7 @@
 //                         (raw file, written once to the temporary directory)
 
 #include "core/io/vdb_file.h"
+#include "core/scan/scan_readers.h"
 #include "core/scan/scan_to_level_set.h"
 
 #include <malloc.h>

@@ -1,0 +1,150 @@
+#include "core/scan/scan_readers.h"
+
+#include "core/base/errors.h"
+#include "core/base/file_extension.h"
+#include "core/base/text_format.h"
+#include "core/scan/dicom_series.h"
+#include "core/scan/vtk_image_scan.h"
+
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkMatrix3x3.h>
+#include <vtkMetaImageReader.h>
+#include <vtkNIFTIImageHeader.h>
+#include <vtkNIFTIImageReader.h>
+#include <vtkNew.h>
+#include <vtkNrrdReader.h>
+#include <vtkPointData.h>
+#include <vtkType.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+
+namespace sculpt {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+ScanVolume readNifti(const fs::path& path)
+{
+    vtkNew<vtkNIFTIImageReader> reader;
+    reader->SetFileName(path.string().c_str());
+    vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
+    // VTK fills a short uncompressed file with zeros without a word: check its length.
+    if (lowerExtension(path) == ".nii") {
+        const double needed = double(reader->GetNIFTIHeader()->GetVoxOffset()) +
+                              double(image->GetNumberOfPoints()) * image->GetScalarSize();
+        if (double(fs::file_size(path)) < needed) {
+            throw InputError(path.string() + ": " + std::to_string(fs::file_size(path)) +
+                             " bytes, but the header needs " + formatNumber(needed) + " (truncated file)");
+        }
+    }
+    vtkMatrix4x4* orientation = reader->GetSFormMatrix() ? reader->GetSFormMatrix() : reader->GetQFormMatrix();
+    // NIfTI scales stored values: value = slope * stored + intercept (slope 0 means none).
+    const double slope = reader->GetRescaleSlope(), intercept = reader->GetRescaleIntercept();
+    if ((slope != 0.0 && slope != 1.0) || intercept != 0.0) {
+        vtkDataArray* scalars = image->GetPointData()->GetScalars();
+        vtkNew<vtkFloatArray> scaled;
+        scaled->SetNumberOfValues(scalars->GetNumberOfTuples());
+        for (vtkIdType i = 0; i < scalars->GetNumberOfTuples(); ++i) {
+            scaled->SetValue(i, float((slope == 0.0 ? 1.0 : slope) * scalars->GetTuple1(i) + intercept));
+        }
+        image->GetPointData()->SetScalars(scaled);
+    }
+    return makeScan(image, placement(image, orientation), path.string());
+}
+
+template <typename ReaderT>
+ScanVolume readWithDirection(const fs::path& path)
+{
+    vtkNew<ReaderT> reader;
+    reader->SetFileName(path.string().c_str());
+    vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
+    vtkNew<vtkMatrix4x4> direction;  // the image's direction cosines, if the reader set them
+    const double* d = image->GetDirectionMatrix()->GetData();
+    for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c) direction->SetElement(r, c, d[3 * r + c]);
+    }
+    // Placement already includes the origin; rotate about it.
+    double origin[3];
+    image->GetOrigin(origin);
+    image->SetOrigin(0.0, 0.0, 0.0);
+    openvdb::Mat4d m = placement(image, direction);
+    m.setTranslation(openvdb::Vec3d(origin[0], origin[1], origin[2]));
+    return makeScan(image, m, path.string());
+}
+
+int vtkTypeOf(const std::string& type)
+{
+    static const std::map<std::string, int> types{{"uint8", VTK_UNSIGNED_CHAR},   {"int8", VTK_SIGNED_CHAR},
+                                                  {"uint16", VTK_UNSIGNED_SHORT}, {"int16", VTK_SHORT},
+                                                  {"uint32", VTK_UNSIGNED_INT},   {"int32", VTK_INT},
+                                                  {"float32", VTK_FLOAT},         {"float64", VTK_DOUBLE}};
+    const auto found = types.find(type);
+    if (found == types.end()) {
+        throw InputError("unknown sample type \"" + type +
+                         "\" (expected uint8, int8, uint16, int16, uint32, int32, float32 or float64)");
+    }
+    return found->second;
+}
+
+}  // namespace
+
+bool isScanPath(const fs::path& path)
+{
+    static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
+    const std::string ext = lowerExtension(path);
+    return fs::is_directory(path) || std::find(known.begin(), known.end(), ext) != known.end();
+}
+
+ScanVolume readScan(const fs::path& path)
+{
+    if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
+    if (fs::is_directory(path)) return readDicomSeries(path);
+    const std::string ext = lowerExtension(path);
+    if (ext == ".nii" || ext == ".nii.gz") return readNifti(path);
+    if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
+    if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);
+    throw InputError(path.string() + ": unknown scan format '" + ext +
+                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw samples "
+                         "with their dimensions given)",
+                     Remedy::DescribeRawLayout);
+}
+
+ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
+{
+    const int type = vtkTypeOf(layout.type);
+    if (layout.dims.x() < 1 || layout.dims.y() < 1 || layout.dims.z() < 1) {
+        throw InputError(path.string() + ": raw dimensions must be positive");
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (!(layout.spacing[a] > 0.0) || !std::isfinite(layout.spacing[a]))
+            throw InputError("raw spacing must be positive");
+    }
+    if (!fs::is_regular_file(path)) throw InputError(path.string() + ": no such file");
+    const double needed = double(layout.headerBytes) + double(layout.dims.x()) * layout.dims.y() * layout.dims.z() *
+                                                           vtkDataArray::GetDataTypeSize(type);
+    if (double(fs::file_size(path)) < needed) {
+        throw InputError(path.string() + ": " + std::to_string(fs::file_size(path)) + " bytes, but the layout needs " +
+                         formatNumber(needed) + " (truncated, or wrong dimensions or type?)");
+    }
+    vtkNew<vtkImageReader2> reader;
+    reader->SetFileName(path.string().c_str());
+    reader->SetFileDimensionality(3);
+    reader->SetDataExtent(0, layout.dims.x() - 1, 0, layout.dims.y() - 1, 0, layout.dims.z() - 1);
+    reader->SetDataScalarType(type);
+    reader->SetNumberOfScalarComponents(1);
+    reader->SetHeaderSize(layout.headerBytes);
+    if (layout.bigEndian) reader->SetDataByteOrderToBigEndian();
+    else reader->SetDataByteOrderToLittleEndian();
+    reader->SetDataSpacing(layout.spacing[0], layout.spacing[1], layout.spacing[2]);
+    reader->SetDataOrigin(layout.origin[0], layout.origin[1], layout.origin[2]);
+    reader->FileLowerLeftOn();
+    vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
+    return makeScan(image, placement(image, nullptr), path.string());
+}
+
+}  // namespace sculpt
