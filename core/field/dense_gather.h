@@ -8,10 +8,20 @@
 
 #include <openvdb/openvdb.h>
 
+#include <cstddef>
+
 namespace sculpt {
 
-/// Fills `dst` with the values of `box` (inclusive), z varying fastest, then y, then x:
-/// dst[((x - min.x) * dim.y + (y - min.y)) * dim.z + (z - min.z)]. `dst` holds box.volume().
+/// Where (x, y, z) sits in a dense array of ny x nz columns: z varies fastest, then y, then x,
+/// as in OpenVDB's leaves. The one order of every dense copy of the lattice (the scan importer's
+/// arrays alone follow the scan's own order, x fastest, because they are filled from it).
+constexpr std::size_t denseIndex(int ny, int nz, int x, int y, int z)
+{
+    return (std::size_t(x) * std::size_t(ny) + std::size_t(y)) * std::size_t(nz) + std::size_t(z);
+}
+
+/// Fills `dst` with the values of `box` (inclusive) in denseIndex order:
+/// dst[denseIndex(dim.y, dim.z, x - min.x, y - min.y, z - min.z)]. `dst` holds box.volume().
 void gatherDense(const openvdb::FloatTree& tree, const openvdb::CoordBBox& box, float* dst);
 
 }  // namespace sculpt

@@ -22,10 +22,7 @@ struct DenseBox {
     std::vector<float> values;
 
     explicit DenseBox(const openvdb::CoordBBox& b) : box(b), dim(b.dim()), values(size_t(b.volume())) {}
-    size_t index(int x, int y, int z) const
-    {
-        return (size_t(x) * size_t(dim.y()) + size_t(y)) * size_t(dim.z()) + size_t(z);
-    }
+    size_t index(int x, int y, int z) const { return denseIndex(dim.y(), dim.z(), x, y, z); }
     openvdb::Coord coord(int x, int y, int z) const { return box.min().offsetBy(x, y, z); }
 };
 

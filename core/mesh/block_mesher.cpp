@@ -60,8 +60,8 @@ bool BlockMesher::Scratch::classify()
     int insideCount = 0;
     for (int x = 0; x < N; ++x) {
         for (int y = 0; y < N; ++y) {
-            const float* row = &values[size_t(((x + 1) * S + (y + 1)) * S + 1)];
-            std::uint8_t* flags = &inside[size_t((x * N + y) * N)];
+            const float* row = &values[denseIndex(S, S, x + 1, y + 1, 1)];
+            std::uint8_t* flags = &inside[denseIndex(N, N, x, y, 0)];
             int count = 0;
             for (int z = 0; z < N; ++z) {
                 flags[z] = row[z] < 0.0f;
@@ -135,7 +135,7 @@ class BlockBuilder {
 public:
     BlockBuilder(BlockMesher::Scratch& scratch, const Placement& place, const openvdb::Coord& blockOrigin,
                  BlockMesh& mesh)
-        : s(scratch), B(scratch.B), N(scratch.N), placement(place), origin(blockOrigin), out(mesh)
+        : mScratch(scratch), mB(scratch.B), mN(scratch.N), mPlacement(place), mOrigin(blockOrigin), mOut(mesh)
     {}
 
     void run()
@@ -145,21 +145,24 @@ public:
     }
 
 private:
-    BlockMesher::Scratch& s;
-    const int B, N;
-    const Placement& placement;
-    const openvdb::Coord origin;
-    BlockMesh& out;
-    BlockMesh foreign;
-    const mc::Case* const cases = &mc::cubeCase(0);  // the 256 cases, contiguous
+    BlockMesher::Scratch& mScratch;
+    const int mB, mN;
+    const Placement& mPlacement;
+    const openvdb::Coord mOrigin;
+    BlockMesh& mOut;
+    BlockMesh mForeign;
+    const mc::Case* const mCases = &mc::cubeCase(0);  // the 256 cases, contiguous
 
-    size_t voxel(int x, int y, int z) const { return size_t((x * N + y) * N + z); }
-    float value(int x, int y, int z) const { return s.values[size_t(((x + 1) * s.S + (y + 1)) * s.S + (z + 1))]; }
+    size_t voxel(int x, int y, int z) const { return denseIndex(mN, mN, x, y, z); }
+    float value(int x, int y, int z) const
+    {
+        return mScratch.values[denseIndex(mScratch.S, mScratch.S, x + 1, y + 1, z + 1)];
+    }
 
-    unsigned cubeIndex(int x, int y, int z) const { return s.cubes[size_t((x * B + y) * B + z)]; }
+    unsigned cubeIndex(int x, int y, int z) const { return mScratch.cubes[denseIndex(mB, mB, x, y, z)]; }
     bool rowHasSurface(int x, int y) const
     {
-        return x >= 0 && y >= 0 && x < B && y < B && s.rowHasSurface[size_t(x * B + y)];
+        return x >= 0 && y >= 0 && x < mB && y < mB && mScratch.rowHasSurface[size_t(x * mB + y)];
     }
     /// Edges from voxel row (x, y) belong only to cells of rows x-1..x, y-1..y.
     bool touchesSurface(int x, int y) const
@@ -169,7 +172,7 @@ private:
 
     const mc::Triangulation& triangulation(int x, int y, int z, unsigned cube) const
     {
-        const mc::Case& info = cases[cube];
+        const mc::Case& info = mCases[cube];
         unsigned bits = 0;
         for (int k = 0; k < info.ambiguousFaceCount; ++k) {
             const auto& fc = mc::face(info.ambiguousFaces[size_t(k)]).corners;
@@ -181,24 +184,27 @@ private:
 
     void createVertices()
     {
-        for (int x = 0; x < N; ++x) {
-            for (int y = 0; y < N; ++y) {
+        for (int x = 0; x < mN; ++x) {
+            for (int y = 0; y < mN; ++y) {
                 if (!touchesSurface(x, y)) continue;
-                for (int z = 0; z < N; ++z) {
-                    const bool owned = x < B && y < B && z < B;
-                    const std::uint8_t in = s.inside[voxel(x, y, z)];
+                for (int z = 0; z < mN; ++z) {
+                    const bool owned = x < mB && y < mB && z < mB;
+                    const std::uint8_t in = mScratch.inside[voxel(x, y, z)];
                     const size_t base = voxel(x, y, z) * 4;
-                    if (x < B && s.inside[voxel(x + 1, y, z)] != in) s.slot[base + 0] = emit(x, y, z, 0, owned);
-                    if (y < B && s.inside[voxel(x, y + 1, z)] != in) s.slot[base + 1] = emit(x, y, z, 1, owned);
-                    if (z < B && s.inside[voxel(x, y, z + 1)] != in) s.slot[base + 2] = emit(x, y, z, 2, owned);
+                    if (x < mB && mScratch.inside[voxel(x + 1, y, z)] != in)
+                        mScratch.slot[base + 0] = emit(x, y, z, 0, owned);
+                    if (y < mB && mScratch.inside[voxel(x, y + 1, z)] != in)
+                        mScratch.slot[base + 1] = emit(x, y, z, 1, owned);
+                    if (z < mB && mScratch.inside[voxel(x, y, z + 1)] != in)
+                        mScratch.slot[base + 2] = emit(x, y, z, 2, owned);
                     if (owned && rowHasSurface(x, y)) reserveCentre(x, y, z);
                 }
             }
         }
-        out.ownedCount = std::uint32_t(out.positions.size());
-        out.positions.insert(out.positions.end(), foreign.positions.begin(), foreign.positions.end());
-        out.normals.insert(out.normals.end(), foreign.normals.begin(), foreign.normals.end());
-        out.keys.insert(out.keys.end(), foreign.keys.begin(), foreign.keys.end());
+        mOut.ownedCount = std::uint32_t(mOut.positions.size());
+        mOut.positions.insert(mOut.positions.end(), mForeign.positions.begin(), mForeign.positions.end());
+        mOut.normals.insert(mOut.normals.end(), mForeign.normals.begin(), mForeign.normals.end());
+        mOut.keys.insert(mOut.keys.end(), mForeign.keys.begin(), mForeign.keys.end());
     }
 
     openvdb::Vec3d gradient(int x, int y, int z) const
@@ -211,17 +217,17 @@ private:
         const int ux = x + (axis == 0), uy = y + (axis == 1), uz = z + (axis == 2);
         const double f0 = value(x, y, z), f1 = value(ux, uy, uz);
         const double t = std::clamp(f0 / (f0 - f1), kMinEdgeFraction, 1.0 - kMinEdgeFraction);
-        openvdb::Vec3d p(origin.x() + x, origin.y() + y, origin.z() + z);
+        openvdb::Vec3d p(mOrigin.x() + x, mOrigin.y() + y, mOrigin.z() + z);
         p[axis] += t;
-        const openvdb::Vec3d world = placement.point(p);
-        openvdb::Vec3d n = placement.normal(gradient(x, y, z) * (1.0 - t) + gradient(ux, uy, uz) * t);
+        const openvdb::Vec3d world = mPlacement.point(p);
+        openvdb::Vec3d n = mPlacement.normal(gradient(x, y, z) * (1.0 - t) + gradient(ux, uy, uz) * t);
         if (!(n.lengthSqr() > 0.0)) n = openvdb::Vec3d(0.0), n[axis] = f1 > f0 ? 1.0 : -1.0;
         n.normalize();
 
-        BlockMesh& target = owned ? out : foreign;
+        BlockMesh& target = owned ? mOut : mForeign;
         target.positions.push_back({float(world.x()), float(world.y()), float(world.z())});
         target.normals.push_back({float(n.x()), float(n.y()), float(n.z())});
-        target.keys.push_back(edgeKey(origin.x() + x, origin.y() + y, origin.z() + z, axis));
+        target.keys.push_back(edgeKey(mOrigin.x() + x, mOrigin.y() + y, mOrigin.z() + z, axis));
         const auto index = std::uint32_t(target.positions.size() - 1);
         return owned ? index : index | kForeign;
     }
@@ -231,27 +237,27 @@ private:
     void reserveCentre(int x, int y, int z)
     {
         const unsigned cube = cubeIndex(x, y, z);
-        if (!cases[cube].mayUseCentre || !triangulation(x, y, z, cube).centreLoopSize) return;
-        s.slot[voxel(x, y, z) * 4 + 3] = std::uint32_t(out.positions.size());
-        out.positions.push_back({0.0f, 0.0f, 0.0f});
-        out.normals.push_back({0.0f, 0.0f, 0.0f});
-        out.keys.push_back(edgeKey(origin.x() + x, origin.y() + y, origin.z() + z, 3));
+        if (!mCases[cube].mayUseCentre || !triangulation(x, y, z, cube).centreLoopSize) return;
+        mScratch.slot[voxel(x, y, z) * 4 + 3] = std::uint32_t(mOut.positions.size());
+        mOut.positions.push_back({0.0f, 0.0f, 0.0f});
+        mOut.normals.push_back({0.0f, 0.0f, 0.0f});
+        mOut.keys.push_back(edgeKey(mOrigin.x() + x, mOrigin.y() + y, mOrigin.z() + z, 3));
     }
 
     std::uint32_t vertexOfEdge(int x, int y, int z, int edge) const
     {
         const int c = mc::edgeCorner(edge);
         const std::uint32_t slot =
-            s.slot[voxel(x + (c & 1), y + (c >> 1 & 1), z + (c >> 2 & 1)) * 4 + size_t(mc::edgeAxis(edge))];
-        return slot & kForeign ? out.ownedCount + (slot & ~kForeign) : slot;
+            mScratch.slot[voxel(x + (c & 1), y + (c >> 1 & 1), z + (c >> 2 & 1)) * 4 + size_t(mc::edgeAxis(edge))];
+        return slot & kForeign ? mOut.ownedCount + (slot & ~kForeign) : slot;
     }
 
     void createTriangles()
     {
-        for (int x = 0; x < B; ++x) {
-            for (int y = 0; y < B; ++y) {
+        for (int x = 0; x < mB; ++x) {
+            for (int y = 0; y < mB; ++y) {
                 if (!rowHasSurface(x, y)) continue;
-                for (int z = 0; z < B; ++z) {
+                for (int z = 0; z < mB; ++z) {
                     const unsigned cube = cubeIndex(x, y, z);
                     if (cube == 0 || cube == 255) continue;
                     cell(x, y, z, triangulation(x, y, z, cube));
@@ -269,7 +275,7 @@ private:
                 const int e = t.edges[size_t(i)][size_t(k)];
                 tri[size_t(k)] = e == mc::kCentre ? centre : vertexOfEdge(x, y, z, e);
             }
-            out.triangles.push_back(tri);
+            mOut.triangles.push_back(tri);
         }
     }
 
@@ -279,14 +285,14 @@ private:
         openvdb::Vec3d p(0.0), n(0.0);
         for (int i = 0; i < t.centreLoopSize; ++i) {
             const std::uint32_t v = vertexOfEdge(x, y, z, t.centreLoop[size_t(i)]);
-            p += openvdb::Vec3d(out.positions[v][0], out.positions[v][1], out.positions[v][2]);
-            n += openvdb::Vec3d(out.normals[v][0], out.normals[v][1], out.normals[v][2]);
+            p += openvdb::Vec3d(mOut.positions[v][0], mOut.positions[v][1], mOut.positions[v][2]);
+            n += openvdb::Vec3d(mOut.normals[v][0], mOut.normals[v][1], mOut.normals[v][2]);
         }
         p /= double(t.centreLoopSize);
         n.normalize();
-        const std::uint32_t index = s.slot[voxel(x, y, z) * 4 + 3];
-        out.positions[index] = {float(p.x()), float(p.y()), float(p.z())};
-        out.normals[index] = {float(n.x()), float(n.y()), float(n.z())};
+        const std::uint32_t index = mScratch.slot[voxel(x, y, z) * 4 + 3];
+        mOut.positions[index] = {float(p.x()), float(p.y()), float(p.z())};
+        mOut.normals[index] = {float(n.x()), float(n.y()), float(n.z())};
         return index;
     }
 };

@@ -31,10 +31,7 @@ constexpr int kDim = int(LeafT::DIM) + 2 * kApron;
 /// A leaf and its apron, densely: at(x, y, z) for leaf-local x, y, z in [-3, 10].
 struct LeafStencil {
     std::array<float, kDim * kDim * kDim> v;
-    float at(int x, int y, int z) const
-    {
-        return v[size_t(((x + kApron) * kDim + (y + kApron)) * kDim + (z + kApron))];
-    }
+    float at(int x, int y, int z) const { return v[denseIndex(kDim, kDim, x + kApron, y + kApron, z + kApron)]; }
     void gather(const openvdb::FloatTree& tree, const openvdb::Coord& origin)
     {
         gatherDense(tree, openvdb::CoordBBox(origin.offsetBy(-kApron), origin.offsetBy(LeafT::DIM - 1 + kApron)),
@@ -110,29 +107,30 @@ double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
 /// The right-hand side dphi/dt at one voxel.
 class VoxelRate {
 public:
-    explicit VoxelRate(const StepConstants& constants) : c(constants)
+    explicit VoxelRate(const StepConstants& constants) : mC(constants)
     {
-        if (c.target) mTarget.emplace(*c.target);
+        if (mC.target) mTarget.emplace(*mC.target);
     }
 
     /// nullopt if the voxel is outside the region and must not move.
     std::optional<double> operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
-        if (c.region && (c.xform->indexToWorld(ijk) - c.region->centreWorld).lengthSqr() >
-                            c.region->radiusWorld * c.region->radiusWorld) {
+        if (mC.region && (mC.xform->indexToWorld(ijk) - mC.region->centreWorld).lengthSqr() >
+                             mC.region->radiusWorld * mC.region->radiusWorld) {
             return std::nullopt;
         }
-        double speed = c.uniformSpeed;
-        if (mTarget || c.local) speed += extendedSpeed(s, x, y, z, ijk);
+        double speed = mC.uniformSpeed;
+        if (mTarget || mC.local) speed += extendedSpeed(s, x, y, z, ijk);
         double rate = 0.0;
         if (speed != 0.0) {
             openvdb::Vec3d minus, plus;
-            for (int axis = 0; axis < 3; ++axis) oneSided(s, x, y, z, axis, c.scheme, c.invH, minus[axis], plus[axis]);
+            for (int axis = 0; axis < 3; ++axis)
+                oneSided(s, x, y, z, axis, mC.scheme, mC.invH, minus[axis], plus[axis]);
             rate -= speed * std::sqrt(openvdb::math::GodunovsNormSqrd(speed > 0.0, minus, plus));
         }
-        if (c.beta > 0.0) {
-            const double weight = c.smoothWeight ? c.smoothWeight->weightAt(c.xform->indexToWorld(ijk)) : 1.0;
-            if (weight > 0.0) rate += c.beta * weight * curvatureNormGrad(s, x, y, z, c.invH);
+        if (mC.beta > 0.0) {
+            const double weight = mC.smoothWeight ? mC.smoothWeight->weightAt(mC.xform->indexToWorld(ijk)) : 1.0;
+            if (weight > 0.0) rate += mC.beta * weight * curvatureNormGrad(s, x, y, z, mC.invH);
         }
         return rate;
     }
@@ -145,22 +143,23 @@ private:
     {
         const openvdb::Vec3d foot = closestSurfacePoint(
             ijk.asVec3d(), s.at(x, y, z),
-            centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z), c.invH);
+            centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z), mC.invH);
         double speed = 0.0;
         if (mTarget) {
             const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
-            speed -= c.alpha * std::clamp(phiT, double(-c.clampWorld), double(c.clampWorld));
+            speed -= mC.alpha * std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
         }
-        if (c.local) {
-            const openvdb::Vec3d world = c.xform->indexToWorld(foot);
-            const double q = (world - c.local->centreWorld).lengthSqr() / (c.local->radiusWorld * c.local->radiusWorld);
-            if (q < 1.0) speed += c.local->speedWorld * (1.0 - q) * (1.0 - q);
+        if (mC.local) {
+            const openvdb::Vec3d world = mC.xform->indexToWorld(foot);
+            const double q =
+                (world - mC.local->centreWorld).lengthSqr() / (mC.local->radiusWorld * mC.local->radiusWorld);
+            if (q < 1.0) speed += mC.local->speedWorld * (1.0 - q) * (1.0 - q);
         }
         return speed;
     }
 
 private:
-    const StepConstants& c;
+    const StepConstants& mC;
     std::optional<openvdb::tree::ValueAccessor<const openvdb::FloatTree>> mTarget;
 };
 

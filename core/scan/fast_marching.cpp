@@ -27,7 +27,7 @@ float godunov(float a, float b, float c, float h)
 
 void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, std::vector<float>& distance)
 {
-    enum State : unsigned char { kOpen, kSeed, kAccepted, kWall };
+    enum State : unsigned char { Open, Seed, Accepted, Wall };
     const std::ptrdiff_t nx = dims.x(), ny = dims.y(), nz = dims.z();
     const std::ptrdiff_t stride[3] = {1, nx, nx * ny};
     const float width = h / 32.0f;
@@ -41,22 +41,22 @@ void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, s
         for (std::ptrdiff_t y = 0; y < ny; ++y) {
             for (std::ptrdiff_t x = 0; x < nx; ++x, ++i) {
                 const bool face = x == 0 || y == 0 || z == 0 || x == nx - 1 || y == ny - 1 || z == nz - 1;
-                mState[size_t(i)] = face ? kWall : distance[size_t(i)] < kFar ? kSeed : kOpen;
+                mState[size_t(i)] = face ? Wall : distance[size_t(i)] < kFar ? Seed : Open;
                 if (!face && distance[size_t(i)] < limit)
                     mBuckets[bucketOf(distance[size_t(i)])].push_back(std::uint32_t(i));
             }
         }
     }
     const auto acceptedAlong = [&](size_t i, std::ptrdiff_t step) {
-        const float below = mState[i - size_t(step)] == kAccepted ? distance[i - size_t(step)] : kFar;
-        const float above = mState[i + size_t(step)] == kAccepted ? distance[i + size_t(step)] : kFar;
+        const float below = mState[i - size_t(step)] == Accepted ? distance[i - size_t(step)] : kFar;
+        const float above = mState[i + size_t(step)] == Accepted ? distance[i + size_t(step)] : kFar;
         return std::min(below, above);
     };
     // Gives the open neighbours of voxel i their distance through it.
     const auto updateNeighbours = [&](size_t i) {
         for (const std::ptrdiff_t offset : {-stride[0], stride[0], -stride[1], stride[1], -stride[2], stride[2]}) {
             const size_t j = size_t(std::ptrdiff_t(i) + offset);
-            if (mState[j] != kOpen) continue;
+            if (mState[j] != Open) continue;
             const float u =
                 godunov(acceptedAlong(j, stride[0]), acceptedAlong(j, stride[1]), acceptedAlong(j, stride[2]), h);
             if (u < distance[j]) {
@@ -71,8 +71,8 @@ void FastMarching::run(const openvdb::math::Coord& dims, float h, float limit, s
         while (!mBuckets[b].empty()) {
             const std::uint32_t i = mBuckets[b].back();
             mBuckets[b].pop_back();
-            if (mState[i] == kAccepted || bucketOf(distance[i]) != b) continue;  // stale entry
-            mState[i] = kAccepted;
+            if (mState[i] == Accepted || bucketOf(distance[i]) != b) continue;  // stale entry
+            mState[i] = Accepted;
             updateNeighbours(i);
         }
     }

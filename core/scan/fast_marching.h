@@ -19,7 +19,8 @@ namespace sculpt {
 
 class FastMarching {
 public:
-    /// @param dims      voxels of the box along x (fastest), y, z
+    /// @param dims      voxels of the box along x (fastest: the scan's order, which the importer fills
+    ///                  it from; the rest of the engine uses denseIndex), y, z
     /// @param h         voxel edge
     /// @param limit     distance at which marching stops
     /// @param distance  unsigned distances: a seed's on entry, +inf elsewhere; on return every

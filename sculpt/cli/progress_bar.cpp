@@ -27,10 +27,10 @@ void ProgressBar::draw(double fraction)
     const int percent = int(100.0 * std::clamp(fraction, 0.0, 1.0));
     if (!mEnabled || percent == mShownPercent) return;
     mShownPercent = percent;
-    constexpr int width = 40;
-    const int filled = percent * width / 100;
+    constexpr int kWidth = 40;
+    const int filled = percent * kWidth / 100;
     std::fprintf(stderr, "\r%s [%.*s%*s] %3d%%", mLabel.c_str(), filled, "########################################",
-                 width - filled, "", percent);
+                 kWidth - filled, "", percent);
     std::fflush(stderr);
 }
 
