@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config
+  cmake g++ make pkg-config clang-format clang-tidy
   libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev
   libvtk9-dev libopenexr-dev
   libglfw3-dev libglm-dev libimgui-dev

@@ -107,9 +107,9 @@ TEST(SculptSession, StrokesWithXSymmetryKeepASymmetricModelSymmetric)
 TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitForBit)
 {
     const double R = 12.0;
+    constexpr unsigned kSeed = 7;
     SculptSession session(makeSphere(R, 0.5));
-    const std::uint64_t original = checksumOf(session);
-    std::mt19937 random(7);
+    std::mt19937 random(kSeed);
     std::uniform_real_distribution<double> unit(-1.0, 1.0), radius(1.5, 4.0), strength(0.2, 1.0);
     const std::vector<BrushTool> tools{BrushTool::Add,     BrushTool::Carve,  BrushTool::Inflate,
                                        BrushTool::Deflate, BrushTool::Smooth, BrushTool::Flatten,
@@ -118,6 +118,7 @@ TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitFo
         Vec3d d(unit(random), unit(random), unit(random));
         return d.unit() * R;
     };
+    std::vector<std::uint64_t> checksums{checksumOf(session)};  // [i]: before stroke i
     for (int i = 0; i < 100; ++i) {
         const Vec3d start = onSurface();
         Stroke stroke = strokeOf(tools[size_t(i) % tools.size()], radius(random), {start}, strength(random));
@@ -128,15 +129,24 @@ TEST(SculptSession, HundredRandomStrokesUndoToTheOriginalAndRedoToTheResultBitFo
         stroke.spacing = 0.5;
         if (stroke.brush.tool == BrushTool::Primitive) stroke.brush.primitive = blobStamp();
         session.applyStroke(stroke);
+        checksums.push_back(checksumOf(session));
     }
-    const std::uint64_t result = checksumOf(session);
-    ASSERT_NE(result, original);
+    ASSERT_NE(checksums.back(), checksums.front());
     EXPECT_EQ(session.history().undoCount(), 100u);
-    while (session.undo()) {}
-    EXPECT_EQ(checksumOf(session), original);
+    const auto strokeName = [&](size_t i) {
+        return "stroke " + std::to_string(i) + " (" + brushToolName(tools[i % tools.size()]) + ", seed " +
+               std::to_string(kSeed) + ")";
+    };
+    for (size_t i = 100; i-- > 0;) {
+        ASSERT_TRUE(session.undo());
+        ASSERT_EQ(checksumOf(session), checksums[i]) << "undo of " << strokeName(i) << " is not bit-exact";
+    }
+    EXPECT_FALSE(session.undo());
     EXPECT_EQ(session.history().redoCount(), 100u);
-    while (session.redo()) {}
-    EXPECT_EQ(checksumOf(session), result);
+    for (size_t i = 0; i < 100; ++i) {
+        ASSERT_TRUE(session.redo());
+        ASSERT_EQ(checksumOf(session), checksums[i + 1]) << "redo of " << strokeName(i) << " is not bit-exact";
+    }
 }
 
 TEST(SculptSession, UndoMemoryFollowsTheTouchedLeavesNotTheModel)
