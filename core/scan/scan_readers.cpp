@@ -1,5 +1,6 @@
 #include "core/scan/scan_readers.h"
 
+#include "core/base/enum_names.h"
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
 #include "core/base/text_format.h"
@@ -20,7 +21,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
 
 namespace sculpt {
 
@@ -77,19 +77,17 @@ ScanVolume readWithDirection(const fs::path& path)
     return makeScan(image, m, path.string());
 }
 
-int vtkTypeOf(const std::string& type)
-{
-    static const std::map<std::string, int> types{{"uint8", VTK_UNSIGNED_CHAR},   {"int8", VTK_SIGNED_CHAR},
-                                                  {"uint16", VTK_UNSIGNED_SHORT}, {"int16", VTK_SHORT},
-                                                  {"uint32", VTK_UNSIGNED_INT},   {"int32", VTK_INT},
-                                                  {"float32", VTK_FLOAT},         {"float64", VTK_DOUBLE}};
-    const auto found = types.find(type);
-    if (found == types.end()) {
-        throw InputError("unknown sample type \"" + type +
-                         "\" (expected uint8, int8, uint16, int16, uint32, int32, float32 or float64)");
-    }
-    return found->second;
-}
+constexpr EnumNames<int, 8> kSampleTypes{{{VTK_UNSIGNED_CHAR, "uint8"},
+                                             {VTK_SIGNED_CHAR, "int8"},
+                                             {VTK_UNSIGNED_SHORT, "uint16"},
+                                             {VTK_SHORT, "int16"},
+                                             {VTK_UNSIGNED_INT, "uint32"},
+                                             {VTK_INT, "int32"},
+                                             {VTK_FLOAT, "float32"},
+                                             {VTK_DOUBLE, "float64"}}};
+
+/// VTK's scalar type for a raw layout's sample type name.
+int vtkTypeOf(const std::string& type) { return enumFromName(kSampleTypes, type, "sample type"); }
 
 }  // namespace
 
