@@ -15,7 +15,7 @@ namespace sculpt {
 void smooth(FieldImage& field, int iterations, bool keepVolume = false, const Progress& progress = {});
 
 /// Moves the surface `distanceWorld` along its normal (> 0 grows) by a uniform speed, half a
-/// voxel per step, renormalising as it goes. Cost: |distance| / (h / 2) steps x band.
+/// voxel per step, redistancing as it goes. Cost: |distance| / (h / 2) steps x band.
 void offset(FieldImage& field, double distanceWorld, const Progress& progress = {});
 
 }  // namespace sculpt
