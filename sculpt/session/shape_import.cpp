@@ -16,7 +16,8 @@ namespace {
 FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report)
 {
     if (options.iso || options.crop || options.smoothSigma > 0.0 || options.raw) {
-        throw InputError(input.string() + ": --iso, --auto-iso, --crop, --smooth and --raw apply to scans, not meshes");
+        throw InputError(input.string() +
+                         ": an iso-value, a crop box, smoothing and a raw layout apply to scans, not meshes");
     }
     const TriangleMesh mesh = readMesh(input);
     const MeshImportReport inspection = inspectMesh(mesh);
@@ -54,7 +55,7 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
                        const Progress& progress)
 {
     if (options.voxelSize && !(*options.voxelSize > 0.0)) {
-        throw InputError("--voxel-size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
+        throw InputError("the voxel size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
     }
     FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
                                                          : importScan(input, options, report, progress);
