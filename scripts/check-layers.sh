@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Checks the dependency rules of ARCHITECTURE.md on the includes (a CTest entry runs this): each
+# folder of core/ includes only the folders it may use, core/ nothing of sculpt/ or ui/, only
+# core/scan and core/io reach VTK, and the session nothing of the command line.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+declare -A allowed=(
+  [base]=""
+  [field]="base"
+  [local]="base field"
+  [motion]="base field local"
+  [mesh]="base field"
+  [primitives]="base field"
+  [brushes]="base field local motion primitives"
+  [scan]="base field io"
+  [io]="base field mesh"
+)
+failures=0
+fail() { echo "check-layers: $*"; failures=$((failures + 1)); }
+
+for folder in core/*/; do
+  layer=$(basename "$folder")
+  [[ -v allowed[$layer] ]] || { fail "core/$layer is not a layer of ARCHITECTURE.md"; continue; }
+  while IFS=: read -r file used; do
+    [[ $used == "$layer" || " ${allowed[$layer]} " == *" $used "* ]] || fail "$file includes core/$used/"
+  done < <(grep -roE '#include "core/[a-z_]+/' "$folder" | sed -E 's#:\#include "core/([a-z_]+)/#:\1#')
+done
+grep -rlE '#include "(sculpt|ui)/' core && fail "core/ includes sculpt/ or ui/"
+grep -rlE '#include <vtk' core | grep -vE '^core/(scan|io)/' && fail "VTK included outside core/scan and core/io"
+grep -rlE '#include ("sculpt/cli/|"ui/|<CLI/)' sculpt/session && fail "the session includes the command line or the UI"
+if ((failures > 0)); then exit 1; fi
+echo "check-layers: every include follows ARCHITECTURE.md"
