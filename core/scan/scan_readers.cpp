@@ -78,13 +78,13 @@ ScanVolume readWithDirection(const fs::path& path)
 }
 
 constexpr EnumNames<int, 8> kSampleTypes{{{VTK_UNSIGNED_CHAR, "uint8"},
-                                             {VTK_SIGNED_CHAR, "int8"},
-                                             {VTK_UNSIGNED_SHORT, "uint16"},
-                                             {VTK_SHORT, "int16"},
-                                             {VTK_UNSIGNED_INT, "uint32"},
-                                             {VTK_INT, "int32"},
-                                             {VTK_FLOAT, "float32"},
-                                             {VTK_DOUBLE, "float64"}}};
+                                          {VTK_SIGNED_CHAR, "int8"},
+                                          {VTK_UNSIGNED_SHORT, "uint16"},
+                                          {VTK_SHORT, "int16"},
+                                          {VTK_UNSIGNED_INT, "uint32"},
+                                          {VTK_INT, "int32"},
+                                          {VTK_FLOAT, "float32"},
+                                          {VTK_DOUBLE, "float64"}}};
 
 /// VTK's scalar type for a raw layout's sample type name.
 int vtkTypeOf(const std::string& type) { return enumFromName(kSampleTypes, type, "sample type"); }
