@@ -65,7 +65,7 @@ FieldImage prepareSource(const FieldImage& source, const FieldImage& target, boo
     FieldImage prepared = resampleInto(source, target, shift);
     if (!insideBoth(prepared.grid(), target.grid()) && !insideBoth(target.grid(), prepared.grid())) {
         throw InputError("the source and target shapes do not overlap, so the source cannot follow the "
-                         "target; translate the source onto the target first (align their centroids)",
+                         "target; translate the source onto the target first, aligning their centroids",
                          Remedy::AlignShapes);
     }
     return prepared;

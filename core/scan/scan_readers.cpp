@@ -107,8 +107,8 @@ ScanVolume readScan(const fs::path& path)
     if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
     if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);
     throw InputError(path.string() + ": unknown scan format '" + ext +
-                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM directory, or raw samples "
-                         "with their dimensions given)",
+                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd or a DICOM directory); raw samples "
+                         "need their layout given",
                      Remedy::DescribeRawLayout);
 }
 
