@@ -154,6 +154,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
         BadCall{"import junk.nii -o out.vdb", "junk.nii"}, BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
         BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
+        BadCall{"import good.vdb -o out.vdb", "raw samples need their layout given (--raw-dims"},
+        BadCall{"new --radius 0.4 --voxel-size 0.5 -o out.vdb", "choose a finer voxel size (a smaller --voxel-size)"},
         BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
         BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
         BadCall{"", "ubcommand"}),
