@@ -8,6 +8,7 @@ list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
 # Debian's FindOpenVDB.cmake asks for Boost iostreams (libboost-iostreams-dev).
 find_package(OpenVDB REQUIRED)
 find_package(Imath CONFIG REQUIRED)
+find_package(OpenEXR CONFIG REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)

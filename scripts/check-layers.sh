@@ -14,7 +14,8 @@ declare -A allowed=(
   [primitives]="base field"
   [brushes]="base field local motion primitives"
   [scan]="base field io"
-  [io]="base field mesh"
+  [render]="base field"
+  [io]="base field mesh render"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }

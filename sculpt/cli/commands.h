@@ -28,5 +28,6 @@ void addBuildCommand(CLI::App& app);
 void addApplyCommand(CLI::App& app);
 /// `sculpt import`: a scan or a mesh as a new document.
 void addImportCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 
 }  // namespace sculpt::cli

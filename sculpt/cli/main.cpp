@@ -52,6 +52,7 @@ int main(int argc, char** argv)
     sculpt::cli::addBuildCommand(app);
     sculpt::cli::addApplyCommand(app);
     sculpt::cli::addImportCommand(app);
+    sculpt::cli::addRenderCommand(app);
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);

@@ -5,6 +5,7 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/frame_files.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/shape_import.h"
 
@@ -25,24 +26,6 @@ struct MorphCommandOptions {
     std::string source, target, directory, mesh;
     MorphOptions morph;
 };
-
-fs::path framePath(const fs::path& dir, int index, const std::string& extension)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "frame_%04d.%s", index, extension.c_str());
-    return dir / name;
-}
-
-void prepareDirectory(const fs::path& dir)
-{
-    std::error_code ec;
-    if (fs::is_directory(dir, ec)) return;
-    const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
-    if (!fs::is_directory(parent, ec)) {
-        throw InputError(dir.string() + ": parent directory '" + parent.string() + "' does not exist");
-    }
-    if (!fs::create_directory(dir, ec)) throw InputError(dir.string() + ": cannot create (" + ec.message() + ")");
-}
 
 void runMorph(const MorphCommandOptions& o)
 {

@@ -1,0 +1,171 @@
+#include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/io/image_file.h"
+#include "core/io/vdb_file.h"
+#include "core/render/ray_tracer.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/frame_files.h"
+#include "sculpt/cli/progress_bar.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace sculpt::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using openvdb::Vec3d;
+
+struct RenderCommandOptions {
+    std::string input, output;
+    RenderOptions render;
+    std::vector<double> camera, lookAt, up;
+    double fov = 35.0;
+    std::string background = "0.16,0.16,0.18";
+    int turntable = 0;
+    std::string format = "png";
+};
+
+Vec3d vec3(const std::vector<double>& v) { return Vec3d(v[0], v[1], v[2]); }
+
+/// "r,g,b" in [0, 1], or "none" for a transparent background.
+std::optional<Vec3d> parseBackground(const std::string& text)
+{
+    if (text == "none") return std::nullopt;
+    std::istringstream in(text);
+    Vec3d c;
+    char comma1 = 0, comma2 = 0;
+    if (!(in >> c[0] >> comma1 >> c[1] >> comma2 >> c[2]) || comma1 != ',' || comma2 != ',' || !in.eof()) {
+        throw InputError("--background: expected r,g,b (0 to 1 each) or none (got '" + text + "')");
+    }
+    return c;
+}
+
+/// The camera the options ask for: the automatic three-quarter view of `points` (the band's leaf
+/// centres, padded) centred on `bounds`, with any of position, look-at point and up the user gave.
+Camera chooseCamera(const RenderCommandOptions& o, const openvdb::BBoxd& bounds, const std::vector<Vec3d>& points,
+                    double padWorld)
+{
+    Camera camera = framingCamera(bounds, points, padWorld, double(o.render.width) / o.render.height, o.fov);
+    if (!o.lookAt.empty()) {
+        const Vec3d offset = camera.position - camera.lookAt;
+        camera.lookAt = vec3(o.lookAt);
+        camera.position = camera.lookAt + offset;
+    }
+    if (!o.camera.empty()) camera.position = vec3(o.camera);
+    if (!o.up.empty()) camera.up = vec3(o.up);
+    camera.validate();
+    return camera;
+}
+
+/// Renders one document to one image file, the progress of the whole job running from `from`
+/// to `to`.
+void renderOne(const FieldImage& field, const Camera& camera, const RenderOptions& options, const fs::path& output,
+               const Progress& progress, double from, double to)
+{
+    RenderReport summary;
+    const RenderedImage image = renderField(field, camera, options, summary,
+                                            [&](double f) { return !progress || progress(from + (to - from) * f); });
+    for (const std::string& warning : summary.warnings)
+        std::cerr << "sculpt: warning: " << output.string() << ": " << warning << "\n";
+    writeImage(image, camera, output);
+}
+
+void runRender(RenderCommandOptions o)
+{
+    o.render.background = parseBackground(o.background);
+    o.render.validate();
+    const bool sequence = fs::is_directory(o.input);
+    if (sequence || o.turntable > 0) {
+        imageFormatOf("frame." + o.format);
+        prepareDirectory(o.output);
+    } else {
+        imageFormatOf(o.output);
+        AtomicFile::checkTarget(o.output);
+    }
+    if (sequence) {
+        // One camera for every frame: it frames the union of the frames' bounds.
+        const std::vector<fs::path> frames = documentsIn(o.input);
+        openvdb::BBoxd bounds;
+        std::vector<Vec3d> points;
+        double pad = 0.0;
+        for (const fs::path& frame : frames) {
+            const FieldImage field = readFieldImage(frame);
+            bounds.expand(surfaceBounds(field));
+            const std::vector<Vec3d> centres = surfaceLeafCentres(field);
+            points.insert(points.end(), centres.begin(), centres.end());
+            pad = std::max(pad, leafPadWorld(field));
+        }
+        const Camera camera = chooseCamera(o, bounds, points, pad);
+        ProgressBar bar("rendering " + std::to_string(frames.size()) + " frames");
+        const Progress progress = bar.callback();
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            renderOne(readFieldImage(frames[i]), camera, o.render, framePath(o.output, int(i), o.format), progress,
+                      double(i) / frames.size(), double(i + 1) / frames.size());
+        }
+        std::cout << "wrote " << frames.size() << " frames to " << o.output << " (frame_0000." << o.format
+                  << " ...), one camera for all\n";
+        return;
+    }
+    const FieldImage field = readFieldImage(o.input);
+    const Camera camera = chooseCamera(o, surfaceBounds(field), surfaceLeafCentres(field), leafPadWorld(field));
+    ProgressBar bar("rendering");
+    const Progress progress = bar.callback();
+    if (o.turntable > 0) {
+        for (int i = 0; i < o.turntable; ++i) {
+            renderOne(field, camera.orbited(2.0 * M_PI * i / o.turntable), o.render, framePath(o.output, i, o.format),
+                      progress, double(i) / o.turntable, double(i + 1) / o.turntable);
+        }
+        std::cout << "wrote " << o.turntable << " turntable frames to " << o.output << " (frame_0000." << o.format
+                  << " ...)\n";
+        return;
+    }
+    renderOne(field, camera, o.render, o.output, progress, 0.0, 1.0);
+    std::cout << "wrote " << o.output << ": " << o.render.width << " x " << o.render.height << ", camera at ("
+              << camera.position.x() << ", " << camera.position.y() << ", " << camera.position.z() << ")\n";
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app)
+{
+    auto o = std::make_shared<RenderCommandOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Ray-trace a final image of a document against its level set (no mesh): clay shading with\n"
+                  "a key and a fill light, ambient occlusion, anti-aliasing. .exr gets half-float RGBA plus\n"
+                  "Z (camera distance) and N.X N.Y N.Z (world normal) layers and the camera in its header;\n"
+                  ".png a tone-mapped 8-bit picture. --turntable N writes N frames around the model into\n"
+                  "the directory -o; a directory of .vdb frames (a morph) renders to frames in -o with one\n"
+                  "camera that frames them all. Without --camera, a three-quarter view frames the model.");
+    cmd->add_option("input", o->input, "a .vdb document, or a directory of .vdb frames")->required();
+    cmd->add_option("-o,--output", o->output, "the image (.exr or .png), or a directory for frames")->required();
+    cmd->add_option("--width", o->render.width, "image width in pixels (1 to 16384)")->capture_default_str();
+    cmd->add_option("--height", o->render.height, "image height in pixels (1 to 16384)")->capture_default_str();
+    cmd->add_option("--camera", o->camera, "camera position x,y,z (default: a three-quarter view)")
+        ->delimiter(',')
+        ->expected(3);
+    cmd->add_option("--look-at", o->lookAt, "the point at the image's centre x,y,z (default: the model's)")
+        ->delimiter(',')
+        ->expected(3);
+    cmd->add_option("--up", o->up, "the camera's up direction x,y,z (default: 0,1,0)")->delimiter(',')->expected(3);
+    cmd->add_option("--fov", o->fov, "vertical field of view in degrees")->capture_default_str();
+    cmd->add_option("--samples", o->render.samples, "samples per pixel (anti-aliasing; rounded up to a square)")
+        ->capture_default_str();
+    cmd->add_option("--occlusion", o->render.occlusionRays, "ambient-occlusion rays per hit (0: none)")
+        ->capture_default_str();
+    cmd->add_option("--background", o->background, "background colour r,g,b (linear, 0 to 1), or none (transparent)")
+        ->capture_default_str();
+    cmd->add_option("--turntable", o->turntable, "render N frames around the model into the directory -o")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_option("--format", o->format, "image format of frames written into a directory")
+        ->check(CLI::IsMember({"png", "exr"}))
+        ->capture_default_str();
+    cmd->callback([o] { runRender(*o); });
+}
+
+}  // namespace sculpt::cli
