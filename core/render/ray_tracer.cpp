@@ -20,7 +20,7 @@ using openvdb::Vec3d;
 using Intersector = openvdb::tools::LevelSetRayIntersector<openvdb::FloatGrid>;
 using Ray = openvdb::math::Ray<double>;
 
-constexpr int kTile = 16;             // pixels on a tile's side
+constexpr int kTile = 16;           // pixels on a tile's side
 const Vec3d kClay(0.72, 0.5, 0.4);  // albedo, linear
 constexpr double kKeyLight = 1.05, kFillLight = 0.25, kAmbientLight = 0.25, kSpecular = 0.12, kShininess = 24.0;
 
@@ -71,8 +71,9 @@ struct Scene {
     const PinholeProjection& projection;
     const Lighting& lighting;
     const RenderOptions& options;
-    int strata;          // samples per pixel = strata^2
-    double escapeWorld;  // an occlusion ray starts this far out, past the surface's crossing
+    int strata;               // samples per pixel = strata^2
+    int occlusionRaysPerHit;  // the pixel's occlusion rays shared among its samples
+    double escapeWorld;       // an occlusion ray starts this far out, past the surface's crossing
     double occlusionReachWorld;
 };
 
@@ -86,14 +87,14 @@ struct PixelResult {
 double ambientOcclusion(Intersector& intersector, const Scene& scene, const Vec3d& point, const Vec3d& n,
                         Random& random)
 {
-    if (scene.options.occlusionRays == 0) return 1.0;
+    if (scene.occlusionRaysPerHit == 0) return 1.0;
     int blocked = 0;
-    for (int i = 0; i < scene.options.occlusionRays; ++i) {
+    for (int i = 0; i < scene.occlusionRaysPerHit; ++i) {
         const double u1 = random.next(), u2 = random.next();
         const Ray ray(point + n * scene.escapeWorld, cosineDirection(n, u1, u2), 0.0, scene.occlusionReachWorld);
         if (intersector.intersectsWS(ray)) ++blocked;
     }
-    return 1.0 - double(blocked) / scene.options.occlusionRays;
+    return 1.0 - double(blocked) / scene.occlusionRaysPerHit;
 }
 
 Vec3d shade(const Scene& scene, const Vec3d& n, const Vec3d& towardsViewer, double occlusion)
@@ -210,12 +211,11 @@ RenderedImage renderField(const FieldImage& field, const Camera& camera, const R
     const Lighting lighting(camera);
     const openvdb::BBoxd bounds = surfaceBounds(field);
     const double size = bounds.empty() ? 0.0 : bounds.extents().length();
-    const Scene scene{projection,
-                      lighting,
-                      options,
-                      int(std::ceil(std::sqrt(double(options.samples)) - 1e-9)),
-                      2.0 * field.voxelSize(),
-                      options.occlusionReach * size};
+    const int strata = int(std::ceil(std::sqrt(double(options.samples)) - 1e-9));
+    const int perHit =
+        options.occlusionRays == 0 ? 0 : (options.occlusionRays + strata * strata - 1) / (strata * strata);
+    const Scene scene{
+        projection, lighting, options, strata, perHit, 2.0 * field.voxelSize(), options.occlusionReach * size};
     const Intersector exemplar(field.grid());
     tbb::enumerable_thread_specific<Intersector> intersectors(exemplar);
     const int tilesX = (options.width + kTile - 1) / kTile, tilesY = (options.height + kTile - 1) / kTile;

@@ -7,7 +7,8 @@
 /// of it), one intersector per thread. Shading reads as clay: a diffuse base lit by a key and a
 /// fill light that move with the camera (so a turntable looks like the model turning in a fixed
 /// studio), a soft specular highlight from the key, and ambient light darkened by ambient
-/// occlusion: a few cosine-distributed short rays from the hit point, against the level set too.
+/// occlusion: a few cosine-distributed short rays from the hit point, against the level set too
+/// (a pixel's budget of them shared among its samples, so anti-aliasing does not multiply it).
 /// Each pixel takes several stratified samples (jittered on a grid) for anti-aliasing. Every
 /// random number is a hash of the pixel, the sample and the seed, so the image is the same bit
 /// for bit whatever the thread count. Pixels are shaded in parallel, a row of 16 x 16 tiles at

@@ -156,7 +156,7 @@ void addRenderCommand(CLI::App& app)
     cmd->add_option("--fov", o->fov, "vertical field of view in degrees")->capture_default_str();
     cmd->add_option("--samples", o->render.samples, "samples per pixel (anti-aliasing; rounded up to a square)")
         ->capture_default_str();
-    cmd->add_option("--occlusion", o->render.occlusionRays, "ambient-occlusion rays per hit (0: none)")
+    cmd->add_option("--occlusion", o->render.occlusionRays, "ambient-occlusion rays per pixel (0: none)")
         ->capture_default_str();
     cmd->add_option("--background", o->background, "background colour r,g,b (linear, 0 to 1), or none (transparent)")
         ->capture_default_str();

@@ -21,10 +21,12 @@ TempDir::~TempDir()
     std::filesystem::remove_all(mPath, ignored);
 }
 
-std::vector<std::string> TempDir::entries() const
+std::vector<std::string> TempDir::entries() const { return entriesOf(mPath); }
+
+std::vector<std::string> TempDir::entriesOf(const std::filesystem::path& dir)
 {
     std::vector<std::string> names;
-    for (const auto& entry : std::filesystem::directory_iterator(mPath)) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
         names.push_back(entry.path().filename().string());
     }
     std::sort(names.begin(), names.end());

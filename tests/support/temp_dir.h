@@ -19,6 +19,8 @@ public:
     std::filesystem::path operator/(const std::string& name) const { return mPath / name; }
     /// Names of the entries in the directory, sorted.
     std::vector<std::string> entries() const;
+    /// Names of the entries in any directory, sorted.
+    static std::vector<std::string> entriesOf(const std::filesystem::path& dir);
 
 private:
     std::filesystem::path mPath;

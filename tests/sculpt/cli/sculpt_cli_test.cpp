@@ -7,6 +7,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfVecAttribute.h>
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -158,8 +161,55 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"new --radius 0.4 --voxel-size 0.5 -o out.vdb", "choose a finer voxel size (a smaller --voxel-size)"},
         BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
         BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
-        BadCall{"", "ubcommand"}),
+        BadCall{"render missing.vdb -o out.png", "missing.vdb"},
+        BadCall{"render corrupt.vdb -o out.exr", "corrupt.vdb"},
+        BadCall{"render good.vdb -o out.png --width 0", "image size 0 x"},
+        BadCall{"render good.vdb -o out.png --height 20000", "out of range (1 to 16384"},
+        BadCall{"render good.vdb -o nodir/out.png", "nodir"}, BadCall{"render good.vdb -o out.tiff", "out.tiff"},
+        BadCall{"render good.vdb -o out.png --background pink", "--background"},
+        BadCall{"render good.vdb -o out.png --camera 0,0,0 --look-at 0,0,0", "coincide"},
+        BadCall{"render good.vdb -o out.png --fov 200", "field of view"}, BadCall{"", "ubcommand"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
+
+Imath::V3f exrCameraPosition(const std::filesystem::path& path)
+{
+    Imf::InputFile in(path.c_str());
+    const auto* position = in.header().findTypedAttribute<Imf::V3fAttribute>("cameraPosition");
+    return position ? position->value() : Imath::V3f(0.0f);
+}
+
+TEST(SculptCli, RenderWritesImagesTurntablesAndSequencesWithOneCamera)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o ball.vdb", dir.path()).exitCode, 0);
+    const std::string small = " --width 40 --height 30 --samples 1 --occlusion 2";
+    auto r = runSculpt("render ball.vdb -o ball.png" + small, dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "ball.png"));
+    r = runSculpt("render ball.vdb -o ball.exr --background none" + small, dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+
+    r = runSculpt("render ball.vdb --turntable 3 -o turn" + small, dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(TempDir::entriesOf(dir / "turn"),
+              (std::vector<std::string>{"frame_0000.png", "frame_0001.png", "frame_0002.png"}));
+
+    std::filesystem::create_directory(dir / "morph");
+    ASSERT_EQ(runSculpt("new --radius 4 --voxel-size 0.5 -o morph/frame_0000.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape box --radius 6 --voxel-size 0.5 -o morph/frame_0001.vdb", dir.path()).exitCode, 0);
+    r = runSculpt("render morph -o frames --format exr" + small, dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(TempDir::entriesOf(dir / "frames"), (std::vector<std::string>{"frame_0000.exr", "frame_0001.exr"}));
+    const Imath::V3f first = exrCameraPosition(dir / "frames" / "frame_0000.exr");
+    EXPECT_GT(first.length(), 6.0f);
+    EXPECT_EQ(first, exrCameraPosition(dir / "frames" / "frame_0001.exr"));
+
+    // Inside the ball: an image all the same, and one warning.
+    r = runSculpt("render ball.vdb -o inside.png --camera 0,0,1" + small, dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "inside.png"));
+}
 
 TEST(SculptCli, SmoothAndOffsetChangeTheShape)
 {
