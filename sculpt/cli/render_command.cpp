@@ -81,6 +81,9 @@ void runRender(RenderCommandOptions o)
     o.render.background = parseBackground(o.background);
     o.render.validate();
     const bool sequence = fs::is_directory(o.input);
+    if (sequence && o.turntable > 0) {
+        throw InputError(o.input + ": --turntable turns one document, not a directory of frames");
+    }
     if (sequence || o.turntable > 0) {
         imageFormatOf("frame." + o.format);
         prepareDirectory(o.output);

@@ -168,7 +168,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"render good.vdb -o nodir/out.png", "nodir"}, BadCall{"render good.vdb -o out.tiff", "out.tiff"},
         BadCall{"render good.vdb -o out.png --background pink", "--background"},
         BadCall{"render good.vdb -o out.png --camera 0,0,0 --look-at 0,0,0", "coincide"},
-        BadCall{"render good.vdb -o out.png --fov 200", "field of view"}, BadCall{"", "ubcommand"}),
+        BadCall{"render good.vdb -o out.png --fov 200", "field of view"},
+        BadCall{"render . -o frames --turntable 3", "not a directory of frames"}, BadCall{"", "ubcommand"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
