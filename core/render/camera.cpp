@@ -27,13 +27,11 @@ Basis basisOf(const Camera& camera)
     return b;
 }
 
-bool finite(const Vec3d& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
-
 }  // namespace
 
 void Camera::validate() const
 {
-    if (!finite(position) || !finite(lookAt) || !finite(up) || !std::isfinite(fovDegrees)) {
+    if (!position.isFinite() || !lookAt.isFinite() || !up.isFinite() || !std::isfinite(fovDegrees)) {
         throw InputError("camera: position, look-at, up and field of view must be finite numbers");
     }
     const Vec3d view = lookAt - position;
@@ -72,23 +70,22 @@ openvdb::Mat4d Camera::worldFromCamera() const
     return m;
 }
 
-Camera framingCamera(const openvdb::BBoxd& box, const std::vector<Vec3d>& points, double padWorld, double aspect,
-                     double fovDegrees)
+Camera framingCamera(const SurfaceExtent& extent, double aspect, double fovDegrees)
 {
     Camera camera;
     camera.fovDegrees = fovDegrees;
-    camera.lookAt = box.getCenter();
+    camera.lookAt = extent.bounds.getCenter();
     const Vec3d towardsCamera = Vec3d(0.55, 0.35, 1.0).unit();
     camera.position = camera.lookAt + towardsCamera;
     const Basis b = basisOf(camera);
     // The nearest distance at which every point (with its pad) is inside the view, with a margin.
     const double tanVertical = 0.9 * std::tan(0.5 * fovDegrees * kDegrees), tanHorizontal = tanVertical * aspect;
     double distance = 1e-6;
-    for (const Vec3d& p : points) {
+    for (const Vec3d& p : extent.leafCentres) {
         const Vec3d d = p - camera.lookAt;
-        const double depth = d.dot(towardsCamera) + padWorld;  // towards the camera: nearer
-        distance = std::max({distance, depth + (std::abs(d.dot(b.right)) + padWorld) / tanHorizontal,
-                             depth + (std::abs(d.dot(b.up)) + padWorld) / tanVertical});
+        const double depth = d.dot(towardsCamera) + extent.padWorld;  // towards the camera: nearer
+        distance = std::max({distance, depth + (std::abs(d.dot(b.right)) + extent.padWorld) / tanHorizontal,
+                             depth + (std::abs(d.dot(b.up)) + extent.padWorld) / tanVertical});
     }
     camera.position = camera.lookAt + towardsCamera * distance;
     return camera;

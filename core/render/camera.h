@@ -7,10 +7,10 @@
 /// top-left pixel. The field of view is vertical. Camera space: x right, y up, z towards the
 /// viewer (the camera looks down -z), as OpenEXR's worldToCamera and most renderers expect.
 
+#include "core/render/surface_extent.h"
+
 #include <openvdb/math/Ray.h>
 #include <openvdb/openvdb.h>
-
-#include <vector>
 
 namespace sculpt {
 
@@ -30,11 +30,10 @@ struct Camera {
     openvdb::Mat4d worldFromCamera() const;
 };
 
-/// A camera that looks at the centre of `box` (world) from a three-quarter view (front right, a
-/// little above; +z is the front, +y up), as near as it can be with every one of `points`, each
-/// grown by `padWorld`, in view at `aspect` = width / height (with a 10% margin).
-Camera framingCamera(const openvdb::BBoxd& box, const std::vector<openvdb::Vec3d>& points, double padWorld,
-                     double aspect, double fovDegrees = 35.0);
+/// A camera that looks at the centre of `extent`'s box from a three-quarter view (front right, a
+/// little above; +z is the front, +y up), as near as it can be with every leaf of the extent in
+/// view at `aspect` = width / height (with a 10% margin).
+Camera framingCamera(const SurfaceExtent& extent, double aspect, double fovDegrees = 35.0);
 
 /// Primary rays of one camera and image size.
 class PinholeProjection {

@@ -211,29 +211,6 @@ void RenderOptions::validate() const
     }
 }
 
-openvdb::BBoxd surfaceBounds(const FieldImage& field)
-{
-    const openvdb::CoordBBox box = field.grid().evalActiveVoxelBoundingBox();
-    if (box.empty()) return openvdb::BBoxd();
-    return field.grid().transform().indexToWorld(box);
-}
-
-std::vector<Vec3d> surfaceLeafCentres(const FieldImage& field)
-{
-    std::vector<Vec3d> centres;
-    const auto& xform = field.grid().transform();
-    const double half = 0.5 * (openvdb::FloatTree::LeafNodeType::DIM - 1);
-    for (auto leaf = field.grid().tree().cbeginLeaf(); leaf; ++leaf) {
-        centres.push_back(xform.indexToWorld(leaf->origin().asVec3d() + Vec3d(half)));
-    }
-    return centres;
-}
-
-double leafPadWorld(const FieldImage& field)
-{
-    return 0.5 * std::sqrt(3.0) * (openvdb::FloatTree::LeafNodeType::DIM - 1) * field.voxelSize();
-}
-
 RenderedImage renderField(const FieldImage& field, const Camera& camera, const RenderOptions& options,
                           RenderReport& summary, const Progress& progress)
 {
@@ -252,7 +229,7 @@ RenderedImage renderField(const FieldImage& field, const Camera& camera, const R
 
     const PinholeProjection projection(camera, options.width, options.height);
     const Lighting lighting(camera);
-    const openvdb::BBoxd bounds = surfaceBounds(field);
+    const openvdb::BBoxd bounds = SurfaceExtent(field).bounds;
     const double size = bounds.empty() ? 0.0 : bounds.extents().length();
     const int strata = int(std::ceil(std::sqrt(double(options.samples)) - 1e-9));
     const int perHit =

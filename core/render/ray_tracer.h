@@ -54,12 +54,4 @@ struct RenderReport {
 RenderedImage renderField(const FieldImage& field, const Camera& camera, const RenderOptions& options,
                           RenderReport& summary, const Progress& progress = {});
 
-/// The world bounding box of the field's band (empty if there is none).
-openvdb::BBoxd surfaceBounds(const FieldImage& field);
-
-/// Where the surface may be, for framing it: the world centres of the band's leaves, each within
-/// `leafPadWorld(field)` of every voxel of its leaf.
-std::vector<openvdb::Vec3d> surfaceLeafCentres(const FieldImage& field);
-double leafPadWorld(const FieldImage& field);
-
 }  // namespace sculpt

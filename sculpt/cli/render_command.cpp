@@ -46,12 +46,11 @@ std::optional<Vec3d> parseBackground(const std::string& text)
     return c;
 }
 
-/// The camera the options ask for: the automatic three-quarter view of `points` (the band's leaf
-/// centres, padded) centred on `bounds`, with any of position, look-at point and up the user gave.
-Camera chooseCamera(const RenderCommandOptions& o, const openvdb::BBoxd& bounds, const std::vector<Vec3d>& points,
-                    double padWorld)
+/// The camera the options ask for: the automatic three-quarter view of `extent`, with any of
+/// position, look-at point and up the user gave.
+Camera chooseCamera(const RenderCommandOptions& o, const SurfaceExtent& extent)
 {
-    Camera camera = framingCamera(bounds, points, padWorld, double(o.render.width) / o.render.height, o.fov);
+    Camera camera = framingCamera(extent, double(o.render.width) / o.render.height, o.fov);
     if (!o.lookAt.empty()) {
         const Vec3d offset = camera.position - camera.lookAt;
         camera.lookAt = vec3(o.lookAt);
@@ -94,17 +93,10 @@ void runRender(RenderCommandOptions o)
     if (sequence) {
         // One camera for every frame: it frames the union of the frames' bounds.
         const std::vector<fs::path> frames = documentsIn(o.input);
-        openvdb::BBoxd bounds;
-        std::vector<Vec3d> points;
-        double pad = 0.0;
-        for (const fs::path& frame : frames) {
-            const FieldImage field = readFieldImage(frame);
-            bounds.expand(surfaceBounds(field));
-            const std::vector<Vec3d> centres = surfaceLeafCentres(field);
-            points.insert(points.end(), centres.begin(), centres.end());
-            pad = std::max(pad, leafPadWorld(field));
-        }
-        const Camera camera = chooseCamera(o, bounds, points, pad);
+        // Frames are read twice (here and to render) so that only one is in memory at a time.
+        SurfaceExtent extent;
+        for (const fs::path& frame : frames) extent.add(readFieldImage(frame));
+        const Camera camera = chooseCamera(o, extent);
         ProgressBar bar("rendering " + std::to_string(frames.size()) + " frames");
         const Progress progress = bar.callback();
         for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -116,7 +108,7 @@ void runRender(RenderCommandOptions o)
         return;
     }
     const FieldImage field = readFieldImage(o.input);
-    const Camera camera = chooseCamera(o, surfaceBounds(field), surfaceLeafCentres(field), leafPadWorld(field));
+    const Camera camera = chooseCamera(o, SurfaceExtent(field));
     ProgressBar bar("rendering");
     const Progress progress = bar.callback();
     if (o.turntable > 0) {

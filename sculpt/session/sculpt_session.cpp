@@ -9,12 +9,6 @@
 
 namespace sculpt {
 
-namespace {
-
-bool finite(const openvdb::Vec3d& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
-
-}  // namespace
-
 void validateStroke(const Stroke& stroke)
 {
     stroke.brush.validate();
@@ -25,8 +19,8 @@ void validateStroke(const Stroke& stroke)
     for (size_t i = 0; i < stroke.samples.size(); ++i) {
         const StrokeSample& s = stroke.samples[i];
         const std::string where = "field 'samples[" + std::to_string(i) + "].";
-        if (!finite(s.positionWorld)) throw InputError(where + "position' is not finite");
-        if (!finite(s.viewDirection)) throw InputError(where + "view' is not finite");
+        if (!s.positionWorld.isFinite()) throw InputError(where + "position' is not finite");
+        if (!s.viewDirection.isFinite()) throw InputError(where + "view' is not finite");
         if (!(s.pressure > 0.0 && s.pressure <= 1.0)) {
             throw InputError(where + "pressure' must be in (0, 1] (got " + formatNumber(s.pressure) + ")");
         }

@@ -76,8 +76,7 @@ void BM_OursFace(benchmark::State& state)
     options.height = 1080;
     options.samples = 4;
     const sculpt::Camera camera =
-        sculpt::framingCamera(sculpt::surfaceBounds(face), sculpt::surfaceLeafCentres(face), sculpt::leafPadWorld(face),
-                              double(options.width) / options.height);
+        sculpt::framingCamera(sculpt::SurfaceExtent(face), double(options.width) / options.height);
     for (auto _ : state) {
         sculpt::RenderReport report;
         const sculpt::RenderedImage image = sculpt::renderField(face, camera, options, report);

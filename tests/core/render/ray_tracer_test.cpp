@@ -144,8 +144,7 @@ TEST(RayTracer, FramingCameraSeesTheWholeModelAndFillsTheView)
     options.samples = 1;
     options.occlusionRays = 0;
     options.background.reset();
-    const Camera camera = framingCamera(surfaceBounds(box), surfaceLeafCentres(box), leafPadWorld(box),
-                                        double(options.width) / options.height);
+    const Camera camera = framingCamera(SurfaceExtent(box), double(options.width) / options.height);
     RenderReport report;
     const RenderedImage image = renderField(box, camera, options, report);
     int top = image.height, bottom = -1, left = image.width, right = -1;
