@@ -2,7 +2,8 @@
 # VTK must come before anything that loads OpenVDB's FindTBB.cmake, otherwise
 # CMake stops with "Some (but not all) targets in this export set were already defined".
 find_package(VTK 9 REQUIRED COMPONENTS
-  CommonCore CommonDataModel FiltersCore FiltersSources IOGeometry IOImage IOPLY ImagingCore ImagingGeneral)
+  CommonCore CommonDataModel FiltersCore FiltersSources IOGeometry IOImage IOPLY ImagingCore ImagingGeneral
+  RenderingCore RenderingOpenGL2 RenderingUI)
 
 list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
 # Debian's FindOpenVDB.cmake asks for Boost iostreams (libboost-iostreams-dev).
@@ -12,6 +13,12 @@ find_package(OpenEXR CONFIG REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
+# The window: GLFW, GLM, and Debian's static Dear ImGui (it holds the GLFW and OpenGL3 backends).
+find_package(glfw3 3.3 REQUIRED)
+find_package(glm REQUIRED)
+find_package(OpenGL REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 
 if(SCULPT_BUILD_TESTS)
   find_package(GTest REQUIRED)

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <fstream>
 #include <string>
 
 namespace sculpt {
@@ -57,6 +58,18 @@ void AtomicFile::commit()
     fs::rename(mTemporary, mTarget, ec);
     if (ec) throw InputError(mTarget.string() + ": cannot write (" + ec.message() + ")");
     mCommitted = true;
+}
+
+void writeFileAtomically(const fs::path& target, const std::string& text)
+{
+    AtomicFile file(target);
+    {
+        std::ofstream out(file.temporaryPath(), std::ios::binary);
+        out << text;
+        out.flush();
+        if (!out) throw InputError(target.string() + ": cannot write (disk full or not writable?)");
+    }
+    file.commit();
 }
 
 }  // namespace sculpt

@@ -7,6 +7,7 @@
 /// a crash before it), the temporary is removed and the target keeps its previous content.
 
 #include <filesystem>
+#include <string>
 
 namespace sculpt {
 
@@ -32,5 +33,9 @@ private:
     std::filesystem::path mTemporary;
     bool mCommitted = false;
 };
+
+/// Writes `text` to `target` through an AtomicFile.
+/// @throws InputError naming the file if its directory is missing or the write fails.
+void writeFileAtomically(const std::filesystem::path& target, const std::string& text);
 
 }  // namespace sculpt

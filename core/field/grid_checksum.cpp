@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <cstring>
+#include <sstream>
 #include <vector>
 
 namespace sculpt {
@@ -56,6 +57,13 @@ std::uint64_t gridChecksum(const openvdb::FloatGrid& grid)
     });
     h.add(leafHashes.data(), leafHashes.size() * sizeof(std::uint64_t));
     return h.state;
+}
+
+std::string formatChecksum(std::uint64_t checksum)
+{
+    std::ostringstream out;
+    out << std::hex << checksum;
+    return out.str();
 }
 
 }  // namespace sculpt

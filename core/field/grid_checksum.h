@@ -9,11 +9,15 @@
 #include <openvdb/openvdb.h>
 
 #include <cstdint>
+#include <string>
 
 namespace sculpt {
 
 /// Hashes background, every tile (level, origin, value, state) and every leaf (origin, value
 /// mask, raw values) in tree order. Deterministic; linear in the number of leaves, parallel.
 std::uint64_t gridChecksum(const openvdb::FloatGrid& grid);
+
+/// The checksum as documents store it and `sculpt info` prints it: lower-case hex.
+std::string formatChecksum(std::uint64_t checksum);
 
 }  // namespace sculpt

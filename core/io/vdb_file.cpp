@@ -24,13 +24,6 @@ constexpr const char* kMetaUnits = "sculpt.units";
 constexpr const char* kMetaVoxelSize = "sculpt.voxel_size";
 constexpr const char* kMetaChecksum = "sculpt.checksum";
 
-std::string hex(std::uint64_t value)
-{
-    std::ostringstream out;
-    out << std::hex << value;
-    return out.str();
-}
-
 /// First float level-set grid among the file's grid descriptors (metadata only, no voxels).
 openvdb::GridBase::Ptr findLevelSet(const openvdb::GridPtrVec& grids)
 {
@@ -70,7 +63,7 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
         }
     }
     if (auto sum = meta.getMetadata<openvdb::StringMetadata>(kMetaChecksum)) {
-        if (sum->value() != hex(gridChecksum(field.grid()))) {
+        if (sum->value() != formatChecksum(gridChecksum(field.grid()))) {
             throw InputError(path.string() + ": corrupt (voxel data does not match its checksum)");
         }
     }
@@ -145,7 +138,7 @@ void writeFieldImage(const FieldImage& field, const fs::path& path)
     meta.insertMeta(kMetaVersion, openvdb::Int32Metadata(kVdbFormatVersion));
     meta.insertMeta(kMetaUnits, openvdb::StringMetadata(field.units()));
     meta.insertMeta(kMetaVoxelSize, openvdb::DoubleMetadata(field.voxelSize()));
-    meta.insertMeta(kMetaChecksum, openvdb::StringMetadata(hex(gridChecksum(field.grid()))));
+    meta.insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(field.grid()))));
     try {
         openvdb::io::File file(out.temporaryPath().string());
         file.write(openvdb::GridCPtrVec{field.gridPtr()}, meta);

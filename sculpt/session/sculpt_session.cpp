@@ -9,23 +9,42 @@
 
 namespace sculpt {
 
-void validateStroke(const Stroke& stroke)
+namespace {
+
+void validateSettings(const Stroke& stroke)
 {
     stroke.brush.validate();
     if (!(stroke.spacing > 0.0 && stroke.spacing <= 4.0)) {
         throw InputError("field 'spacing' must be in (0, 4] radii (got " + formatNumber(stroke.spacing) + ")");
     }
-    if (stroke.samples.empty()) throw InputError("field 'samples' is empty: a stroke needs at least one");
-    for (size_t i = 0; i < stroke.samples.size(); ++i) {
-        const StrokeSample& s = stroke.samples[i];
-        const std::string where = "field 'samples[" + std::to_string(i) + "].";
-        if (!s.positionWorld.isFinite()) throw InputError(where + "position' is not finite");
-        if (!s.viewDirection.isFinite()) throw InputError(where + "view' is not finite");
-        if (!(s.pressure > 0.0 && s.pressure <= 1.0)) {
-            throw InputError(where + "pressure' must be in (0, 1] (got " + formatNumber(s.pressure) + ")");
-        }
+}
+
+void validateSample(const StrokeSample& s, size_t index)
+{
+    const std::string where = "field 'samples[" + std::to_string(index) + "].";
+    if (!s.positionWorld.isFinite()) throw InputError(where + "position' is not finite");
+    if (!s.viewDirection.isFinite()) throw InputError(where + "view' is not finite");
+    if (!(s.pressure > 0.0 && s.pressure <= 1.0)) {
+        throw InputError(where + "pressure' must be in (0, 1] (got " + formatNumber(s.pressure) + ")");
     }
 }
+
+}  // namespace
+
+void validateStroke(const Stroke& stroke)
+{
+    validateSettings(stroke);
+    if (stroke.samples.empty()) throw InputError("field 'samples' is empty: a stroke needs at least one");
+    for (size_t i = 0; i < stroke.samples.size(); ++i) validateSample(stroke.samples[i], i);
+}
+
+struct SculptSession::LiveStroke {
+    explicit LiveStroke(const Stroke& settings) : stroke(settings), stepper(settings) { stroke.samples.clear(); }
+    Stroke stroke;
+    StrokeStepper stepper;
+    LeafJournal journal;
+    StrokeReport report;
+};
 
 SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBudgetBytes)
     : mField(std::move(field)), mHistory(undoBudgetBytes)
@@ -37,6 +56,10 @@ SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBu
     }
 }
 
+SculptSession::~SculptSession() = default;
+SculptSession::SculptSession(SculptSession&&) noexcept = default;
+SculptSession& SculptSession::operator=(SculptSession&&) noexcept = default;
+
 double SculptSession::modelSize() const
 {
     openvdb::CoordBBox box;  // of the leaves: a voxel-exact box would visit every voxel per stroke
@@ -44,31 +67,73 @@ double SculptSession::modelSize() const
     return double(box.dim().asVec3d().length()) * mField.voxelSize();
 }
 
+void SculptSession::checkRadius(const BrushSettings& brush) const
+{
+    const double size = modelSize();
+    if (brush.radiusWorld > size) {
+        throw InputError("field 'radius' (" + formatNumber(brush.radiusWorld) + ") is larger than the model (" +
+                         formatNumber(size) + " " + mField.units() + " across)");
+    }
+}
+
 SculptSession::StrokeReport SculptSession::applyStroke(const Stroke& stroke)
 {
     validateStroke(stroke);
-    const double size = modelSize();
-    if (stroke.brush.radiusWorld > size) {
-        throw InputError("field 'radius' (" + formatNumber(stroke.brush.radiusWorld) + ") is larger than the model (" +
-                         formatNumber(size) + " " + mField.units() + " across)");
-    }
-    LeafJournal journal;
-    StrokeReport report;
+    beginStroke(stroke);
     try {
-        for (const BrushStamp& stamp : strokeStamps(stroke)) {
-            applyStamp(mField, stroke.brush, stamp, &journal);
-            updateMesh();
-            ++report.stamps;
-        }
+        for (const StrokeSample& sample : stroke.samples) extendStroke(sample);
+        return endStroke().report;
     } catch (...) {
-        journal.swap(mField);  // a stroke lands whole or not at all
-        updateMesh();
+        cancelStroke();  // a stroke lands whole or not at all
         throw;
     }
-    report.leavesChanged = journal.leafCount();
-    report.journalBytes = journal.memoryBytes();
-    mHistory.push(std::move(journal));
+}
+
+void SculptSession::beginStroke(const Stroke& settings)
+{
+    if (mLive) throw std::logic_error("beginStroke: a stroke is already active");
+    validateSettings(settings);
+    checkRadius(settings.brush);
+    mLive = std::make_unique<LiveStroke>(settings);
+}
+
+void SculptSession::stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report)
+{
+    for (const BrushStamp& s : stamps) {
+        applyStamp(mField, mLive->stroke.brush, s, &mLive->journal);
+        updateMesh();
+        ++report.stamps;
+    }
+}
+
+SculptSession::StrokeReport SculptSession::extendStroke(const StrokeSample& sample)
+{
+    if (!mLive) throw std::logic_error("extendStroke: no active stroke");
+    validateSample(sample, mLive->stroke.samples.size());
+    mLive->stroke.samples.push_back(sample);
+    StrokeReport report;
+    stamp(mLive->stepper.add(sample), report);
+    mLive->report.stamps += report.stamps;
     return report;
+}
+
+SculptSession::FinishedStroke SculptSession::endStroke()
+{
+    if (!mLive) throw std::logic_error("endStroke: no active stroke");
+    stamp(mLive->stepper.finish(), mLive->report);
+    std::unique_ptr<LiveStroke> live = std::move(mLive);
+    live->report.leavesChanged = live->journal.leafCount();
+    live->report.journalBytes = live->journal.memoryBytes();
+    mHistory.push(std::move(live->journal));
+    return {std::move(live->stroke), live->report};
+}
+
+void SculptSession::cancelStroke()
+{
+    if (!mLive) return;
+    mLive->journal.swap(mField);
+    mLive.reset();
+    updateMesh();
 }
 
 bool SculptSession::undo()
@@ -88,7 +153,7 @@ bool SculptSession::redo()
 void SculptSession::updateMesh()
 {
     const DirtyRegion dirty = mField.takeDirtyRegion();
-    if (mMesher) mMesher->update(mField, dirty);
+    if (mMesher) mRemeshed += mMesher->update(mField, dirty);
 }
 
 }  // namespace sculpt

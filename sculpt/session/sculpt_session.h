@@ -11,6 +11,7 @@
 #include "sculpt/session/stroke.h"
 #include "sculpt/session/undo_history.h"
 
+#include <memory>
 #include <optional>
 
 namespace sculpt {
@@ -20,6 +21,9 @@ public:
     /// @param liveMesh keep an IncrementalMesher up to date after every stamp (the UI does).
     explicit SculptSession(FieldImage field, bool liveMesh = false,
                            std::size_t undoBudgetBytes = UndoHistory::kDefaultBudgetBytes);
+    ~SculptSession();
+    SculptSession(SculptSession&&) noexcept;
+    SculptSession& operator=(SculptSession&&) noexcept;
 
     /// What a stroke did.
     struct StrokeReport {
@@ -30,6 +34,22 @@ public:
     /// Applies the stroke and records it as one undo step.
     /// @throws InputError (brush settings, samples) before changing anything.
     StrokeReport applyStroke(const Stroke& stroke);
+
+    /// A stroke drawn live: begin, then each sample stamps what is due at once, then end records
+    /// it as one undo step. The samples kept are the stroke's, so `sculpt apply` replays it bit
+    /// for bit. @throws InputError (settings, a brush larger than the model) before any change.
+    void beginStroke(const Stroke& settings);
+    /// @throws InputError if a sample is not finite or its pressure not in (0, 1]; nothing changes.
+    StrokeReport extendStroke(const StrokeSample& sample);
+    struct FinishedStroke {
+        Stroke stroke;  ///< with every sample
+        StrokeReport report;
+    };
+    /// Stamps the closing stamp and records the stroke as one undo step.
+    FinishedStroke endStroke();
+    /// Puts the field back as before the live stroke and forgets it.
+    void cancelStroke();
+    bool strokeActive() const { return mLive != nullptr; }
     bool undo();
     bool redo();
 
@@ -40,15 +60,23 @@ public:
     /// The live mesh, if the session keeps one.
     const IncrementalMesher* mesher() const { return mMesher ? &*mMesher : nullptr; }
 
+    /// Blocks the live mesh re-meshed since the session began (the mesher's own count).
+    std::size_t remeshedBlocks() const { return mRemeshed; }
+
     /// Largest extent of the model's band, world units: brushes larger than this are refused.
     double modelSize() const;
 
 private:
+    struct LiveStroke;
     void updateMesh();
+    void checkRadius(const BrushSettings& brush) const;
+    void stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report);
 
     FieldImage mField;
     UndoHistory mHistory;
     std::optional<IncrementalMesher> mMesher;
+    std::unique_ptr<LiveStroke> mLive;
+    std::size_t mRemeshed = 0;
 };
 
 /// @throws InputError naming the field if a sample is not finite or its pressure not in (0, 1],

@@ -6,33 +6,10 @@ namespace sculpt {
 
 namespace {
 
-/// Sample interpolated at arc length s along the polyline (whose cumulative lengths are given).
-StrokeSample sampleAt(const std::vector<StrokeSample>& samples, const std::vector<double>& lengths, double s)
+StrokeSample lerp(const StrokeSample& a, const StrokeSample& b, double t)
 {
-    size_t i = 1;
-    while (i + 1 < samples.size() && lengths[i] < s) ++i;
-    const double span = lengths[i] - lengths[i - 1];
-    const double t = span > 0.0 ? std::clamp((s - lengths[i - 1]) / span, 0.0, 1.0) : 1.0;
-    const StrokeSample& a = samples[i - 1];
-    const StrokeSample& b = samples[i];
     return {a.positionWorld + (b.positionWorld - a.positionWorld) * t, a.pressure + (b.pressure - a.pressure) * t,
             a.viewDirection + (b.viewDirection - a.viewDirection) * t};
-}
-
-/// Points spaced `step` apart along the samples' polyline, first and last included.
-std::vector<StrokeSample> resample(const std::vector<StrokeSample>& samples, double step)
-{
-    if (samples.size() < 2) return samples;
-    std::vector<double> lengths(samples.size(), 0.0);
-    for (size_t i = 1; i < samples.size(); ++i) {
-        lengths[i] = lengths[i - 1] + (samples[i].positionWorld - samples[i - 1].positionWorld).length();
-    }
-    const double total = lengths.back();
-    const int count = std::max(1, int(std::ceil(total / step - 1e-9)));
-    std::vector<StrokeSample> out;
-    out.reserve(size_t(count) + 1);
-    for (int k = 0; k <= count; ++k) out.push_back(sampleAt(samples, lengths, total * k / count));
-    return out;
 }
 
 /// The sign flips of every mirror image, the identity first.
@@ -48,19 +25,56 @@ std::vector<openvdb::Vec3d> mirrorSigns(const Symmetry& symmetry)
 
 }  // namespace
 
+StrokeStepper::StrokeStepper(const Stroke& stroke)
+    : mStep(stroke.spacing * stroke.brush.radiusWorld), mSigns(mirrorSigns(stroke.symmetry))
+{}
+
+void StrokeStepper::emit(const StrokeSample& at, std::vector<BrushStamp>& out)
+{
+    const openvdb::Vec3d previous = mStarted ? mLastStamp : at.positionWorld;
+    for (const openvdb::Vec3d& sign : mSigns) {
+        out.push_back({at.positionWorld * sign, previous * sign, at.pressure, at.viewDirection * sign});
+    }
+    mLastStamp = at.positionWorld;
+}
+
+std::vector<BrushStamp> StrokeStepper::add(const StrokeSample& sample)
+{
+    std::vector<BrushStamp> out;
+    if (!mStarted) {
+        emit(sample, out);
+        mStarted = true;
+        mLast = sample;
+        mToNext = mStep;
+        return out;
+    }
+    const double length = (sample.positionWorld - mLast.positionWorld).length();
+    double travelled = 0.0;
+    while (length - travelled >= mToNext) {
+        travelled += mToNext;
+        emit(lerp(mLast, sample, travelled / length), out);
+        mToNext = mStep;
+    }
+    mToNext -= length - travelled;
+    mLast = sample;
+    return out;
+}
+
+std::vector<BrushStamp> StrokeStepper::finish()
+{
+    std::vector<BrushStamp> out;
+    if (mStarted && (mLast.positionWorld - mLastStamp).length() > 1e-9 * mStep) emit(mLast, out);
+    return out;
+}
+
 std::vector<BrushStamp> strokeStamps(const Stroke& stroke)
 {
-    const std::vector<StrokeSample> path = resample(stroke.samples, stroke.spacing * stroke.brush.radiusWorld);
-    const std::vector<openvdb::Vec3d> signs = mirrorSigns(stroke.symmetry);
+    StrokeStepper stepper(stroke);
     std::vector<BrushStamp> stamps;
-    stamps.reserve(path.size() * signs.size());
-    for (size_t i = 0; i < path.size(); ++i) {
-        const StrokeSample& previous = path[i == 0 ? 0 : i - 1];
-        for (const openvdb::Vec3d& sign : signs) {
-            stamps.push_back({path[i].positionWorld * sign, previous.positionWorld * sign, path[i].pressure,
-                              path[i].viewDirection * sign});
-        }
+    for (const StrokeSample& sample : stroke.samples) {
+        for (BrushStamp& stamp : stepper.add(sample)) stamps.push_back(stamp);
     }
+    for (BrushStamp& stamp : stepper.finish()) stamps.push_back(stamp);
     return stamps;
 }
 

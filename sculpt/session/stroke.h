@@ -28,9 +28,34 @@ struct Stroke {
     std::vector<StrokeSample> samples;
 };
 
-/// The stamps of a stroke: one every spacing x radius along the sampled polyline (pressure and
-/// view interpolated), the first at the first sample, the last at the last; each stamp followed
-/// by its mirror images, each mirror image chaining to its own previous stamp.
+/// Places the stamps of a stroke while it is being drawn: the first at the first sample, then one
+/// every spacing x radius of arc length along the sampled polyline (pressure and view
+/// interpolated), and on finish() one at the last sample unless a stamp is already there. Each
+/// stamp is followed by its mirror images, each chaining to its own previous stamp. A prefix of
+/// the samples always yields a prefix of the stamps, so a live stroke stamps as the pointer moves
+/// and a replay of its samples stamps the same.
+class StrokeStepper {
+public:
+    /// Uses the stroke's brush radius, spacing and symmetry (not its samples).
+    explicit StrokeStepper(const Stroke& stroke);
+
+    /// The stamps due once the path reaches `sample`.
+    std::vector<BrushStamp> add(const StrokeSample& sample);
+    /// The closing stamp at the last sample, if it is not where the last stamp was.
+    std::vector<BrushStamp> finish();
+
+private:
+    void emit(const StrokeSample& at, std::vector<BrushStamp>& out);
+
+    double mStep;
+    std::vector<openvdb::Vec3d> mSigns;
+    bool mStarted = false;
+    StrokeSample mLast;
+    double mToNext = 0.0;  // arc length from mLast to the next stamp
+    openvdb::Vec3d mLastStamp{0.0};
+};
+
+/// Every stamp of a finished stroke: its samples through a StrokeStepper.
 std::vector<BrushStamp> strokeStamps(const Stroke& stroke);
 
 }  // namespace sculpt

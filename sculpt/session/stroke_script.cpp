@@ -109,15 +109,56 @@ ScriptEvent parseEvent(const json& j, const std::string& where, const std::files
     if (j.contains("action")) {
         onlyFields(j, {"action"}, where);
         const std::string action = textOr(j, "action", "", where);
-        if (action == "undo") return {ScriptEvent::Kind::Undo, {}};
-        if (action == "redo") return {ScriptEvent::Kind::Redo, {}};
+        if (action == "undo") return {ScriptEvent::Kind::Undo, {}, {}};
+        if (action == "redo") return {ScriptEvent::Kind::Redo, {}, {}};
         throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\" or \"redo\")");
     }
     field(j, "tool", where);
-    return {ScriptEvent::Kind::Stroke, parseStroke(j, where, baseDir)};
+    ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, baseDir), {}};
+    if (j.contains("primitives") && j["primitives"].is_object()) event.primitivesScene = j["primitives"].dump();
+    return event;
+}
+
+json vec3Json(const openvdb::Vec3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json strokeJson(const ScriptEvent& event)
+{
+    const Stroke& stroke = event.stroke;
+    json j = {{"tool", brushToolName(stroke.brush.tool)},
+              {"radius", stroke.brush.radiusWorld},
+              {"strength", stroke.brush.strength},
+              {"falloff", falloffName(stroke.brush.falloff)},
+              {"spacing", stroke.spacing}};
+    if (stroke.brush.keepVolume) j["keep_volume"] = true;
+    json symmetry = json::array();
+    if (stroke.symmetry.x) symmetry.push_back("x");
+    if (stroke.symmetry.y) symmetry.push_back("y");
+    if (stroke.symmetry.z) symmetry.push_back("z");
+    if (!symmetry.empty()) j["symmetry"] = symmetry;
+    if (stroke.brush.tool == BrushTool::Primitive) j["primitives"] = json::parse(event.primitivesScene);
+    json samples = json::array();
+    for (const StrokeSample& s : stroke.samples) {
+        samples.push_back(
+            {{"position", vec3Json(s.positionWorld)}, {"pressure", s.pressure}, {"view", vec3Json(s.viewDirection)}});
+    }
+    j["samples"] = std::move(samples);
+    return j;
 }
 
 }  // namespace
+
+std::string writeStrokeScript(const StrokeScript& script)
+{
+    json events = json::array();
+    for (const ScriptEvent& event : script.events) {
+        switch (event.kind) {
+        case ScriptEvent::Kind::Stroke: events.push_back(strokeJson(event)); break;
+        case ScriptEvent::Kind::Undo: events.push_back({{"action", "undo"}}); break;
+        case ScriptEvent::Kind::Redo: events.push_back({{"action", "redo"}}); break;
+        }
+    }
+    return json{{"format", kFormat}, {"version", kVersion}, {"events", std::move(events)}}.dump(1) + "\n";
+}
 
 StrokeScript parseStrokeScript(const std::string& text, const std::string& source, const std::filesystem::path& baseDir)
 {

@@ -23,6 +23,8 @@ struct ScriptEvent {
     enum class Kind { Stroke, Undo, Redo };
     Kind kind = Kind::Stroke;
     Stroke stroke;  ///< Kind::Stroke only
+    /// A primitive stroke's scene as JSON text, written inline by writeStrokeScript.
+    std::string primitivesScene;
 };
 
 struct StrokeScript {
@@ -36,6 +38,9 @@ StrokeScript parseStrokeScript(const std::string& text, const std::string& sourc
                                const std::filesystem::path& baseDir);
 /// Reads and parses a script file. @throws InputError as parseStrokeScript, or if unreadable.
 StrokeScript readStrokeScript(const std::filesystem::path& path);
+
+/// The script as JSON text that parseStrokeScript reads back to the same events, numbers exactly.
+std::string writeStrokeScript(const StrokeScript& script);
 
 /// What a replay did.
 struct ReplayReport {

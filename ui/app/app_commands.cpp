@@ -1,0 +1,197 @@
+#include "core/base/errors.h"
+#include "core/io/vdb_file.h"
+#include "ui/app/sculpt_app.h"
+
+#include <iostream>
+
+namespace sculpt::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+void toggle(bool& flag) { flag = !flag; }
+
+}  // namespace
+
+void SculptApp::execute(Command command)
+{
+    if (mStroke.active()) return;  // nothing interrupts a stroke
+    const auto tool = [this](BrushTool t) { mBrush.tool = t; };
+    switch (command) {
+    case Command::ToolAdd: tool(BrushTool::Add); break;
+    case Command::ToolCarve: tool(BrushTool::Carve); break;
+    case Command::ToolInflate: tool(BrushTool::Inflate); break;
+    case Command::ToolDeflate: tool(BrushTool::Deflate); break;
+    case Command::ToolSmooth: tool(BrushTool::Smooth); break;
+    case Command::ToolFlatten: tool(BrushTool::Flatten); break;
+    case Command::ToolGrab: tool(BrushTool::Grab); break;
+    case Command::ToolPinch: tool(BrushTool::Pinch); break;
+    case Command::ToolPrimitive: tool(BrushTool::Primitive); break;
+    case Command::RadiusDrag:
+        mDrag = Drag::Radius, mDragStartX = mMouseX, mDragStartValue = mBrush.radius;
+        break;
+    case Command::StrengthDrag:
+        mDrag = Drag::Strength, mDragStartX = mMouseX, mDragStartValue = mBrush.strength;
+        break;
+    case Command::RadiusSmaller:
+        mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(), mBrush.radius * 0.8);
+        break;
+    case Command::RadiusLarger: mBrush.radius *= 1.25; break;
+    case Command::SymmetryX: toggle(mBrush.symmetry.x); break;
+    case Command::SymmetryY: toggle(mBrush.symmetry.y); break;
+    case Command::SymmetryZ: toggle(mBrush.symmetry.z); break;
+    case Command::Undo:
+        if (!mDocument->undo()) mDialogs.notice = "nothing to undo";
+        break;
+    case Command::Redo:
+        if (!mDocument->redo()) mDialogs.notice = "nothing to redo";
+        break;
+    case Command::New:
+        if (guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::New;
+        break;
+    case Command::Open:
+        if (guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
+        break;
+    case Command::Save:
+        if (mDocument->path().empty()) execute(Command::SaveAs);
+        else saveTo(mDocument->path());
+        break;
+    case Command::SaveAs:
+        mDialogs.prompt = Dialogs::Prompt::SaveAs, mDialogs.path = mDocument->path().string(), mDialogs.focusField = true;
+        break;
+    case Command::ExportMesh:
+        mDialogs.prompt = Dialogs::Prompt::ExportMesh, mDialogs.focusField = true;
+        mDialogs.path = mDocument->path().empty() ? "sculpt.ply" : fs::path(mDocument->path()).replace_extension(".ply").string();
+        break;
+    case Command::SaveStrokes:
+        mDialogs.prompt = Dialogs::Prompt::SaveStrokes, mDialogs.focusField = true;
+        mDialogs.path = mDocument->path().empty() ? "strokes.json" : fs::path(mDocument->path()).replace_extension(".strokes.json").string();
+        break;
+    case Command::Quit:
+        if (guardUnsaved(command)) mQuit = true;
+        break;
+    case Command::FrameModel: frameModel(); break;
+    case Command::ViewFront: mCamera.axisView(AxisView::Front); break;
+    case Command::ViewBack: mCamera.axisView(AxisView::Back); break;
+    case Command::ViewRight: mCamera.axisView(AxisView::Right); break;
+    case Command::ViewLeft: mCamera.axisView(AxisView::Left); break;
+    case Command::ViewTop: mCamera.axisView(AxisView::Top); break;
+    case Command::ViewBottom: mCamera.axisView(AxisView::Bottom); break;
+    case Command::OrbitLeft: mCamera.orbitDegrees(-15.0, 0.0); break;
+    case Command::OrbitRight: mCamera.orbitDegrees(15.0, 0.0); break;
+    case Command::OrbitUp: mCamera.orbitDegrees(0.0, -15.0); break;
+    case Command::OrbitDown: mCamera.orbitDegrees(0.0, 15.0); break;
+    case Command::ZoomIn: mCamera.zoom(1.25); break;
+    case Command::ZoomOut: mCamera.zoom(0.8); break;
+    case Command::NextShading: mLook.setShading(Shading((int(mLook.shading()) + 1) % 4)); break;
+    case Command::ToggleFlat: mLook.setFlat(!mLook.flat()); break;
+    case Command::ToggleWireframe: mLook.setWireframe(!mLook.wireframe()); break;
+    case Command::ToggleTrackball: toggle(mCamera.trackball); break;
+    case Command::ToggleHelp: toggle(mDialogs.help); break;
+    }
+    mHoverValid = false;
+}
+
+bool SculptApp::guardUnsaved(Command command)
+{
+    if (!mDocument->modified()) return true;
+    mDialogs.afterUnsaved = command;
+    return false;
+}
+
+void SculptApp::answerUnsaved(bool save, bool discard)
+{
+    const std::optional<Command> then = mDialogs.afterUnsaved;
+    mDialogs.afterUnsaved.reset();
+    if (!then || (!save && !discard)) return;  // cancelled
+    if (save) {
+        if (mDocument->path().empty()) {
+            execute(Command::SaveAs);  // the user names it, then repeats the command
+            return;
+        }
+        saveTo(mDocument->path());
+        if (mDocument->modified()) return;  // the save failed: the error is shown
+    }
+    if (*then == Command::Quit) mQuit = true;
+    else if (*then == Command::New) mDialogs.prompt = Dialogs::Prompt::New;
+    else if (*then == Command::Open) mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
+    if (discard) mAutosave.discard(mDocument->path());
+}
+
+void SculptApp::saveTo(const fs::path& path)
+{
+    try {
+        const fs::path previous = mDocument->path();
+        mDocument->saveAs(path);
+        mAutosave.discard(previous);
+        mAutosave.discard(path);
+        mRecent.add(path);
+        mDialogs.notice = "saved " + path.string();
+        std::cout << "sculpt-ui: " << mDialogs.notice << std::endl;
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+void SculptApp::openRecent(const fs::path& path)
+{
+    if (!guardUnsaved(Command::Open)) return;
+    mDialogs.path = path.string();
+    mDialogs.prompt = Dialogs::Prompt::Open;
+    confirmPrompt();
+}
+
+void SculptApp::confirmPrompt()
+{
+    const Dialogs::Prompt prompt = mDialogs.prompt;
+    const fs::path path = mDialogs.path;
+    mDialogs.prompt = Dialogs::Prompt::None;
+    try {
+        switch (prompt) {
+        case Dialogs::Prompt::New:
+            setDocument(std::make_unique<Document>(Document::create(mDialogs.newShape)), true);
+            mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
+            break;
+        case Dialogs::Prompt::Open:
+            setDocument(std::make_unique<Document>(Document::open(path)), true);  // the old one stays on failure
+            mRecent.add(path);
+            mDialogs.notice = "opened " + path.string();
+            break;
+        case Dialogs::Prompt::SaveAs: saveTo(path); break;
+        case Dialogs::Prompt::ExportMesh:
+            mDocument->exportMesh(path);
+            mDialogs.notice = "exported " + path.string();
+            break;
+        case Dialogs::Prompt::SaveStrokes:
+            mDocument->saveStrokes(path);
+            mDialogs.notice = "saved strokes to " + path.string();
+            break;
+        case Dialogs::Prompt::None: break;
+        }
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+void SculptApp::recover(bool accept)
+{
+    const std::optional<fs::path> file = mDialogs.recovery;
+    mDialogs.recovery.reset();
+    if (!file) return;
+    if (!accept) {
+        std::error_code ec;
+        fs::remove(*file, ec);
+        return;
+    }
+    try {
+        auto recovered = std::make_unique<Document>(readFieldImage(*file), mDocument->path());
+        recovered->markUnsaved();
+        setDocument(std::move(recovered), false);
+        mDialogs.notice = "recovered from " + file->string();
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+}  // namespace sculpt::ui

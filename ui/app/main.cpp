@@ -1,0 +1,79 @@
+/// sculpt-ui: the sculpting window. See --help and the README.
+
+#include "core/base/errors.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/window/app_window.h"
+
+#include <CLI/CLI.hpp>
+#include <vtkAutoInit.h>
+#include <vtkObject.h>
+
+#include <cstdlib>
+#include <iostream>
+
+// Without these VTK builds no OpenGL objects: every frame would be one solid colour.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+namespace {
+
+bool parseSize(const std::string& text, int& width, int& height)
+{
+    return std::sscanf(text.c_str(), "%dx%d", &width, &height) == 2 && width >= 64 && height >= 64 && width <= 8192 &&
+           height <= 8192;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    using namespace sculpt;
+    ui::AppOptions options;
+    options.stateDir = ui::Autosave::stateDirectory();
+    std::string size = "1280x800";
+    CLI::App cli("sculpt-ui: sculpt virtual clay. Opens FILE (a .vdb document), or a new clay ball.\n"
+                 "Left drag sculpts, middle/right drag orbits, wheel zooms; F1 lists every key.\n"
+                 "For tests and demos it replays recorded input (--play) without a person.");
+    cli.add_option("file", options.document, "the .vdb document to open (default: a new clay ball)");
+    cli.add_option("--play", options.play, "replay input events recorded with --record (data/ui-events.schema.json)")
+        ->check(CLI::ExistingFile);
+    cli.add_option("--record", options.record, "write every input event to this file at exit");
+    cli.add_option("--screenshot", options.screenshot,
+                   "write the composed window as PNG: alone, of the opening view; with --play or --strokes, at the end");
+    cli.add_option("--strokes", options.strokes, "replay a `sculpt apply` stroke script into the document, on screen")
+        ->check(CLI::ExistingFile);
+    cli.add_option("--save-as", options.saveAs, "after --play or --strokes, save the document here (.vdb)");
+    cli.add_option("--export", options.exportMesh, "after --play or --strokes, export the mesh here (.ply .obj .stl)");
+    cli.add_option("--stroke-log", options.strokeLog,
+                   "after --play or --strokes, save the session's strokes as a stroke script");
+    cli.add_option("--stay", options.stay, "keep the window open after a replay");
+    cli.add_option("--size", size, "window size, WIDTHxHEIGHT")->capture_default_str();
+    cli.add_option("--autosave-seconds", options.autosaveSeconds, "autosave interval while there are unsaved changes")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    cli.add_option("--state-dir", options.stateDir, "where recovery files and recent files live")->capture_default_str();
+    cli.add_option("--lod-triangles", options.lodTriangles,
+                   "above this many triangles, draw a coarser mesh while the camera moves")
+        ->capture_default_str();
+    CLI11_PARSE(cli, argc, argv);
+
+    int width = 0, height = 0;
+    if (!parseSize(size, width, height)) {
+        std::cerr << "sculpt-ui: --size " << size << ": expected WIDTHxHEIGHT, 64 to 8192 pixels each\n";
+        return 2;
+    }
+    vtkObject::GlobalWarningDisplayOff();  // VTK's own chatter; our errors are shown in the window
+    try {
+        ui::AppWindow window(width, height, "Sculpt");
+        ui::SculptApp app(window, options);
+        return app.run();
+    } catch (const InputError& e) {
+        std::cerr << "sculpt-ui: " << e.what() << "\n";
+        return 2;
+    } catch (const std::runtime_error& e) {
+        const char* display = std::getenv("DISPLAY");
+        std::cerr << "sculpt-ui: " << e.what()
+                  << ((display && *display) ? "" : " (DISPLAY is not set: run it under xvfb-run -a, see the README)")
+                  << "\n";
+        return 2;
+    }
+}

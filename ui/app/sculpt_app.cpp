@@ -1,0 +1,497 @@
+#include <vtk_glew.h>
+// VTK's GLEW before any other OpenGL header.
+#include "ui/app/sculpt_app.h"
+
+#include "core/base/errors.h"
+#include "core/base/text_format.h"
+#include "core/field/grid_checksum.h"
+#include "ui/input/imgui_input.h"
+#include "ui/panels/panels.h"
+#include "ui/window/app_window.h"
+
+#include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <nlohmann/json.hpp>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkPointData.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+
+namespace sculpt::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The coarse display stays on this long after the camera last moved.
+constexpr double kNavigationSettleSeconds = 0.25;
+constexpr double kWheelZoomStep = 1.15;
+
+std::size_t residentBytes()
+{
+    std::ifstream statm("/proc/self/statm");
+    std::size_t pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * std::size_t(sysconf(_SC_PAGESIZE));
+}
+
+std::unique_ptr<Document> openOrCreate(const fs::path& path)
+{
+    if (path.empty()) return std::make_unique<Document>(Document::create(NewShape{}));
+    return std::make_unique<Document>(Document::open(path));
+}
+
+nlohmann::json vec3Json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+const char* promptName(Dialogs::Prompt prompt)
+{
+    switch (prompt) {
+    case Dialogs::Prompt::New: return "new";
+    case Dialogs::Prompt::Open: return "open";
+    case Dialogs::Prompt::SaveAs: return "save-as";
+    case Dialogs::Prompt::ExportMesh: return "export";
+    case Dialogs::Prompt::SaveStrokes: return "save-strokes";
+    default: return "none";
+    }
+}
+
+}  // namespace
+
+SculptApp::SculptApp(AppWindow& window, AppOptions options)
+    : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
+      mDisplay(mViewport.renderer(), mLook), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
+      mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
+{
+    if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
+    setDocument(openOrCreate(mOptions.document), true);
+    mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
+    mDialogs.recovery = mAutosave.pending(mOptions.document);
+    if (!mOptions.document.empty()) mRecent.add(mOptions.document);
+
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // the same layout on every start (and in every test)
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 4.f;
+    ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
+    setUpImGuiKeys();
+    ImGui_ImplOpenGL3_Init("#version 150");
+    mWindow.setListener([this](const InputEvent& e) {
+        if (!mPlayer) handle(e);
+        else if (e.type == EventType::Resize) mViewport.resize(e.width, e.height);  // the replay's own resize
+    });
+}
+
+SculptApp::~SculptApp()
+{
+    mWindow.setListener({});
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui::DestroyContext();
+}
+
+void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
+{
+    mDocument = std::move(document);
+    mPicker.reset();
+    mStatistics = SurfaceStatistics();
+    mTopologyVersion = ~std::uint64_t(0);
+    mRemeshedAtSync = mDocument->session().remeshedBlocks();
+    mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
+    if (frameIt) frameModel();
+    mHoverValid = false;
+}
+
+void SculptApp::frameModel()
+{
+    openvdb::CoordBBox box;
+    const FieldImage& field = mDocument->session().field();
+    if (!field.grid().tree().evalLeafBoundingBox(box)) return;
+    const openvdb::BBoxd world = field.grid().transform().indexToWorld(box);
+    mCamera.frame({world.min().x(), world.min().y(), world.min().z()}, {world.max().x(), world.max().y(), world.max().z()});
+    mHoverValid = false;
+}
+
+std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
+{
+    if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
+    const SculptSession& session = mDocument->session();
+    return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
+}
+
+void SculptApp::showError(const std::string& message)
+{
+    mDialogs.error = message;
+    std::cerr << "sculpt-ui: " << message << "\n";
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input
+
+void SculptApp::handle(const InputEvent& event)
+{
+    if (!mOptions.record.empty() && event.type != EventType::Screenshot && event.type != EventType::Report) {
+        mRecording.push_back(event);
+    }
+    feedImGui(event);
+    switch (event.type) {
+    case EventType::Resize:
+        mWindow.resize(event.width, event.height);
+        mViewport.resize(event.width, event.height);
+        break;
+    case EventType::Quit: execute(Command::Quit); break;
+    case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
+    case EventType::Report: mPendingReports.emplace_back(event.text); break;
+    case EventType::Key: routeKey(event); break;
+    case EventType::Text: break;
+    default: routeMouse(event); break;
+    }
+}
+
+void SculptApp::routeMouse(const InputEvent& event)
+{
+    const double dx = event.x - mMouseX, dy = event.y - mMouseY;
+    if (event.type == EventType::MouseMove) {
+        mMouseX = event.x, mMouseY = event.y;
+        mHoverValid = false;
+    }
+    if (event.type == EventType::MouseButton) mMods = event.mods;
+    const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
+    const bool modal = mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
+                       !mDialogs.error.empty();
+    if (modal || (overPanel && event.type != EventType::MouseMove)) return;
+
+    if (event.type == EventType::Wheel) {
+        const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+        const Ray ray = mViewport.rayThrough(mMouseX, mMouseY);
+        const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
+        const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
+        mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
+        mLastNavigation = event.time;
+        mHoverValid = false;
+        return;
+    }
+    if (event.type == EventType::MouseButton) {
+        mButtons[event.button] = event.press;
+        if (!event.press) {
+            if (mDrag == Drag::Stroke && event.button == kLeftButton) {
+                mStroke.end(*mDocument);
+                mHoverValid = false;
+            }
+            if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
+            return;
+        }
+        if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
+            mDrag = Drag::None;  // a click keeps the new size
+            return;
+        }
+        const bool alt = event.mods & kAlt;
+        if (event.button == kLeftButton && !alt) {
+            const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
+            if (hit) {
+                try {
+                    mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(event.x, event.y),
+                                  event.time, event.x, event.y);
+                    mDrag = Drag::Stroke;
+                } catch (const InputError& e) {
+                    showError(e.what());
+                }
+                mHoverValid = false;
+                return;
+            }
+        }
+        // Navigation: middle (Blender), right (SculptGL), Alt+left (touchpads), left off the model.
+        mDrag = (event.mods & kShift) ? Drag::Pan : (event.mods & kControl) ? Drag::Zoom : Drag::Orbit;
+        return;
+    }
+    // A move.
+    switch (mDrag) {
+    case Drag::Stroke: {
+        const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
+        try {
+            mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
+        } catch (const InputError& e) {
+            showError(e.what());
+        }
+        break;
+    }
+    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = event.time; break;
+    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = event.time; break;
+    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = event.time; break;
+    case Drag::Radius:
+        mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
+                                 mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));
+        break;
+    case Drag::Strength: mBrush.strength = std::clamp(mDragStartValue + (event.x - mDragStartX) / 300.0, 0.01, 1.0); break;
+    case Drag::None: break;
+    }
+}
+
+void SculptApp::routeKey(const InputEvent& event)
+{
+    const int modifierBit = (event.key == 340 || event.key == 344) ? kShift   // GLFW_KEY_*_SHIFT
+                            : (event.key == 341 || event.key == 345) ? kControl
+                            : (event.key == 342 || event.key == 346) ? kAlt : 0;
+    if (modifierBit) {
+        mMods = event.press ? (mMods | modifierBit) : (mMods & ~modifierBit);
+        return;
+    }
+    mMods = event.mods;
+    if (!event.press) return;
+    const bool modal = mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
+                       !mDialogs.error.empty();
+    if (modal || ImGui::GetIO().WantTextInput) return;  // the dialog's own keys (panels)
+    if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
+        if (event.key == 256) {  // Escape: put the value back
+            (mDrag == Drag::Radius ? mBrush.radius : mBrush.strength) = mDragStartValue;
+        }
+        mDrag = Drag::None;
+        return;
+    }
+    Command command;
+    if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Frames
+
+void SculptApp::updateCursor()
+{
+    if (!mHoverValid) {
+        mHover = mDrag == Drag::None || mDrag == Drag::Stroke ? pickAt(mMouseX, mMouseY) : std::nullopt;
+        mHoverValid = true;
+    }
+    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse;
+    mCursor.setColour(effectiveTool(mBrush.tool, mMods) == BrushTool::Carve ? 1.0 : 1.0,
+                      mStroke.active() ? 0.75 : 1.0, mStroke.active() ? 0.45 : 1.0);
+    if (show) mCursor.place(true, mHover->position, mHover->normal, mBrush.radius, mBrush.symmetry);
+    else mCursor.place(false, {}, {}, 0.0, {});
+}
+
+void SculptApp::updateTitle()
+{
+    static std::string shown;
+    const std::string title = "Sculpt - " + mDocument->title();
+    if (title != shown) mWindow.setTitle(title);
+    shown = title;
+}
+
+void SculptApp::refreshStatus(bool topology)
+{
+    const SculptSession& session = mDocument->session();
+    mStatistics.update(*session.mesher());
+    mStatus.triangles = mStatistics.triangles();
+    mStatus.volume = mStatistics.volume();
+    mStatus.area = mStatistics.area();
+    mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
+    mStatus.blocks = mDisplay.blockCount();
+    mStatus.undoBytes = session.history().memoryBytes();
+    if (mFramesDrawn % 30 == 0) mStatus.memoryBytes = residentBytes();
+    if (topology && mTopologyVersion != session.mesher()->version()) {
+        mTopology = mStatistics.topology(*session.mesher());
+        mTopologyVersion = session.mesher()->version();
+    }
+    mStatus.euler = mTopology.euler;
+    mStatus.shells = mTopology.shells;
+}
+
+void SculptApp::frame()
+{
+    const double now = mWindow.time();
+    std::string autosaveError;
+    if (mAutosave.tick(*mDocument, now, mStroke.active(), autosaveError)) {
+        mDialogs.notice = "autosaved to " + mAutosave.recoveryFile(mDocument->path()).string();
+        std::cout << "sculpt-ui: " << mDialogs.notice << std::endl;
+    }
+    if (!autosaveError.empty()) mDialogs.notice = autosaveError;
+
+    const SculptSession& session = mDocument->session();
+    const std::size_t remeshed = session.remeshedBlocks();
+    mLastRemeshed += remeshed - mRemeshedAtSync;
+    mRemeshedAtSync = remeshed;
+    mDisplay.sync(*session.mesher(), session.field().voxelSize());
+    mStatus.blocksUploaded += mDisplay.lastUploads();
+    mStatus.blocksRemoved += mDisplay.lastRemovals();
+    mStatus.bytesUploaded += mDisplay.lastUploadBytes();
+    const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
+    mDisplay.setCoarse(moving && mStatistics.triangles() > mOptions.lodTriangles);
+    refreshStatus(!mStroke.active());
+    updateCursor();
+    openvdb::CoordBBox box;
+    session.field().grid().tree().evalLeafBoundingBox(box);
+    mPlanes.show(mBrush.symmetry, 0.6 * double(box.dim().asVec3d().length()) * session.field().voxelSize());
+    updateTitle();
+
+    mViewport.renderer()->ResetCameraClippingRange();
+    mViewport.render();
+    ImGui_ImplOpenGL3_NewFrame();
+    beginImGuiFrame(mViewport.width(), mViewport.height(), now - mLastFrame);
+    ImGui::NewFrame();
+    drawPanels();
+    ImGui::Render();
+    glViewport(0, 0, mViewport.width(), mViewport.height());
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    for (const fs::path& path : mPendingScreenshots) writeScreenshot(path);
+    for (const fs::path& path : mPendingReports) writeReport(path);
+    mPendingScreenshots.clear();
+    mPendingReports.clear();
+    mWindow.swapBuffers();
+
+    const double end = mWindow.time();
+    mFrameTimes.push_back(1000.0 * (end - now));
+    if (mFrameTimes.size() > 120) mFrameTimes.pop_front();
+    mStatus.frameMs = mFrameTimes.back();
+    mLastFrame = now;
+    ++mFramesDrawn;
+}
+
+void SculptApp::drawPanels()
+{
+    drawMainMenu(*this);
+    drawToolPanel(*this);
+    drawHistoryPanel(*this);
+    drawStatusBar(*this);
+    drawDialogs(*this);
+    if (mDialogs.help) drawHelpPanel(*this);
+    if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
+        // Off the model: the brush as a screen circle of its size at the model's depth.
+        const double pixels = mBrush.radius / std::max(1e-12, mViewport.pixelSizeAt(mCamera.focalPoint()));
+        ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mMouseX), float(mMouseY)), float(pixels),
+                                                  IM_COL32(255, 255, 255, 140), 48, 1.5f);
+    }
+    if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
+        ImGui::SetTooltip(mDrag == Drag::Radius ? "radius %.3g (move, click to keep, Esc to cancel)"
+                                                : "strength %.2f (move, click to keep, Esc to cancel)",
+                          mDrag == Drag::Radius ? mBrush.radius : mBrush.strength);
+    }
+}
+
+void SculptApp::writeScreenshot(const fs::path& path)
+{
+    const int w = mViewport.width(), h = mViewport.height();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, image->GetScalarPointer());  // bottom row first, as VTK
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(image);
+    writer->Write();
+    if (writer->GetErrorCode() != 0) showError(path.string() + ": cannot write the screenshot");
+    else std::cout << "sculpt-ui: screenshot " << path.string() << std::endl;
+}
+
+void SculptApp::writeReport(const fs::path& path)
+{
+    const SculptSession& session = mDocument->session();
+    nlohmann::json r;
+    r["frame"] = mFramesDrawn;
+    r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
+    r["volume"] = mStatus.volume;
+    r["area"] = mStatus.area;
+    r["triangles"] = mStatus.triangles;
+    r["euler"] = mStatus.euler;
+    r["shells"] = mStatus.shells;
+    r["blocks"] = mDisplay.blockCount();
+    r["uploaded"] = mStatus.blocksUploaded;  // since the previous report
+    r["removed"] = mStatus.blocksRemoved;
+    r["remeshed"] = mLastRemeshed;
+    r["bytes_uploaded"] = mStatus.bytesUploaded;
+    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
+    mLastRemeshed = 0;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    r["pick"] = hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
+                    : nlohmann::json{{"hit", false}};
+    r["modified"] = mDocument->modified();
+    r["title"] = mDocument->title();
+    r["path"] = mDocument->path().string();
+    r["undo"] = session.history().undoCount();
+    r["redo"] = session.history().redoCount();
+    r["recovery_offered"] = mDialogs.recovery.has_value();
+    r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
+    r["prompt"] = promptName(mDialogs.prompt);
+    r["error"] = mDialogs.error;
+    r["radius"] = mBrush.radius;
+    r["tool"] = brushToolName(mBrush.tool);
+    r["frame_ms"] = mStatus.frameMs;
+    std::ofstream out(path, std::ios::app);
+    out << r.dump() << "\n";
+    if (!out) showError(path.string() + ": cannot write the report");
+}
+
+// ---------------------------------------------------------------------------------------------
+// The loop
+
+void SculptApp::replayStrokes()
+{
+    const StrokeScript script = readStrokeScript(mOptions.strokes);
+    for (const ScriptEvent& event : script.events) {
+        if (event.kind == ScriptEvent::Kind::Undo) mDocument->undo();
+        else if (event.kind == ScriptEvent::Kind::Redo) mDocument->redo();
+        else {
+            Stroke settings = event.stroke;
+            settings.samples.clear();
+            mDocument->beginStroke(settings, event.primitivesScene);
+            for (const StrokeSample& sample : event.stroke.samples) mDocument->extendStroke(sample);
+            mDocument->endStroke();
+        }
+        frame();  // the sculpt grows on screen, one stroke per frame
+    }
+}
+
+void SculptApp::finishReplay()
+{
+    try {
+        if (!mOptions.saveAs.empty()) saveTo(mOptions.saveAs);
+        if (!mOptions.exportMesh.empty()) mDocument->exportMesh(mOptions.exportMesh);
+        if (!mOptions.strokeLog.empty()) mDocument->saveStrokes(mOptions.strokeLog);
+    } catch (const InputError& e) {
+        showError(e.what());
+        mExitStatus = 2;
+    }
+    if (!mOptions.screenshot.empty()) {
+        mPendingScreenshots.push_back(mOptions.screenshot);
+        frame();
+    }
+    if (!mOptions.stay) mQuit = true;
+}
+
+int SculptApp::run()
+{
+    frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here
+    std::cout << "sculpt-ui: first frame in " << formatNumber(std::round(mWindow.time() * 1000.0) / 1000.0) << " s" << std::endl;
+    if (!mOptions.strokes.empty()) replayStrokes();
+    const bool scripted = mPlayer || !mOptions.strokes.empty() || !mOptions.screenshot.empty();
+    if (!mPlayer && scripted) finishReplay();
+    mPlayStart = mWindow.time();
+    bool replayDone = false;
+    while (!mQuit) {
+        if (mPlayer && !mPlayer->finished()) {
+            for (const InputEvent& event : mPlayer->take(mWindow.time() - mPlayStart)) handle(event);
+            mWindow.pollEvents(0.0);
+        } else {
+            if (mPlayer && !replayDone) {
+                replayDone = true;
+                finishReplay();
+                if (mQuit) break;
+            }
+            const bool busy = mDrag != Drag::None || mWindow.time() - mLastFrame < 0.5;
+            mWindow.pollEvents(busy ? 0.0 : 0.1);
+        }
+        frame();
+    }
+    if (!mOptions.record.empty()) writeInputEvents(mRecording, mOptions.record.string());
+    mAutosave.discard(mDocument->path());  // a clean quit: nothing to recover
+    return mExitStatus;
+}
+
+}  // namespace sculpt::ui

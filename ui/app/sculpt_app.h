@@ -1,0 +1,157 @@
+#pragma once
+/// @file sculpt_app.h
+/// @brief sculpt-ui: the window a sculptor works in. Owns the document, the 3D view and the
+///        panels; every input, live or replayed, enters through handle().
+
+#include "core/mesh/surface_statistics.h"
+#include "ui/app/commands.h"
+#include "ui/document/autosave.h"
+#include "ui/document/document.h"
+#include "ui/document/recent_files.h"
+#include "ui/input/event_player.h"
+#include "ui/sculpting/stroke_controller.h"
+#include "ui/view/brush_cursor.h"
+#include "ui/view/camera_control.h"
+#include "ui/view/model_display.h"
+#include "ui/view/surface_look.h"
+#include "ui/view/symmetry_planes.h"
+#include "ui/view/viewport.h"
+
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace sculpt::ui {
+
+class AppWindow;
+
+struct AppOptions {
+    std::filesystem::path document;        ///< empty: the default clay ball
+    std::filesystem::path play, record;    ///< event recordings
+    std::filesystem::path screenshot;      ///< after the opening view, or after the replay
+    std::filesystem::path strokes;         ///< a stroke script to replay into the document
+    std::filesystem::path saveAs, exportMesh, strokeLog;  ///< written when the replay ends
+    std::filesystem::path stateDir;        ///< recovery files and recent files
+    double autosaveSeconds = Autosave::kDefaultIntervalSeconds;
+    std::size_t lodTriangles = 300000;     ///< coarse display while moving above this many
+    bool stay = false;                     ///< keep the window open after a replay
+};
+
+/// The figures of the status bar.
+struct StatusFigures {
+    double frameMs = 0.0;
+    std::size_t triangles = 0, activeVoxels = 0, blocks = 0, memoryBytes = 0, undoBytes = 0;
+    double volume = 0.0, area = 0.0;
+    long long euler = 0;
+    std::size_t shells = 0;
+    /// Since the last report: blocks uploaded and dropped by the display, bytes handed to VTK.
+    std::size_t blocksUploaded = 0, blocksRemoved = 0, bytesUploaded = 0;
+};
+
+/// The dialogs ImGui shows; at most one prompt at a time.
+struct Dialogs {
+    enum class Prompt { None, New, Open, SaveAs, ExportMesh, SaveStrokes };
+    Prompt prompt = Prompt::None;
+    std::string path;                       ///< the prompt's text field
+    NewShape newShape;
+    std::optional<Command> afterUnsaved;    ///< asking "save changes?" before this command
+    std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
+    std::string error;                      ///< shown until dismissed
+    std::string notice;                     ///< status line (saved, autosaved, ...)
+    bool help = false;
+    bool focusField = false;
+};
+
+class SculptApp {
+public:
+    SculptApp(AppWindow& window, AppOptions options);
+    ~SculptApp();
+
+    /// Runs until the user quits (or the replay ends). @return the exit status.
+    int run();
+    /// One input, live or replayed.
+    void handle(const InputEvent& event);
+    /// A command from a key, a menu or a button.
+    void execute(Command command);
+
+    Document& document() { return *mDocument; }
+    BrushOptions& brush() { return mBrush; }
+    SurfaceLook& look() { return mLook; }
+    CameraControl& camera() { return mCamera; }
+    Dialogs& dialogs() { return mDialogs; }
+    RecentFiles& recent() { return mRecent; }
+    const StatusFigures& status() const { return mStatus; }
+    bool strokeActive() const { return mStroke.active(); }
+
+    /// Dialog outcomes.
+    void confirmPrompt();
+    void recover(bool accept);
+    void answerUnsaved(bool save, bool discard);
+    void openRecent(const std::filesystem::path& path);
+
+private:
+    void frame();
+    void drawPanels();
+    void routeMouse(const InputEvent& event);
+    void routeKey(const InputEvent& event);
+    void updateCursor();
+    void updateTitle();
+    void refreshStatus(bool topology);
+    void setDocument(std::unique_ptr<Document> document, bool frameIt);
+    bool guardUnsaved(Command command);
+    void saveTo(const std::filesystem::path& path);
+    void showError(const std::string& message);
+    void writeScreenshot(const std::filesystem::path& path);
+    void writeReport(const std::filesystem::path& path);
+    void finishReplay();
+    void frameModel();
+    std::optional<SurfaceHit> pickAt(double x, double y);
+    void replayStrokes();
+
+    AppWindow& mWindow;
+    AppOptions mOptions;
+    Viewport mViewport;
+    SurfaceLook mLook;
+    ModelDisplay mDisplay;
+    BrushCursor mCursor;
+    SymmetryPlanes mPlanes;
+    CameraControl mCamera;
+    SurfacePicker mPicker;
+    Autosave mAutosave;
+    RecentFiles mRecent;
+    std::unique_ptr<Document> mDocument;
+    SurfaceStatistics mStatistics;
+    BrushOptions mBrush;
+    StrokeController mStroke;
+    Dialogs mDialogs;
+    StatusFigures mStatus;
+    std::unique_ptr<EventPlayer> mPlayer;
+    std::vector<InputEvent> mRecording;
+
+    // Pointer state.
+    double mMouseX = -1.0, mMouseY = -1.0;
+    int mMods = 0;
+    bool mButtons[3] = {false, false, false};
+    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength };
+    Drag mDrag = Drag::None;
+    double mDragStartX = 0.0, mDragStartValue = 0.0;
+    std::optional<SurfaceHit> mHover;
+    bool mHoverValid = false;
+    double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
+
+    // Frame bookkeeping.
+    bool mQuit = false;
+    int mExitStatus = 0;
+    double mLastFrame = 0.0, mPlayStart = -1.0;
+    std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
+    std::deque<double> mFrameTimes;
+    std::vector<std::filesystem::path> mPendingScreenshots, mPendingReports;
+    std::uint64_t mTopologyVersion = ~std::uint64_t(0);
+    SurfaceStatistics::Topology mTopology;
+    std::uint64_t mFramesDrawn = 0;
+};
+
+}  // namespace sculpt::ui

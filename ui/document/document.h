@@ -1,0 +1,73 @@
+#pragma once
+/// @file document.h
+/// @brief The open document: the sculpt session (field, live mesh, undo), where it is saved,
+///        whether it has unsaved changes, and the log of its edits as a stroke script.
+
+#include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/stroke_script.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace sculpt::ui {
+
+/// File > New: a starting shape centred at the origin.
+struct NewShape {
+    int shape = 0;           ///< 0 sphere, 1 box, 2 torus
+    double size = 50.0;      ///< sphere radius, box half side, torus major radius
+    double voxelSize = 0.5;  ///< world units
+};
+inline constexpr const char* kShapeNames[] = {"sphere", "box", "torus"};
+
+class Document {
+public:
+    /// A document of `field`, saved at `path` (empty: untitled).
+    explicit Document(FieldImage field, std::filesystem::path path = {});
+
+    /// @throws InputError naming the setting (sizes not positive, too many voxels).
+    static Document create(const NewShape& shape);
+    /// @throws InputError naming the file and what is wrong with it.
+    static Document open(const std::filesystem::path& path);
+
+    /// Writes to path() (atomically). @throws InputError naming the file.
+    void save();
+    void saveAs(const std::filesystem::path& path);
+    /// Writes the welded mesh (.ply, .obj, .stl). @throws InputError naming the file.
+    void exportMesh(const std::filesystem::path& path) const;
+    /// Writes every edit since the document was opened as a `sculpt apply` stroke script.
+    void saveStrokes(const std::filesystem::path& path) const;
+
+    SculptSession& session() { return mSession; }
+    const SculptSession& session() const { return mSession; }
+    const std::filesystem::path& path() const { return mPath; }
+    /// "face.vdb" or "untitled", with " *" when modified.
+    std::string title() const;
+    bool modified() const { return mState != mSavedState; }
+    /// A recovered document differs from its file until saved.
+    void markUnsaved() { mSavedState = ~std::uint64_t(0); }
+    /// Changes on every edit, undo and redo: what autosave watches.
+    std::uint64_t revision() const { return mRevision; }
+
+    /// Live strokes (see SculptSession); `primitivesScene` is a primitive stroke's scene JSON.
+    void beginStroke(const Stroke& settings, std::string primitivesScene = {});
+    SculptSession::StrokeReport extendStroke(const StrokeSample& sample);
+    void endStroke();
+    bool undo();
+    bool redo();
+
+    /// Labels of the strokes that can be undone (oldest first) and redone (next first).
+    const std::vector<std::string>& undoLabels() const { return mUndoLabels; }
+    const std::vector<std::string>& redoLabels() const { return mRedoLabels; }
+
+private:
+    SculptSession mSession;
+    std::filesystem::path mPath;
+    StrokeScript mLog;
+    std::string mPendingScene;
+    std::vector<std::string> mUndoLabels, mRedoLabels;
+    std::vector<std::uint64_t> mUndoStates, mRedoStates;
+    std::uint64_t mState = 0, mSavedState = 0, mNextState = 1, mRevision = 0;
+};
+
+}  // namespace sculpt::ui

@@ -1,0 +1,113 @@
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr ImGuiWindowFlags kDialogFlags =
+    ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings;
+
+bool beginDialog(const char* title)
+{
+    const ImVec2 centre(ImGui::GetIO().DisplaySize.x * 0.5f, ImGui::GetIO().DisplaySize.y * 0.4f);
+    ImGui::SetNextWindowPos(centre, ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowFocus();
+    return ImGui::Begin(title, nullptr, kDialogFlags);
+}
+
+bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
+
+void errorDialog(SculptApp& app)
+{
+    beginDialog("Error");
+    ImGui::PushTextWrapPos(520.f);
+    ImGui::TextUnformatted(app.dialogs().error.c_str());
+    ImGui::PopTextWrapPos();
+    if (ImGui::Button("OK (Enter)") || pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_ESCAPE)) app.dialogs().error.clear();
+    ImGui::End();
+}
+
+void recoveryDialog(SculptApp& app)
+{
+    beginDialog("Recover unsaved work?");
+    ImGui::Text("Sculpt did not close cleanly. An autosave newer than the document exists:");
+    ImGui::TextDisabled("%s", app.dialogs().recovery->string().c_str());
+    if (ImGui::Button("Recover (R)") || pressed(GLFW_KEY_R)) app.recover(true);
+    else {
+        ImGui::SameLine();
+        if (ImGui::Button("Discard (D)") || pressed(GLFW_KEY_D)) app.recover(false);
+    }
+    ImGui::End();
+}
+
+void unsavedDialog(SculptApp& app)
+{
+    beginDialog("Unsaved changes");
+    ImGui::Text("%s has unsaved changes. Save them first?", app.document().title().c_str());
+    const bool save = ImGui::Button("Save (S)") || pressed(GLFW_KEY_S);
+    ImGui::SameLine();
+    const bool discard = ImGui::Button("Discard (D)") || pressed(GLFW_KEY_D);
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (save || discard || cancel) app.answerUnsaved(save, discard && !save);
+}
+
+void newDialog(SculptApp& app)
+{
+    Dialogs& d = app.dialogs();
+    beginDialog("New document");
+    ImGui::Combo("shape", &d.newShape.shape, kShapeNames, int(std::size(kShapeNames)));
+    ImGui::InputDouble("size", &d.newShape.size, 1.0, 10.0, "%.3g");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Sphere radius, box half side or torus major radius (world units)");
+    ImGui::InputDouble("voxel size", &d.newShape.voxelSize, 0.05, 0.5, "%.3g");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Smaller is finer and costs more memory");
+    if (ImGui::Button("Create (Enter)") || pressed(GLFW_KEY_ENTER)) app.confirmPrompt();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE)) d.prompt = Dialogs::Prompt::None;
+    ImGui::End();
+}
+
+void pathDialog(SculptApp& app, const char* title, const char* hint)
+{
+    Dialogs& d = app.dialogs();
+    beginDialog(title);
+    ImGui::TextDisabled("%s", hint);
+    char buffer[4096];
+    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
+    if (d.focusField) ImGui::SetKeyboardFocusHere();
+    d.focusField = false;
+    ImGui::SetNextItemWidth(480.f);
+    const bool entered = ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+    d.path = buffer;
+    const bool ok = ImGui::Button("OK (Enter)") || entered;
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (ok && !d.path.empty()) app.confirmPrompt();
+    else if (cancel) d.prompt = Dialogs::Prompt::None;
+}
+
+}  // namespace
+
+void drawDialogs(SculptApp& app)
+{
+    Dialogs& d = app.dialogs();
+    if (!d.error.empty()) return errorDialog(app);
+    if (d.recovery) return recoveryDialog(app);
+    if (d.afterUnsaved) return unsavedDialog(app);
+    switch (d.prompt) {
+    case Dialogs::Prompt::New: return newDialog(app);
+    case Dialogs::Prompt::Open: return pathDialog(app, "Open", "A .vdb document (path, then Enter)");
+    case Dialogs::Prompt::SaveAs: return pathDialog(app, "Save As", "A .vdb file to write");
+    case Dialogs::Prompt::ExportMesh: return pathDialog(app, "Export Mesh", "A .ply, .obj or .stl file to write");
+    case Dialogs::Prompt::SaveStrokes: return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
+    case Dialogs::Prompt::None: return;
+    }
+}
+
+}  // namespace sculpt::ui

@@ -1,0 +1,59 @@
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr const char* kMouse[][2] = {
+    {"Left drag on the model", "sculpt with the current tool"},
+    {"Ctrl + left drag", "inverted tool (add/carve, inflate/deflate)"},
+    {"Shift + left drag", "smooth"},
+    {"Left drag off the model", "orbit"},
+    {"Middle or right drag", "orbit"},
+    {"Shift + middle/right drag", "pan"},
+    {"Ctrl + middle/right drag", "zoom"},
+    {"Alt + left drag", "orbit (touchpad); with Shift pan, with Ctrl zoom"},
+    {"Wheel", "zoom towards the cursor"},
+};
+
+}  // namespace
+
+void drawHelpPanel(SculptApp& app)
+{
+    ImGui::SetNextWindowSize(ImVec2(520, 560), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(260, 40), ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Help", &app.dialogs().help)) return ImGui::End();
+    ImGui::TextUnformatted("Mouse");
+    if (ImGui::BeginTable("mouse", 2, ImGuiTableFlags_RowBg)) {
+        for (const auto& row : kMouse) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(row[0]);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(row[1]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::TextUnformatted("Keys");
+    if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg)) {
+        for (const CommandInfo& info : allCommands()) {
+            const std::string keys = shortcutText(info.command);
+            if (keys.empty()) continue;
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(keys.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(info.label);
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", info.help);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui

@@ -1,0 +1,35 @@
+#include "core/base/text_format.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+void drawHistoryPanel(SculptApp& app)
+{
+    const ImVec2 size(236, 260);
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - size.x - 8, 28), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+    ImGui::Begin("History", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    const Document& doc = app.document();
+    const UndoHistory& history = doc.session().history();
+    ImGui::Text("%zu undo, %zu redo, %s", history.undoCount(), history.redoCount(),
+                formatBytes(double(history.memoryBytes())).c_str());
+    if (history.droppedCount() > 0) ImGui::TextDisabled("%zu oldest forgotten (memory budget)", history.droppedCount());
+    if (ImGui::Button("Undo")) app.execute(Command::Undo);
+    commandTooltip(int(Command::Undo));
+    ImGui::SameLine();
+    if (ImGui::Button("Redo")) app.execute(Command::Redo);
+    commandTooltip(int(Command::Redo));
+    ImGui::Separator();
+    ImGui::BeginChild("strokes");
+    ImGui::TextDisabled("(opened)");
+    for (const std::string& label : doc.undoLabels()) ImGui::TextUnformatted(label.c_str());
+    for (const std::string& label : doc.redoLabels()) ImGui::TextDisabled("%s", label.c_str());
+    if (ImGui::GetScrollY() >= ImGui::GetScrollMaxY()) ImGui::SetScrollHereY(1.0f);
+    ImGui::EndChild();
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui

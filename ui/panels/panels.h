@@ -1,0 +1,22 @@
+#pragma once
+/// @file panels.h
+/// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,
+///        the history, the status bar, the dialogs and the help.
+
+namespace sculpt::ui {
+
+class SculptApp;
+
+void drawMainMenu(SculptApp& app);
+void drawToolPanel(SculptApp& app);
+void drawHistoryPanel(SculptApp& app);
+void drawStatusBar(SculptApp& app);
+void drawDialogs(SculptApp& app);
+void drawHelpPanel(SculptApp& app);
+
+/// A menu item running `command`, its keys shown beside it.
+void commandMenuItem(SculptApp& app, int command, bool enabled = true);
+/// The tooltip of the last item: what `command` does and its keys.
+void commandTooltip(int command);
+
+}  // namespace sculpt::ui

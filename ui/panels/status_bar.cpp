@@ -1,0 +1,32 @@
+#include "core/base/text_format.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+void drawStatusBar(SculptApp& app)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    const float height = ImGui::GetFrameHeight() + 6.f;
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height), ImGuiCond_Always);
+    ImGui::Begin("Status", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoBringToFrontOnFocus);
+    const StatusFigures& s = app.status();
+    const std::string& units = app.document().session().field().units();
+    ImGui::Text("%.0f ms | %s tris | %s voxels | mem %s | undo %s | volume %s %s3 | area %s %s2 | Euler %lld | shells %zu",
+                s.frameMs, formatNumber(double(s.triangles)).c_str(), formatNumber(double(s.activeVoxels)).c_str(),
+                formatBytes(double(s.memoryBytes)).c_str(), formatBytes(double(s.undoBytes)).c_str(),
+                formatNumber(s.volume).c_str(), units.c_str(), formatNumber(s.area).c_str(), units.c_str(), s.euler,
+                s.shells);
+    if (!app.dialogs().notice.empty()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("| %s", app.dialogs().notice.c_str());
+    }
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui

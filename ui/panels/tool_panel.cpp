@@ -1,0 +1,75 @@
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+namespace {
+
+struct ToolButton {
+    BrushTool tool;
+    Command command;
+};
+
+constexpr ToolButton kTools[] = {
+    {BrushTool::Add, Command::ToolAdd},         {BrushTool::Carve, Command::ToolCarve},
+    {BrushTool::Inflate, Command::ToolInflate}, {BrushTool::Deflate, Command::ToolDeflate},
+    {BrushTool::Smooth, Command::ToolSmooth},   {BrushTool::Flatten, Command::ToolFlatten},
+    {BrushTool::Grab, Command::ToolGrab},       {BrushTool::Pinch, Command::ToolPinch},
+    {BrushTool::Primitive, Command::ToolPrimitive},
+};
+
+constexpr const char* kFalloffs[] = {"smooth", "sphere", "sharp", "constant"};
+
+void toolPalette(SculptApp& app)
+{
+    BrushOptions& b = app.brush();
+    for (int i = 0; i < int(std::size(kTools)); ++i) {
+        const bool current = b.tool == kTools[i].tool;
+        if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        if (ImGui::Button(commandInfo(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
+        if (current) ImGui::PopStyleColor();
+        commandTooltip(int(kTools[i].command));
+        if (i % 3 != 2) ImGui::SameLine();
+    }
+}
+
+}  // namespace
+
+void drawToolPanel(SculptApp& app)
+{
+    ImGui::SetNextWindowPos(ImVec2(8, 28), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(236, 0), ImGuiCond_Always);
+    ImGui::Begin("Brush", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    toolPalette(app);
+    BrushOptions& b = app.brush();
+    ImGui::PushItemWidth(130);
+    float radius = float(b.radius), strength = float(b.strength), spacing = float(b.spacing);
+    const float voxel = float(app.document().session().field().voxelSize());
+    if (ImGui::DragFloat("radius", &radius, 0.02f * radius, 0.5f * voxel, 400.f * voxel, "%.3g")) b.radius = radius;
+    commandTooltip(int(Command::RadiusDrag));
+    if (ImGui::SliderFloat("strength", &strength, 0.01f, 1.f, "%.2f")) b.strength = strength;
+    commandTooltip(int(Command::StrengthDrag));
+    int falloff = int(b.falloff);
+    if (ImGui::Combo("falloff", &falloff, kFalloffs, int(std::size(kFalloffs)))) b.falloff = Falloff(falloff);
+    if (ImGui::SliderFloat("spacing", &spacing, 0.05f, 1.f, "%.2f r")) b.spacing = spacing;
+    ImGui::PopItemWidth();
+    ImGui::Text("mirror");
+    ImGui::SameLine();
+    ImGui::Checkbox("X", &b.symmetry.x);
+    commandTooltip(int(Command::SymmetryX));
+    ImGui::SameLine();
+    ImGui::Checkbox("Y", &b.symmetry.y);
+    commandTooltip(int(Command::SymmetryY));
+    ImGui::SameLine();
+    ImGui::Checkbox("Z", &b.symmetry.z);
+    commandTooltip(int(Command::SymmetryZ));
+    ImGui::Checkbox("pressure from speed", &b.pressureFromSpeed);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("A mouse has no pressure: faster strokes press lighter");
+    if (b.tool == BrushTool::Smooth) ImGui::Checkbox("keep volume", &b.keepVolume);
+    ImGui::TextDisabled("Ctrl inverts, Shift smooths");
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui

@@ -1,0 +1,32 @@
+#pragma once
+/// @file brush_options.h
+/// @brief The brush as the tool palette sets it, and what the held modifiers make of it.
+
+#include "core/brushes/brush.h"
+#include "sculpt/session/stroke.h"
+
+namespace sculpt::ui {
+
+struct BrushOptions {
+    BrushTool tool = BrushTool::Add;
+    double radius = 5.0;  ///< world units
+    double strength = 0.5;
+    Falloff falloff = Falloff::Smooth;
+    double spacing = 0.25;  ///< of the radius
+    Symmetry symmetry;
+    bool keepVolume = false;         ///< smooth
+    bool pressureFromSpeed = true;   ///< a mouse has no pressure: faster strokes press lighter
+};
+
+/// The tool a stroke uses: Shift smooths while held; Ctrl inverts add/carve, inflate/deflate
+/// and a primitive's union/difference (as in Blender's sculpt mode).
+BrushTool effectiveTool(BrushTool tool, int mods);
+
+/// The stroke settings (no samples) for these options under these modifiers.
+Stroke strokeSettings(const BrushOptions& options, int mods);
+
+/// The scene JSON of the primitive stamp: one soft blob about the brush's size; a difference
+/// when Ctrl is held.
+std::string primitiveScene(const BrushOptions& options, int mods);
+
+}  // namespace sculpt::ui

@@ -1,0 +1,185 @@
+#include "ui/view/model_display.h"
+
+#include "ui/view/surface_look.h"
+
+#include <vtkActor.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkRenderer.h>
+
+#include <cmath>
+#include <cstring>
+#include <unordered_map>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr double kCoarseCellVoxels = 3.0;
+
+vtkSmartPointer<vtkFloatArray> floatTriples(const std::vector<std::array<float, 3>>& values)
+{
+    auto array = vtkSmartPointer<vtkFloatArray>::New();
+    array->SetNumberOfComponents(3);
+    array->SetNumberOfTuples(vtkIdType(values.size()));
+    if (!values.empty()) std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(values[0]));
+    return array;
+}
+
+vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh)
+{
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetData(floatTriples(mesh.positions));
+    auto normals = floatTriples(mesh.normals);
+    normals->SetName("Normals");
+    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
+    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+    offsets->SetNumberOfValues(vtkIdType(mesh.triangles.size() + 1));
+    connectivity->SetNumberOfValues(vtkIdType(mesh.triangles.size() * 3));
+    for (vtkIdType t = 0; t < vtkIdType(mesh.triangles.size()); ++t) {
+        offsets->SetValue(t, 3 * t);
+        for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * t + k, mesh.triangles[size_t(t)][size_t(k)]);
+    }
+    offsets->SetValue(vtkIdType(mesh.triangles.size()), vtkIdType(3 * mesh.triangles.size()));
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->SetData(offsets, connectivity);
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->GetPointData()->SetNormals(normals);
+    poly->SetPolys(cells);
+    return poly;
+}
+
+vtkSmartPointer<vtkActor> actorOf(const BlockMesh& mesh, const SurfaceLook& look)
+{
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(polyDataOf(mesh));
+    mapper->ScalarVisibilityOff();
+    auto actor = vtkSmartPointer<vtkActor>::New();
+    actor->SetMapper(mapper);
+    look.apply(actor);
+    return actor;
+}
+
+std::size_t bytesOf(const BlockMesh& mesh)
+{
+    return mesh.positions.size() * 24 + mesh.triangles.size() * 3 * sizeof(vtkIdType);
+}
+
+}  // namespace
+
+struct ModelDisplay::Block {
+    vtkSmartPointer<vtkActor> full, coarse;
+    std::size_t coarseTriangles = 0;
+};
+
+ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look) : mRenderer(renderer), mLook(look) {}
+
+ModelDisplay::~ModelDisplay()
+{
+    while (!mBlocks.empty()) remove(mBlocks.begin()->first);
+}
+
+void ModelDisplay::remove(const openvdb::Coord& origin)
+{
+    auto it = mBlocks.find(origin);
+    if (it == mBlocks.end()) return;
+    mRenderer->RemoveActor(it->second.full);
+    mRenderer->RemoveActor(it->second.coarse);
+    mCoarseTriangles -= it->second.coarseTriangles;
+    mBlocks.erase(it);
+}
+
+void ModelDisplay::upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize)
+{
+    remove(origin);
+    const BlockMesh coarse = clusterBlockMesh(mesh, kCoarseCellVoxels * voxelSize);
+    Block block{actorOf(mesh, mLook), actorOf(coarse, mLook), coarse.triangles.size()};
+    block.full->SetVisibility(!mCoarse);
+    block.coarse->SetVisibility(mCoarse);
+    mRenderer->AddActor(block.full);
+    mRenderer->AddActor(block.coarse);
+    mCoarseTriangles += block.coarseTriangles;
+    mLastBytes += bytesOf(mesh) + bytesOf(coarse);
+    mBlocks.emplace(origin, std::move(block));
+}
+
+void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
+{
+    mLastUploads = mLastRemovals = mLastBytes = 0;
+    IncrementalMesher::Changes changes;
+    if (&mesher != mSource) {
+        while (!mBlocks.empty()) remove(mBlocks.begin()->first);
+        for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
+        mSource = &mesher;
+    } else {
+        if (mesher.version() == mVersion) return;
+        changes = mesher.changesSince(mVersion);
+    }
+    mVersion = mesher.version();
+    for (const openvdb::Coord& origin : changes.removed) {
+        remove(origin);
+        ++mLastRemovals;
+    }
+    for (const openvdb::Coord& origin : changes.updated) {
+        upload(origin, mesher.blocks().at(origin), voxelSize);
+        ++mLastUploads;
+    }
+}
+
+void ModelDisplay::setCoarse(bool coarse)
+{
+    if (coarse == mCoarse) return;
+    mCoarse = coarse;
+    for (auto& [origin, block] : mBlocks) {
+        block.full->SetVisibility(!coarse);
+        block.coarse->SetVisibility(coarse);
+    }
+}
+
+BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld)
+{
+    BlockMesh out;
+    std::unordered_map<std::uint64_t, std::uint32_t> clusterOf;
+    std::vector<std::uint32_t> counts;
+    std::vector<std::uint32_t> remap(mesh.positions.size());
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const auto& p = mesh.positions[v];
+        std::uint64_t key = 0;
+        for (int a = 0; a < 3; ++a) key = key << 21 | (std::uint64_t(std::int64_t(std::floor(p[a] / cellWorld)) + (1 << 20)) & 0x1FFFFF);
+        auto [it, fresh] = clusterOf.try_emplace(key, std::uint32_t(out.positions.size()));
+        if (fresh) {
+            out.positions.push_back({0.f, 0.f, 0.f});
+            out.normals.push_back({0.f, 0.f, 0.f});
+            counts.push_back(0);
+        }
+        const std::uint32_t c = it->second;
+        for (int a = 0; a < 3; ++a) {
+            out.positions[c][a] += p[a];
+            out.normals[c][a] += mesh.normals[v][a];
+        }
+        ++counts[c];
+        remap[v] = c;
+    }
+    for (std::size_t c = 0; c < out.positions.size(); ++c) {
+        float length = 0.f;
+        for (int a = 0; a < 3; ++a) {
+            out.positions[c][a] /= float(counts[c]);
+            length += out.normals[c][a] * out.normals[c][a];
+        }
+        length = std::sqrt(length) > 0.f ? std::sqrt(length) : 1.f;
+        for (int a = 0; a < 3; ++a) out.normals[c][a] /= length;
+    }
+    for (const auto& t : mesh.triangles) {
+        const std::array<std::uint32_t, 3> r{remap[t[0]], remap[t[1]], remap[t[2]]};
+        if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) out.triangles.push_back(r);
+    }
+    return out;
+}
+
+}  // namespace sculpt::ui

@@ -1,0 +1,61 @@
+#pragma once
+/// @file model_display.h
+/// @brief The sculpt on screen: one VTK actor per mesher block, re-uploaded only when the
+///        mesher re-meshed that block, and a coarse twin of each block shown while the camera
+///        moves (the display's level of detail).
+///
+/// Every block actor shares the SurfaceLook's property and shader. vtkCompositePolyDataMapper2
+/// is not used: in VTK 9.1 it re-uploads every block when any block changes.
+
+#include "core/mesh/incremental_mesher.h"
+
+#include <vtkSmartPointer.h>
+
+#include <map>
+
+class vtkActor;
+class vtkRenderer;
+
+namespace sculpt::ui {
+
+class SurfaceLook;
+
+class ModelDisplay {
+public:
+    ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look);
+    ~ModelDisplay();
+
+    /// Uploads the blocks the mesher changed since the last sync (all of them for a new mesher).
+    /// `voxelSize` sizes the coarse twins' clusters.
+    void sync(const IncrementalMesher& mesher, double voxelSize);
+    /// Shows the coarse twins (true) or the full blocks.
+    void setCoarse(bool coarse);
+    bool coarse() const { return mCoarse; }
+
+    /// Of the last sync: blocks uploaded, blocks dropped, and the bytes handed to VTK.
+    std::size_t lastUploads() const { return mLastUploads; }
+    std::size_t lastRemovals() const { return mLastRemovals; }
+    std::size_t lastUploadBytes() const { return mLastBytes; }
+    std::size_t blockCount() const { return mBlocks.size(); }
+    std::size_t coarseTriangles() const { return mCoarseTriangles; }
+
+private:
+    struct Block;
+    void remove(const openvdb::Coord& origin);
+    void upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize);
+
+    vtkRenderer* mRenderer;
+    const SurfaceLook& mLook;
+    std::map<openvdb::Coord, Block> mBlocks;
+    const IncrementalMesher* mSource = nullptr;
+    std::uint64_t mVersion = 0;
+    bool mCoarse = false;
+    std::size_t mLastUploads = 0, mLastRemovals = 0, mLastBytes = 0, mCoarseTriangles = 0;
+};
+
+/// A block's mesh with its vertices merged into clusters of `cellWorld` (a cube grid fixed in
+/// world space, so neighbouring blocks cluster alike): about (cell / voxel)^2 times fewer
+/// triangles. Degenerate triangles are dropped.
+BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld);
+
+}  // namespace sculpt::ui

@@ -1,0 +1,95 @@
+#include "ui/view/surface_look.h"
+
+#include <vtkActor.h>
+#include <vtkProperty.h>
+#include <vtkShaderProperty.h>
+#include <vtkUniforms.h>
+
+namespace sculpt::ui {
+
+namespace {
+
+/// Soft key light from the upper left, wrapped diffuse (clay scatters), a rim from behind and a
+/// highlight of the given tightness: the look of the studio matcaps sculptors know.
+constexpr const char* kMatcapFunction = R"(
+//VTK::Light::Dec
+vec3 matcapColour(vec3 n)
+{
+  vec3 key = normalize(vec3(-0.45, 0.55, 0.70));
+  float wrap = clamp((dot(n, key) + matcapWrap) / (1.0 + matcapWrap), 0.0, 1.0);
+  vec3 colour = mix(matcapShadow, matcapBase, wrap * wrap * (3.0 - 2.0 * wrap));
+  vec3 halfway = normalize(key + vec3(0.0, 0.0, 1.0));
+  colour += matcapSpecular * pow(max(dot(n, halfway), 0.0), matcapGloss);
+  colour += matcapRim * pow(1.0 - max(n.z, 0.0), 3.0);
+  colour *= 0.85 + 0.15 * clamp(0.5 + 0.5 * n.y, 0.0, 1.0);
+  return colour;
+}
+)";
+
+constexpr const char* kMatcapImpl = R"(//VTK::Light::Impl
+  if (matcapOn == 1) gl_FragData[0] = vec4(matcapColour(normalize(normalVCVSOutput)), 1.0);
+)";
+
+struct Matcap {
+    float base[3], shadow[3], rim[3];
+    float specular, gloss, wrap;
+};
+
+Matcap matcapOf(Shading shading)
+{
+    switch (shading) {
+    case Shading::White: return {{0.92f, 0.92f, 0.90f}, {0.30f, 0.31f, 0.34f}, {0.18f, 0.18f, 0.20f}, 0.10f, 24.f, 0.30f};
+    case Shading::RedWax: return {{0.78f, 0.16f, 0.12f}, {0.20f, 0.03f, 0.03f}, {0.30f, 0.10f, 0.08f}, 0.45f, 60.f, 0.55f};
+    default: return {{0.80f, 0.62f, 0.48f}, {0.26f, 0.17f, 0.13f}, {0.16f, 0.13f, 0.12f}, 0.06f, 12.f, 0.40f};
+    }
+}
+
+}  // namespace
+
+SurfaceLook::SurfaceLook()
+{
+    mProperty = vtkSmartPointer<vtkProperty>::New();
+    mProperty->SetColor(0.80, 0.66, 0.55);
+    mProperty->SetSpecular(0.15);
+    mProperty->SetSpecularPower(20.0);
+    mProperty->SetEdgeColor(0.1, 0.1, 0.12);
+    mShader = vtkSmartPointer<vtkShaderProperty>::New();
+    mShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kMatcapFunction, false);
+    mShader->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kMatcapImpl, false);
+    setShading(Shading::Clay);
+}
+
+void SurfaceLook::setShading(Shading shading)
+{
+    mShading = shading;
+    const Matcap m = matcapOf(shading);
+    vtkUniforms* u = mShader->GetFragmentCustomUniforms();
+    u->SetUniformi("matcapOn", shading == Shading::Lit ? 0 : 1);
+    u->SetUniform3f("matcapBase", m.base);
+    u->SetUniform3f("matcapShadow", m.shadow);
+    u->SetUniform3f("matcapRim", m.rim);
+    u->SetUniformf("matcapSpecular", m.specular);
+    u->SetUniformf("matcapGloss", m.gloss);
+    u->SetUniformf("matcapWrap", m.wrap);
+}
+
+void SurfaceLook::setFlat(bool flat)
+{
+    mFlat = flat;
+    if (flat) mProperty->SetInterpolationToFlat();
+    else mProperty->SetInterpolationToGouraud();
+}
+
+void SurfaceLook::setWireframe(bool wireframe)
+{
+    mWireframe = wireframe;
+    mProperty->SetEdgeVisibility(wireframe);
+}
+
+void SurfaceLook::apply(vtkActor* actor) const
+{
+    actor->SetProperty(mProperty);
+    actor->SetShaderProperty(mShader);
+}
+
+}  // namespace sculpt::ui

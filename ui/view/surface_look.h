@@ -1,0 +1,43 @@
+#pragma once
+/// @file surface_look.h
+/// @brief How the clay looks: matcaps (clay, white, red wax) or lit, smooth or flat, wireframe.
+///
+/// One vtkProperty and one vtkShaderProperty serve every block of the model: a change here is
+/// one shader rebuild, not one per block. A matcap is a colour per view-space normal; ours are
+/// evaluated in the fragment shader from a few parameters instead of sampled from an image, so
+/// there is no texture to ship and no seam at any zoom. Switching matcaps changes uniforms only.
+
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkProperty;
+class vtkShaderProperty;
+
+namespace sculpt::ui {
+
+enum class Shading { Clay, White, RedWax, Lit };
+inline constexpr const char* kShadingNames[] = {"Clay", "White", "Red wax", "Lit"};
+
+class SurfaceLook {
+public:
+    SurfaceLook();
+
+    void setShading(Shading shading);
+    Shading shading() const { return mShading; }
+    void setFlat(bool flat);
+    bool flat() const { return mFlat; }
+    void setWireframe(bool wireframe);
+    bool wireframe() const { return mWireframe; }
+
+    /// Gives an actor the shared look.
+    void apply(vtkActor* actor) const;
+
+private:
+    vtkSmartPointer<vtkProperty> mProperty;
+    vtkSmartPointer<vtkShaderProperty> mShader;
+    Shading mShading = Shading::Clay;
+    bool mFlat = false;
+    bool mWireframe = false;
+};
+
+}  // namespace sculpt::ui

@@ -1,0 +1,54 @@
+#pragma once
+/// @file viewport.h
+/// @brief The 3D view: a VTK renderer drawing into the window's current OpenGL context, its
+///        camera, and the maths between window pixels and world space (GLM).
+
+#include <glm/glm.hpp>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+class vtkCamera;
+class vtkGenericOpenGLRenderWindow;
+
+namespace sculpt::ui {
+
+/// A ray in world space.
+struct Ray {
+    glm::dvec3 origin{0.0};
+    glm::dvec3 direction{0.0, 0.0, -1.0};  ///< unit
+};
+
+class Viewport {
+public:
+    /// Needs the window's OpenGL context to be current.
+    Viewport(int width, int height);
+    ~Viewport();
+
+    void resize(int width, int height);
+    /// Draws the scene into the current framebuffer (the window's back buffer).
+    void render();
+
+    vtkRenderer* renderer() const { return mRenderer; }
+    /// A renderer layered over the scene, sharing its camera: what must never hide (the cursor).
+    vtkRenderer* overlay() const { return mOverlay; }
+    vtkCamera* camera() const;
+    int width() const { return mWidth; }
+    int height() const { return mHeight; }
+
+    /// The ray from the eye through window pixel (x, y) (origin top left).
+    Ray rayThrough(double x, double y) const;
+    /// Window pixel of a world point; z in [-1, 1] is its depth (NDC).
+    glm::dvec3 project(const glm::dvec3& world) const;
+    /// World length of one pixel at `world`'s depth.
+    double pixelSizeAt(const glm::dvec3& world) const;
+
+private:
+    glm::dmat4 worldToNdc() const;
+
+    vtkSmartPointer<vtkGenericOpenGLRenderWindow> mWindow;
+    vtkSmartPointer<vtkRenderer> mRenderer;
+    vtkSmartPointer<vtkRenderer> mOverlay;
+    int mWidth, mHeight;
+};
+
+}  // namespace sculpt::ui

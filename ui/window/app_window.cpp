@@ -1,0 +1,129 @@
+#include "ui/window/app_window.h"
+
+#include <GLFW/glfw3.h>
+
+#include <stdexcept>
+
+namespace sculpt::ui {
+
+namespace {
+
+AppWindow* owner(GLFWwindow* window) { return static_cast<AppWindow*>(glfwGetWindowUserPointer(window)); }
+
+std::string glfwError()
+{
+    const char* text = nullptr;
+    glfwGetError(&text);
+    return text ? text : "unknown reason";
+}
+
+}  // namespace
+
+AppWindow::AppWindow(int width, int height, const std::string& title)
+{
+    if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwError());
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 2);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SAMPLES, 0);  // VTK renders into its own framebuffer
+    mWindow = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!mWindow) {
+        const std::string why = glfwError();
+        glfwTerminate();
+        throw std::runtime_error("cannot open an OpenGL 3.2 window: " + why);
+    }
+    glfwMakeContextCurrent(mWindow);
+    glfwSwapInterval(1);
+    glfwSetWindowUserPointer(mWindow, this);
+    installCallbacks();
+}
+
+AppWindow::~AppWindow()
+{
+    glfwDestroyWindow(mWindow);
+    glfwTerminate();
+}
+
+void AppWindow::installCallbacks()
+{
+    glfwSetCursorPosCallback(mWindow, [](GLFWwindow* w, double x, double y) {
+        InputEvent e;
+        e.type = EventType::MouseMove;
+        e.x = x, e.y = y;
+        owner(w)->deliver(e);
+    });
+    glfwSetMouseButtonCallback(mWindow, [](GLFWwindow* w, int button, int action, int mods) {
+        if (button > kMiddleButton) return;
+        InputEvent e;
+        e.type = EventType::MouseButton;
+        e.button = button, e.press = action == GLFW_PRESS, e.mods = mods;
+        owner(w)->deliver(e);
+    });
+    glfwSetScrollCallback(mWindow, [](GLFWwindow* w, double dx, double dy) {
+        InputEvent e;
+        e.type = EventType::Wheel;
+        e.x = dx, e.y = dy;
+        owner(w)->deliver(e);
+    });
+    glfwSetKeyCallback(mWindow, [](GLFWwindow* w, int key, int, int action, int mods) {
+        if (action == GLFW_REPEAT || keyName(key).empty()) return;
+        InputEvent e;
+        e.type = EventType::Key;
+        e.key = key, e.press = action == GLFW_PRESS, e.mods = mods;
+        owner(w)->deliver(e);
+    });
+    glfwSetCharCallback(mWindow, [](GLFWwindow* w, unsigned codepoint) {
+        if (codepoint >= 0x80) return;  // the recordings are ASCII; ImGui's default font is too
+        InputEvent e;
+        e.type = EventType::Text;
+        e.text = std::string(1, char(codepoint));
+        owner(w)->deliver(e);
+    });
+    glfwSetFramebufferSizeCallback(mWindow, [](GLFWwindow* w, int width, int height) {
+        InputEvent e;
+        e.type = EventType::Resize;
+        e.width = width, e.height = height;
+        owner(w)->deliver(e);
+    });
+    glfwSetWindowCloseCallback(mWindow, [](GLFWwindow* w) {
+        glfwSetWindowShouldClose(w, GLFW_FALSE);  // the application decides (unsaved changes)
+        InputEvent e;
+        e.type = EventType::Quit;
+        owner(w)->deliver(e);
+    });
+}
+
+void AppWindow::deliver(InputEvent event)
+{
+    event.time = time();
+    if (mListener) mListener(event);
+}
+
+void AppWindow::pollEvents(double timeoutSeconds)
+{
+    if (timeoutSeconds > 0.0) glfwWaitEventsTimeout(timeoutSeconds);
+    else glfwPollEvents();
+}
+
+void AppWindow::swapBuffers() { glfwSwapBuffers(mWindow); }
+void AppWindow::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
+void AppWindow::resize(int width, int height) { glfwSetWindowSize(mWindow, width, height); }
+
+int AppWindow::width() const
+{
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(mWindow, &w, &h);
+    return w;
+}
+
+int AppWindow::height() const
+{
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(mWindow, &w, &h);
+    return h;
+}
+
+double AppWindow::time() const { return glfwGetTime(); }
+
+}  // namespace sculpt::ui

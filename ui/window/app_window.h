@@ -1,0 +1,47 @@
+#pragma once
+/// @file app_window.h
+/// @brief The GLFW window and its OpenGL 3.2 core context; turns GLFW callbacks into InputEvents.
+
+#include "ui/input/input_event.h"
+
+#include <functional>
+#include <string>
+
+struct GLFWwindow;
+
+namespace sculpt::ui {
+
+class AppWindow {
+public:
+    /// Opens a window of `width` x `height` pixels with a current OpenGL 3.2 core context.
+    /// @throws std::runtime_error saying why (no display, no OpenGL 3.2).
+    AppWindow(int width, int height, const std::string& title);
+    ~AppWindow();
+    AppWindow(const AppWindow&) = delete;
+    AppWindow& operator=(const AppWindow&) = delete;
+
+    /// Receives every live event (input, resize, close) as it arrives.
+    void setListener(std::function<void(const InputEvent&)> listener) { mListener = std::move(listener); }
+
+    /// Delivers pending events to the listener; waits up to `timeoutSeconds` for one (0: none).
+    void pollEvents(double timeoutSeconds);
+    void swapBuffers();
+    void setTitle(const std::string& title);
+    /// As a user resizing the window (a replayed resize).
+    void resize(int width, int height);
+
+    int width() const;
+    int height() const;
+    /// Seconds since the window opened.
+    double time() const;
+    GLFWwindow* handle() const { return mWindow; }
+
+private:
+    void deliver(InputEvent event);
+    void installCallbacks();
+
+    GLFWwindow* mWindow = nullptr;
+    std::function<void(const InputEvent&)> mListener;
+};
+
+}  // namespace sculpt::ui
