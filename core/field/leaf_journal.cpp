@@ -58,7 +58,12 @@ void LeafJournal::restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOr
     if (saved.leaf) {
         tree.addLeaf(new LeafT(*saved.leaf));
     } else if (saved.level >= 0) {
-        tree.addTile(openvdb::Index(saved.level), leafOrigin, saved.value, saved.active);
+        // A tile a split produced may already be back inside a coarser tile restored before it;
+        // adding it again would split that tile anew (and leave a node of background tiles).
+        const int depth = tree.getValueDepth(leafOrigin);
+        const bool covered = depth >= 0 && kLeafDepth - depth >= saved.level && !tree.probeConstLeaf(leafOrigin) &&
+                             tree.getValue(leafOrigin) == saved.value && tree.isValueOn(leafOrigin) == saved.active;
+        if (!covered) tree.addTile(openvdb::Index(saved.level), leafOrigin, saved.value, saved.active);
     } else {
         // Nothing was there: a background root tile, then erased like pruneLevelSet does.
         tree.addTile(openvdb::FloatTree::RootNodeType::LEVEL, leafOrigin, tree.background(), false);

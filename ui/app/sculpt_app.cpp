@@ -104,6 +104,7 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
     mStatistics = SurfaceStatistics();
     mTopologyVersion = ~std::uint64_t(0);
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
+    mReportVersion = mDocument->session().mesher()->version();
     mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
     if (frameIt) frameModel();
     mHoverValid = false;
@@ -194,11 +195,11 @@ void SculptApp::routeMouse(const InputEvent& event)
         }
         const bool alt = event.mods & kAlt;
         if (event.button == kLeftButton && !alt) {
-            const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
+            const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);  // a button event has no position
             if (hit) {
                 try {
-                    mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(event.x, event.y),
-                                  event.time, event.x, event.y);
+                    mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(mMouseX, mMouseY),
+                                  event.time, mMouseX, mMouseY);
                     mDrag = Drag::Stroke;
                 } catch (const InputError& e) {
                     showError(e.what());
@@ -404,7 +405,10 @@ void SculptApp::writeReport(const fs::path& path)
     r["blocks"] = mDisplay.blockCount();
     r["uploaded"] = mStatus.blocksUploaded;  // since the previous report
     r["removed"] = mStatus.blocksRemoved;
-    r["remeshed"] = mLastRemeshed;
+    r["remeshed"] = mLastRemeshed;  // blocks the mesher re-meshed, empty candidates included
+    const IncrementalMesher::Changes changes = session.mesher()->changesSince(mReportVersion);
+    r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
+    mReportVersion = session.mesher()->version();
     r["bytes_uploaded"] = mStatus.bytesUploaded;
     mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
     mLastRemeshed = 0;

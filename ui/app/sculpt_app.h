@@ -147,6 +147,7 @@ private:
     int mExitStatus = 0;
     double mLastFrame = 0.0, mPlayStart = -1.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
+    std::uint64_t mReportVersion = 0;
     std::deque<double> mFrameTimes;
     std::vector<std::filesystem::path> mPendingScreenshots, mPendingReports;
     std::uint64_t mTopologyVersion = ~std::uint64_t(0);

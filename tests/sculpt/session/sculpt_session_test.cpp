@@ -88,6 +88,65 @@ std::pair<double, int> mirrorAsymmetryX(const FieldImage& field)
     return {worst, states};
 }
 
+TEST(StrokeStamps, APrefixOfTheSamplesStampsAPrefixOfTheStamps)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> step(-1.5, 1.5);
+    Stroke stroke = strokeOf(BrushTool::Add, 2.0, {Vec3d(0.0)});
+    for (int i = 0; i < 60; ++i) stroke.samples.push_back({stroke.samples.back().positionWorld + Vec3d(step(rng), step(rng), step(rng)), 0.5 + 0.008 * i, Vec3d(0, 0, -1)});
+    stroke.symmetry.y = true;
+    const std::vector<BrushStamp> all = strokeStamps(stroke);
+    StrokeStepper live(stroke);
+    std::vector<BrushStamp> sofar;
+    for (const StrokeSample& sample : stroke.samples) {
+        for (const BrushStamp& s : live.add(sample)) sofar.push_back(s);
+        ASSERT_LE(sofar.size(), all.size());
+        for (size_t k = 0; k < sofar.size(); ++k) {
+            ASSERT_EQ(sofar[k].centreWorld, all[k].centreWorld);
+            ASSERT_EQ(sofar[k].previousWorld, all[k].previousWorld);
+            ASSERT_EQ(sofar[k].pressure, all[k].pressure);
+        }
+    }
+    for (const BrushStamp& s : live.finish()) sofar.push_back(s);
+    EXPECT_EQ(sofar.size(), all.size());
+    EXPECT_EQ(all[all.size() - 2].centreWorld, stroke.samples.back().positionWorld);  // then its mirror image
+}
+
+TEST(SculptSession, ALiveStrokeEqualsTheSameStrokeAppliedWholeAndUndoesBitForBit)
+{
+    const Stroke stroke = strokeOf(BrushTool::Add, 3.0, {Vec3d(-6, 18, 4), Vec3d(0, 21, 6), Vec3d(8, 19, 2)});
+    SculptSession whole(makeSphere(20.0, 0.5));
+    SculptSession live(makeSphere(20.0, 0.5), /*liveMesh=*/true);
+    const std::uint64_t before = checksumOf(live);
+    whole.applyStroke(stroke);
+    Stroke settings = stroke;
+    settings.samples.clear();
+    live.beginStroke(settings);
+    std::size_t stamps = 0;
+    for (const StrokeSample& sample : stroke.samples) stamps += live.extendStroke(sample).stamps;
+    EXPECT_GT(stamps, 0u);  // stamped as the samples arrived, before the end
+    const SculptSession::FinishedStroke done = live.endStroke();
+    EXPECT_EQ(done.stroke.samples.size(), stroke.samples.size());
+    EXPECT_EQ(checksumOf(live), checksumOf(whole));
+    EXPECT_GT(live.remeshedBlocks(), 0u);
+    ASSERT_TRUE(live.undo());
+    EXPECT_EQ(checksumOf(live), before);
+}
+
+TEST(SculptSession, ACancelledLiveStrokeLeavesTheDocumentAsItWas)
+{
+    SculptSession session(makeSphere(20.0, 0.5), true);
+    const std::uint64_t before = checksumOf(session);
+    Stroke settings = strokeOf(BrushTool::Carve, 3.0, {});
+    session.beginStroke(settings);
+    session.extendStroke({Vec3d(0, 20, 0), 1.0, Vec3d(0, -1, 0)});
+    ASSERT_NE(checksumOf(session), before);
+    EXPECT_THROW(session.extendStroke({Vec3d(0, 20, 0), 2.0, Vec3d(0, -1, 0)}), InputError);  // pressure > 1
+    session.cancelStroke();
+    EXPECT_EQ(checksumOf(session), before);
+    EXPECT_EQ(session.history().undoCount(), 0u);
+}
+
 TEST(SculptSession, StrokesWithXSymmetryKeepASymmetricModelSymmetric)
 {
     const double h = 0.5;
@@ -239,6 +298,37 @@ std::string parseError(const std::string& events)
         return e.what();
     }
     return "no error";
+}
+
+TEST(StrokeScript, AWrittenScriptReadsBackAndReplaysBitForBit)
+{
+    StrokeScript script;
+    Stroke add = strokeOf(BrushTool::Add, 2.5, {Vec3d(0.1, 20.3, 1.0 / 3.0), Vec3d(4.7, 19.1, 2.0 / 7.0)});
+    add.samples[1].pressure = 0.37;
+    add.symmetry.x = true;
+    script.events.push_back({ScriptEvent::Kind::Stroke, add, {}});
+    Stroke smooth = strokeOf(BrushTool::Smooth, 3.0, {Vec3d(0, 20, 0)});
+    smooth.brush.keepVolume = true;
+    script.events.push_back({ScriptEvent::Kind::Stroke, smooth, {}});
+    script.events.push_back({ScriptEvent::Kind::Undo, {}, {}});
+    const std::string scene = R"({"iso": 0.5, "operation": "union", "primitives": [{"kernel": "soft-object", "radius": 4, "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
+    Stroke blob = strokeOf(BrushTool::Primitive, 2.0, {Vec3d(0, 0, 20)});
+    blob.brush.primitive = parseStrokeScript(R"({"events": [{"tool": "primitive", "radius": 2, "primitives": )" + scene +
+                                                 R"(, "samples": [[0, 0, 20]]}]})", "inline", ".")
+                               .events[0].stroke.brush.primitive;
+    script.events.push_back({ScriptEvent::Kind::Stroke, blob, scene});
+
+    const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
+    ASSERT_EQ(back.events.size(), script.events.size());
+    EXPECT_EQ(back.events[0].stroke.samples[1].positionWorld, add.samples[1].positionWorld);
+    EXPECT_EQ(back.events[0].stroke.samples[1].pressure, 0.37);
+    EXPECT_TRUE(back.events[0].stroke.symmetry.x);
+    EXPECT_TRUE(back.events[1].stroke.brush.keepVolume);
+    EXPECT_EQ(back.events[2].kind, ScriptEvent::Kind::Undo);
+    SculptSession a(makeSphere(20.0, 0.5)), b(makeSphere(20.0, 0.5));
+    replayScript(a, script, "original");
+    replayScript(b, back, "written");
+    EXPECT_EQ(checksumOf(a), checksumOf(b));
 }
 
 TEST(StrokeScript, ErrorsNameTheEventAndTheField)
