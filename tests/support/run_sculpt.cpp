@@ -22,10 +22,15 @@ std::string slurp(const std::string& path)
 
 CommandResult runSculpt(const std::string& args, const std::string& workDir)
 {
+    return runCommand("'" SCULPT_EXECUTABLE "' " + args, workDir);
+}
+
+CommandResult runCommand(const std::string& command, const std::string& workDir)
+{
     const std::string outFile = workDir + "/.stdout", errFile = workDir + "/.stderr";
-    const std::string command = "cd '" + workDir + "' && '" SCULPT_EXECUTABLE "' " + args + " >'" + outFile + "' 2>'" +
-                                errFile + "' </dev/null";
-    const int status = std::system(command.c_str());
+    const std::string line =
+        "cd '" + workDir + "' && " + command + " >'" + outFile + "' 2>'" + errFile + "' </dev/null";
+    const int status = std::system(line.c_str());
     CommandResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
     result.out = slurp(outFile);

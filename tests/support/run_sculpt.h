@@ -15,4 +15,7 @@ struct CommandResult {
 /// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
 CommandResult runSculpt(const std::string& args, const std::string& workDir);
 
+/// Runs `COMMAND` (a shell command line, already shell-safe) in `workDir`.
+CommandResult runCommand(const std::string& command, const std::string& workDir);
+
 }  // namespace sculpt::test

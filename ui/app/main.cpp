@@ -45,7 +45,7 @@ int main(int argc, char** argv)
     cli.add_option("--export", options.exportMesh, "after --play or --strokes, export the mesh here (.ply .obj .stl)");
     cli.add_option("--stroke-log", options.strokeLog,
                    "after --play or --strokes, save the session's strokes as a stroke script");
-    cli.add_option("--stay", options.stay, "keep the window open after a replay");
+    cli.add_flag("--stay", options.stay, "keep the window open after a replay");
     cli.add_option("--size", size, "window size, WIDTHxHEIGHT")->capture_default_str();
     cli.add_option("--autosave-seconds", options.autosaveSeconds, "autosave interval while there are unsaved changes")
         ->check(CLI::PositiveNumber)

@@ -127,6 +127,12 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
     return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
 }
 
+bool SculptApp::modalOpen() const
+{
+    return mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
+           !mDialogs.error.empty();
+}
+
 void SculptApp::showError(const std::string& message)
 {
     mDialogs.error = message;
@@ -141,7 +147,8 @@ void SculptApp::handle(const InputEvent& event)
     if (!mOptions.record.empty() && event.type != EventType::Screenshot && event.type != EventType::Report) {
         mRecording.push_back(event);
     }
-    feedImGui(event);
+    if (event.type == EventType::Key) trackModifiers(event);
+    feedImGui(event, mHeldMods);
     switch (event.type) {
     case EventType::Resize:
         mWindow.resize(event.width, event.height);
@@ -163,11 +170,9 @@ void SculptApp::routeMouse(const InputEvent& event)
         mMouseX = event.x, mMouseY = event.y;
         mHoverValid = false;
     }
-    if (event.type == EventType::MouseButton) mMods = event.mods;
+    if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
     const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
-    const bool modal = mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
-                       !mDialogs.error.empty();
-    if (modal || (overPanel && event.type != EventType::MouseMove)) return;
+    if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
 
     if (event.type == EventType::Wheel) {
         const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
@@ -235,20 +240,21 @@ void SculptApp::routeMouse(const InputEvent& event)
     }
 }
 
+void SculptApp::trackModifiers(const InputEvent& event)
+{
+    const int bit = modifierOfKey(event.key);
+    if (bit) mHeldMods = event.press ? (mHeldMods | bit) : (mHeldMods & ~bit);
+    mMods = mHeldMods | (event.press ? event.mods : 0);
+}
+
 void SculptApp::routeKey(const InputEvent& event)
 {
-    const int modifierBit = (event.key == 340 || event.key == 344) ? kShift   // GLFW_KEY_*_SHIFT
-                            : (event.key == 341 || event.key == 345) ? kControl
-                            : (event.key == 342 || event.key == 346) ? kAlt : 0;
-    if (modifierBit) {
-        mMods = event.press ? (mMods | modifierBit) : (mMods & ~modifierBit);
-        return;
-    }
-    mMods = event.mods;
+    if (modifierOfKey(event.key)) return;
     if (!event.press) return;
-    const bool modal = mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
-                       !mDialogs.error.empty();
-    if (modal || ImGui::GetIO().WantTextInput) return;  // the dialog's own keys (panels)
+    // A dialog takes its own keys (panels), and so does a panel's field being edited. ImGui's
+    // WantTextInput lags a frame (it still claims keys for a prompt just closed): ask instead
+    // whether an item was active when the last frame ended.
+    if (modalOpen() || mItemActive) return;
     if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
         if (event.key == 256) {  // Escape: put the value back
             (mDrag == Drag::Radius ? mBrush.radius : mBrush.strength) = mDragStartValue;
@@ -336,6 +342,7 @@ void SculptApp::frame()
     beginImGuiFrame(mViewport.width(), mViewport.height(), now - mLastFrame);
     ImGui::NewFrame();
     drawPanels();
+    mItemActive = ImGui::IsAnyItemActive();
     ImGui::Render();
     glViewport(0, 0, mViewport.width(), mViewport.height());
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

@@ -97,6 +97,7 @@ private:
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
+    void trackModifiers(const InputEvent& event);
     void updateCursor();
     void updateTitle();
     void refreshStatus(bool topology);
@@ -104,6 +105,7 @@ private:
     bool guardUnsaved(Command command);
     void saveTo(const std::filesystem::path& path);
     void showError(const std::string& message);
+    bool modalOpen() const;
     void writeScreenshot(const std::filesystem::path& path);
     void writeReport(const std::filesystem::path& path);
     void finishReplay();
@@ -133,13 +135,15 @@ private:
 
     // Pointer state.
     double mMouseX = -1.0, mMouseY = -1.0;
-    int mMods = 0;
+    int mMods = 0;      // modifiers of the current input
+    int mHeldMods = 0;  // modifier keys held down
     bool mButtons[3] = {false, false, false};
     enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     std::optional<SurfaceHit> mHover;
     bool mHoverValid = false;
+    bool mItemActive = false;  // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
 
     // Frame bookkeeping.

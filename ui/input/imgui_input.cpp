@@ -20,7 +20,7 @@ void setUpImGuiKeys()
     for (const auto& [imgui, glfw] : keys) io.KeyMap[imgui] = glfw;
 }
 
-void feedImGui(const InputEvent& event)
+void feedImGui(const InputEvent& event, int heldMods)
 {
     ImGuiIO& io = ImGui::GetIO();
     switch (event.type) {
@@ -30,17 +30,14 @@ void feedImGui(const InputEvent& event)
         io.MouseWheelH += float(event.x);
         io.MouseWheel += float(event.y);
         break;
-    case EventType::Key:
+    case EventType::Key: {
         if (event.key >= 0 && event.key < int(IM_ARRAYSIZE(io.KeysDown))) io.KeysDown[event.key] = event.press;
-        if (event.key == GLFW_KEY_LEFT_CONTROL || event.key == GLFW_KEY_RIGHT_CONTROL) io.KeyCtrl = event.press;
-        else if (event.key == GLFW_KEY_LEFT_SHIFT || event.key == GLFW_KEY_RIGHT_SHIFT) io.KeyShift = event.press;
-        else if (event.key == GLFW_KEY_LEFT_ALT || event.key == GLFW_KEY_RIGHT_ALT) io.KeyAlt = event.press;
-        else {
-            io.KeyCtrl = event.mods & kControl;
-            io.KeyShift = event.mods & kShift;
-            io.KeyAlt = event.mods & kAlt;
-        }
+        const int mods = heldMods | (event.press ? event.mods : 0);
+        io.KeyCtrl = mods & kControl;
+        io.KeyShift = mods & kShift;
+        io.KeyAlt = mods & kAlt;
         break;
+    }
     case EventType::Text:
         for (unsigned char c : event.text) io.AddInputCharacter(c);
         break;

@@ -13,7 +13,9 @@ namespace sculpt::ui {
 
 /// Maps ImGui's navigation keys to GLFW key codes (ImGui 1.86 io.KeyMap).
 void setUpImGuiKeys();
-void feedImGui(const InputEvent& event);
+/// `heldMods`: the modifier keys held down (from their own key events). A key's own modifiers
+/// count while it is down; a replayed tap of Ctrl+S leaves no Ctrl held after it.
+void feedImGui(const InputEvent& event, int heldMods);
 /// Display size and time step for the coming frame.
 void beginImGuiFrame(int width, int height, double deltaSeconds);
 

@@ -182,6 +182,19 @@ json eventJson(const InputEvent& e)
 
 }  // namespace
 
+int modifierOfKey(int key)
+{
+    switch (key) {
+    case GLFW_KEY_LEFT_SHIFT:
+    case GLFW_KEY_RIGHT_SHIFT: return kShift;
+    case GLFW_KEY_LEFT_CONTROL:
+    case GLFW_KEY_RIGHT_CONTROL: return kControl;
+    case GLFW_KEY_LEFT_ALT:
+    case GLFW_KEY_RIGHT_ALT: return kAlt;
+    default: return 0;
+    }
+}
+
 std::string keyName(int key)
 {
     for (const auto& [code, name] : namedKeys()) {

@@ -46,6 +46,9 @@ std::vector<InputEvent> readInputEvents(const std::string& path);
 /// Writes a recording (atomically). @throws InputError naming the file.
 void writeInputEvents(const std::vector<InputEvent>& events, const std::string& path);
 
+/// The Modifier bit a modifier key (Left/Right Shift, Control, Alt) sets; 0 for other keys.
+int modifierOfKey(int key);
+
 /// "A", "Escape", "LeftBracket", "KP1", ... for a GLFW key code; "" if it has no name here.
 std::string keyName(int key);
 /// The GLFW key code of a name keyName gives; -1 if unknown.

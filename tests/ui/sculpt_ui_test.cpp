@@ -1,0 +1,262 @@
+// sculpt-ui end to end, under Xvfb with Mesa: every test replays recorded input (--play)
+// through the same code as live input and reads what the program reported and drew.
+
+#include "core/field/grid_checksum.h"
+#include "core/io/vdb_file.h"
+#include "tests/support/temp_dir.h"
+#include "tests/ui/ui_driver.h"
+
+#include <gtest/gtest.h>
+#include <vtkImageData.h>
+
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+namespace sculpt::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The default clay ball (radius 50 at the origin) seen at 1280x800 in the opening view.
+constexpr double kCentreX = 640, kCentreY = 400;
+
+std::string shellQuoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+/// Replays `events` on `document` (empty: the clay ball) with a private state directory.
+CommandResult play(const TempDir& dir, const UiEvents& events, const std::string& document = "",
+                   const std::string& extra = "")
+{
+    events.write(dir / "events.json");
+    return runUi((document.empty() ? "" : shellQuoted(document) + " ") + "--play " + shellQuoted(dir / "events.json") +
+                     " --state-dir " + shellQuoted(dir / "state") + " " + extra,
+                 dir.path().string());
+}
+
+std::string checksumOfFile(const fs::path& path) { return formatChecksum(gridChecksum(readFieldImage(path).grid())); }
+
+TEST(SculptUi, TheOpeningViewShowsTheClayBall)
+{
+    TempDir dir;
+    const CommandResult run = runUi("--screenshot " + shellQuoted(dir / "open.png") + " --state-dir " + shellQuoted(dir / "state"),
+                                    dir.path().string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    vtkSmartPointer<vtkImageData> image = readPng(dir / "open.png");
+    const int* d = image->GetDimensions();
+    ASSERT_EQ(d[0], 1280);
+    ASSERT_EQ(d[1], 800);
+    const auto* p = static_cast<const unsigned char*>(image->GetScalarPointer());
+    const int channels = image->GetNumberOfScalarComponents();
+    std::size_t clay = 0, first = 0;
+    const std::size_t pixels = std::size_t(d[0]) * std::size_t(d[1]);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const int r = p[i * channels], g = p[i * channels + 1], b = p[i * channels + 2];
+        if (r > g && g > b && r - b > 40) ++clay;  // warm clay, not the grey background or panels
+        if (r == p[0] && g == p[1] && b == p[2]) ++first;
+    }
+    EXPECT_LT(double(first) / double(pixels), 0.9) << "one colour";
+    // A ball of 330 pixels radius: pi 330^2 / (1280 x 800) = 33% of the frame.
+    EXPECT_GT(double(clay) / double(pixels), 0.2);
+    EXPECT_LT(double(clay) / double(pixels), 0.5);
+}
+
+TEST(SculptUi, TheCursorPicksTheSphereWithinHalfAVoxelAndNothingOffIt)
+{
+    TempDir dir;
+    UiEvents events;
+    for (const auto& [x, y] : {std::pair{kCentreX, kCentreY}, {560.0, 330.0}, {800.0, 520.0}, {900.0, 260.0}}) {
+        events.move(x, y).report(dir / "r.jsonl");
+    }
+    events.move(1150, 600).report(dir / "r.jsonl");  // beside the ball, under no panel
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(dir / "r.jsonl");
+    ASSERT_EQ(reports.size(), 5u);
+    for (int i = 0; i < 4; ++i) {
+        ASSERT_TRUE(reports[size_t(i)]["pick"]["hit"].get<bool>()) << i;
+        const auto& p = reports[size_t(i)]["pick"]["position"];
+        const double radius = std::sqrt(p[0].get<double>() * p[0].get<double>() + p[1].get<double>() * p[1].get<double>() +
+                                        p[2].get<double>() * p[2].get<double>());
+        EXPECT_NEAR(radius, 50.0, 0.25) << "pick " << i;  // half a voxel of 0.5
+        EXPECT_GT(p[2].get<double>(), 0.0) << "the front of the ball faces the camera";
+        const auto& n = reports[size_t(i)]["pick"]["normal"];
+        EXPECT_NEAR(n[0].get<double>() * p[0].get<double>() / radius + n[1].get<double>() * p[1].get<double>() / radius +
+                        n[2].get<double>() * p[2].get<double>() / radius,
+                    1.0, 0.01);
+    }
+    EXPECT_FALSE(reports[4]["pick"]["hit"].get<bool>());
+}
+
+TEST(SculptUi, AddAndCarveDragsChangeTheVolumeAndCtrlZRestoresTheGridBitForBit)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.move(560, 380).report(r).screenshot(dir / "before.png");
+    events.drag(560, 380, 720, 400).move(1150, 600).report(r).screenshot(dir / "added.png");
+    events.key("Z", {"ctrl"}).report(r);
+    events.key("C").drag(560, 380, 720, 400).report(r);                   // carve tool
+    events.key("Z", {"ctrl"}).report(r);
+    events.key("A").drag(600, 300, 700, 300, 10, {"ctrl"}).report(r);  // add with Ctrl: carves
+    events.key("Z", {"ctrl"}).key("Z", {"ctrl", "shift"}).report(r);   // undo, redo
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 7u);
+    const std::string original = reports[0]["checksum"];
+    const double volume = reports[0]["volume"];
+    EXPECT_GT(reports[1]["volume"].get<double>(), volume + 100.0);
+    EXPECT_EQ(reports[1]["undo"], 1);
+    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+    EXPECT_GT(differingShare(readPng(dir / "before.png"), readPng(dir / "added.png")), 0.002);
+    EXPECT_EQ(reports[2]["checksum"], original);
+    EXPECT_FALSE(reports[2]["modified"].get<bool>());
+    EXPECT_LT(reports[3]["volume"].get<double>(), volume - 100.0);
+    EXPECT_EQ(reports[4]["checksum"], original);
+    EXPECT_LT(reports[5]["volume"].get<double>(), volume - 10.0);
+    EXPECT_EQ(reports[6]["checksum"], reports[5]["checksum"]);  // redo is bit-exact too
+    EXPECT_EQ(reports[6]["euler"], 2);
+    EXPECT_EQ(reports[6]["shells"], 1);
+}
+
+TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.move(600, 380).report(r).press().report(r).release().report(r);
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    const std::size_t uploaded = reports[1]["uploaded"], changed = reports[1]["mesher_changed"];
+    const std::size_t blocks = reports[1]["blocks"];
+    EXPECT_GT(uploaded, 0u);
+    EXPECT_EQ(uploaded + reports[1]["removed"].get<std::size_t>(), changed);
+    EXPECT_LT(double(uploaded), 0.05 * double(blocks)) << uploaded << " of " << blocks;
+    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);  // stamped on the press, before any frame
+}
+
+TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
+    UiEvents events;
+    events.key("X").drag(600, 330, 760, 470, 25).key("I").drag(500, 450, 640, 300, 15).key("S").drag(560, 350, 700, 360, 10);
+    events.key("Z", {"ctrl"}).key("G").drag(640, 300, 660, 250, 8).key("P").drag(520, 500, 700, 520, 10);
+    events.key("B").drag(700, 300, 720, 310, 3).report(dir / "r.jsonl");
+    const CommandResult run = play(dir, events, (dir / "ball.vdb").string(),
+                                   "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "ui.vdb"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const CommandResult apply = runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    EXPECT_NE(apply.out.find("6 strokes"), std::string::npos) << apply.out;
+    const std::string ui = readReports(dir / "r.jsonl").at(0)["checksum"];
+    EXPECT_EQ(checksumOfFile(dir / "ui.vdb"), ui);
+    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), ui);
+    EXPECT_NE(checksumOfFile(dir / "ball.vdb"), ui);
+}
+
+TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    std::ofstream(dir / "corrupt.vdb") << "not a vdb file at all";
+    UiEvents events;
+    events.drag(560, 380, 700, 380).key("S", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").report(r);
+    events.key("E", {"ctrl"}).key("A", {"ctrl"}).text((dir / "saved.stl").string()).key("Enter");
+    events.key("O", {"ctrl"}).text((dir / "corrupt.vdb").string()).key("Enter").report(r);
+    events.key("Enter");  // dismisses the error
+    events.key("O", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").report(r);
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_FALSE(reports[0]["modified"].get<bool>());
+    EXPECT_EQ(reports[0]["title"], "saved.vdb");
+    EXPECT_EQ(checksumOfFile(dir / "saved.vdb"), reports[0]["checksum"]);
+    const CommandResult info = runSculpt("info saved.vdb", dir.path().string());
+    EXPECT_EQ(info.exitCode, 0) << info.err;
+    ASSERT_TRUE(fs::exists(dir / "saved.stl"));
+    EXPECT_GT(fs::file_size(dir / "saved.stl"), 84u + 50u * 100000u);  // binary STL of ~390k triangles
+
+    EXPECT_NE(reports[1]["error"].get<std::string>().find("corrupt.vdb"), std::string::npos) << reports[1].dump();
+    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports[1]["title"], "saved.vdb");
+    EXPECT_EQ(reports[2]["error"], "");
+    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports[2]["undo"], 0);  // a freshly opened document
+}
+
+TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
+    const fs::path state = dir / "state";
+    UiEvents first;
+    first.drag(560, 380, 700, 420).report(dir / "first.jsonl");
+    first.write(dir / "first.json");
+    const std::string args = shellQuoted(dir / "ball.vdb") + " --play " + shellQuoted(dir / "first.json") + " --state-dir " +
+                             shellQuoted(state) + " --autosave-seconds 0.5 --stay";
+    runCommand(uiCommand(args) + " & echo started", dir.path().string());
+    fs::path recovery;
+    for (int i = 0; i < 600 && recovery.empty(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        std::error_code ec;
+        if (fs::exists(state / "recovery", ec)) {
+            for (const auto& entry : fs::directory_iterator(state / "recovery")) {
+                if (entry.path().extension() == ".vdb") recovery = entry.path();
+            }
+        }
+    }
+    ASSERT_FALSE(recovery.empty()) << "no autosave within a minute";
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    runCommand("pkill -KILL -f -- " + shellQuoted(state), dir.path().string());
+    const auto firstReports = readReports(dir / "first.jsonl");
+    ASSERT_EQ(firstReports.size(), 1u);
+    ASSERT_TRUE(fs::exists(recovery)) << "a killed program leaves its autosave";
+
+    UiEvents second;
+    second.report(dir / "second.jsonl").key("R").report(dir / "second.jsonl");
+    const CommandResult run = play(dir, second, (dir / "ball.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(dir / "second.jsonl");
+    ASSERT_EQ(reports.size(), 2u);
+    EXPECT_TRUE(reports[0]["recovery_offered"].get<bool>());
+    EXPECT_EQ(reports[0]["checksum"], checksumOfFile(dir / "ball.vdb"));
+    EXPECT_FALSE(reports[1]["recovery_offered"].get<bool>());
+    EXPECT_EQ(reports[1]["checksum"], firstReports[0]["checksum"]);
+    EXPECT_TRUE(reports[1]["modified"].get<bool>()) << "recovered work is not saved yet";
+}
+
+TEST(SculptUi, QuittingWithUnsavedChangesAsksFirst)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.drag(560, 380, 700, 380).quit().report(r).key("Escape").report(r).quit().key("D").wait(2.0).report(r);
+    const CommandResult run = play(dir, events, "", "--stay");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 2u) << "the program quit after Discard, before the last report";
+    EXPECT_TRUE(reports[0]["asking_unsaved"].get<bool>());
+    EXPECT_FALSE(reports[1]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
+    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+}
+
+TEST(SculptUi, BadInputIsOneLineAndExitTwo)
+{
+    TempDir dir;
+    std::ofstream(dir / "bad.json") << R"({"events": [{"type": "fly"}]})";
+    const CommandResult run = runUi("--play bad.json --state-dir state", dir.path().string());
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("bad.json: events[0]: field 'type' is \"fly\""), std::string::npos) << run.err;
+    std::ofstream(dir / "corrupt.vdb") << "garbage";
+    const CommandResult open = runUi("corrupt.vdb --screenshot x.png --state-dir state", dir.path().string());
+    EXPECT_EQ(open.exitCode, 2);
+    EXPECT_NE(open.err.find("corrupt.vdb"), std::string::npos) << open.err;
+    EXPECT_FALSE(fs::exists(dir / "x.png"));
+}
+
+}  // namespace
+}  // namespace sculpt::test

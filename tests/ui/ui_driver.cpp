@@ -1,0 +1,107 @@
+#include "tests/ui/ui_driver.h"
+
+#include <vtkImageData.h>
+#include <vtkPNGReader.h>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace sculpt::test {
+
+UiEvents& UiEvents::add(nlohmann::json event)
+{
+    mTime += 0.02;
+    event["t"] = mTime;
+    mEvents.push_back(std::move(event));
+    return *this;
+}
+
+UiEvents& UiEvents::move(double x, double y) { return add({{"type", "move"}, {"x", x}, {"y", y}}); }
+
+UiEvents& UiEvents::press(const std::string& button, const std::vector<std::string>& mods)
+{
+    return add({{"type", "button"}, {"button", button}, {"action", "press"}, {"mods", mods}});
+}
+
+UiEvents& UiEvents::release(const std::string& button)
+{
+    return add({{"type", "button"}, {"button", button}, {"action", "release"}});
+}
+
+UiEvents& UiEvents::drag(double x0, double y0, double x1, double y1, int steps, const std::vector<std::string>& mods)
+{
+    move(x0, y0);
+    press("left", mods);
+    for (int i = 1; i <= steps; ++i) move(x0 + (x1 - x0) * i / steps, y0 + (y1 - y0) * i / steps);
+    return release("left");
+}
+
+UiEvents& UiEvents::key(const std::string& name, const std::vector<std::string>& mods)
+{
+    return add({{"type", "key"}, {"key", name}, {"mods", mods}});
+}
+
+UiEvents& UiEvents::text(const std::string& characters) { return add({{"type", "text"}, {"text", characters}}); }
+UiEvents& UiEvents::report(const std::filesystem::path& path) { return add({{"type", "report"}, {"path", path.string()}}); }
+UiEvents& UiEvents::screenshot(const std::filesystem::path& path)
+{
+    return add({{"type", "screenshot"}, {"path", path.string()}});
+}
+UiEvents& UiEvents::quit() { return add({{"type", "quit"}}); }
+
+UiEvents& UiEvents::wait(double seconds)
+{
+    mTime += seconds;
+    return *this;
+}
+
+void UiEvents::write(const std::filesystem::path& path) const
+{
+    std::ofstream(path) << nlohmann::json{{"format", "sculpt-ui-events"}, {"version", 1}, {"events", mEvents}}.dump(1);
+}
+
+std::string uiCommand(const std::string& args)
+{
+    return "xvfb-run -a -s '-screen 0 1280x800x24' '" SCULPT_UI_EXECUTABLE "' " + args;
+}
+
+CommandResult runUi(const std::string& args, const std::string& workDir) { return runCommand(uiCommand(args), workDir); }
+
+std::vector<nlohmann::json> readReports(const std::filesystem::path& path)
+{
+    std::vector<nlohmann::json> reports;
+    std::ifstream in(path);
+    for (std::string line; std::getline(in, line);) reports.push_back(nlohmann::json::parse(line));
+    return reports;
+}
+
+vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path)
+{
+    vtkNew<vtkPNGReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkSmartPointer<vtkImageData> image = reader->GetOutput();
+    return image;
+}
+
+double differingShare(vtkImageData* a, vtkImageData* b)
+{
+    const int* da = a->GetDimensions();
+    const int* db = b->GetDimensions();
+    if (da[0] != db[0] || da[1] != db[1]) return 1.0;
+    const auto* pa = static_cast<const unsigned char*>(a->GetScalarPointer());
+    const auto* pb = static_cast<const unsigned char*>(b->GetScalarPointer());
+    const int channels = a->GetNumberOfScalarComponents();
+    std::size_t differ = 0, pixels = std::size_t(da[0]) * std::size_t(da[1]);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        for (int c = 0; c < 3; ++c) {
+            if (std::abs(int(pa[p * channels + c]) - int(pb[p * channels + c])) > 8) {
+                ++differ;
+                break;
+            }
+        }
+    }
+    return double(differ) / double(pixels);
+}
+
+}  // namespace sculpt::test

@@ -1,0 +1,54 @@
+#pragma once
+/// @file ui_driver.h
+/// @brief Drives the real sculpt-ui under Xvfb for tests: builds an event recording, replays it
+///        (--play), and reads back the reports and screenshots it wrote.
+
+#include "tests/support/run_sculpt.h"
+
+#include <nlohmann/json.hpp>
+#include <vtkSmartPointer.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+class vtkImageData;
+
+namespace sculpt::test {
+
+/// An event recording being written, each event 20 ms after the previous one.
+class UiEvents {
+public:
+    UiEvents& move(double x, double y);
+    UiEvents& press(const std::string& button = "left", const std::vector<std::string>& mods = {});
+    UiEvents& release(const std::string& button = "left");
+    /// Press at (x0, y0), `steps` moves to (x1, y1), release.
+    UiEvents& drag(double x0, double y0, double x1, double y1, int steps = 20,
+                   const std::vector<std::string>& mods = {});
+    UiEvents& key(const std::string& name, const std::vector<std::string>& mods = {});
+    UiEvents& text(const std::string& characters);
+    UiEvents& report(const std::filesystem::path& path);
+    UiEvents& screenshot(const std::filesystem::path& path);
+    UiEvents& quit();
+    UiEvents& wait(double seconds);
+    void write(const std::filesystem::path& path) const;
+
+private:
+    UiEvents& add(nlohmann::json event);
+    nlohmann::json mEvents = nlohmann::json::array();
+    double mTime = 0.0;
+};
+
+/// `xvfb-run -a sculpt-ui ARGS` in `workDir` (a 1280x800 screen).
+CommandResult runUi(const std::string& args, const std::string& workDir);
+/// The command line of that, for running it in the background.
+std::string uiCommand(const std::string& args);
+
+/// The JSON lines of a report file.
+std::vector<nlohmann::json> readReports(const std::filesystem::path& path);
+
+vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path);
+/// Share of pixels whose RGB differ by more than 8 in some channel.
+double differingShare(vtkImageData* a, vtkImageData* b);
+
+}  // namespace sculpt::test
