@@ -127,6 +127,11 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
     return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
 }
 
+double SculptApp::arrival(const InputEvent& event) const
+{
+    return mPlayer ? mPlayStart + event.time : event.time;
+}
+
 bool SculptApp::modalOpen() const
 {
     return mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
@@ -149,6 +154,7 @@ void SculptApp::handle(const InputEvent& event)
     }
     if (event.type == EventType::Key) trackModifiers(event);
     feedImGui(event, mHeldMods);
+    mLastInput = mWindow.time();
     switch (event.type) {
     case EventType::Resize:
         mWindow.resize(event.width, event.height);
@@ -180,7 +186,7 @@ void SculptApp::routeMouse(const InputEvent& event)
         const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
         const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
         mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
-        mLastNavigation = event.time;
+        mLastNavigation = arrival(event);
         mHoverValid = false;
         return;
     }
@@ -189,6 +195,7 @@ void SculptApp::routeMouse(const InputEvent& event)
         if (!event.press) {
             if (mDrag == Drag::Stroke && event.button == kLeftButton) {
                 mStroke.end(*mDocument);
+                mPicker.thaw();
                 mHoverValid = false;
             }
             if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
@@ -203,10 +210,13 @@ void SculptApp::routeMouse(const InputEvent& event)
             const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);  // a button event has no position
             if (hit) {
                 try {
+                    mPicker.freeze(mDocument->session().field());
                     mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(mMouseX, mMouseY),
                                   event.time, mMouseX, mMouseY);
                     mDrag = Drag::Stroke;
+                    mMeasures.pendingSince = arrival(event);
                 } catch (const InputError& e) {
+                    mPicker.thaw();
                     showError(e.what());
                 }
                 mHoverValid = false;
@@ -222,15 +232,21 @@ void SculptApp::routeMouse(const InputEvent& event)
     case Drag::Stroke: {
         const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
         try {
-            mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
+            const std::size_t stamps =
+                mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
+            mMeasures.stamps += stamps;
+            // From when the pointer got there (a replayed event: when it was due) to the frame showing it.
+            if (stamps > 0 && mMeasures.pendingSince < 0.0) {
+                mMeasures.pendingSince = arrival(event);
+            }
         } catch (const InputError& e) {
             showError(e.what());
         }
         break;
     }
-    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = event.time; break;
-    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = event.time; break;
-    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = event.time; break;
+    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = arrival(event); break;
+    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = arrival(event); break;
+    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = arrival(event); break;
     case Drag::Radius:
         mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
                                  mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));
@@ -312,12 +328,6 @@ void SculptApp::refreshStatus(bool topology)
 void SculptApp::frame()
 {
     const double now = mWindow.time();
-    std::string autosaveError;
-    if (mAutosave.tick(*mDocument, now, mStroke.active(), autosaveError)) {
-        mDialogs.notice = "autosaved to " + mAutosave.recoveryFile(mDocument->path()).string();
-        std::cout << "sculpt-ui: " << mDialogs.notice << std::endl;
-    }
-    if (!autosaveError.empty()) mDialogs.notice = autosaveError;
 
     const SculptSession& session = mDocument->session();
     const std::size_t remeshed = session.remeshedBlocks();
@@ -353,9 +363,12 @@ void SculptApp::frame()
     mWindow.swapBuffers();
 
     const double end = mWindow.time();
-    mFrameTimes.push_back(1000.0 * (end - now));
-    if (mFrameTimes.size() > 120) mFrameTimes.pop_front();
-    mStatus.frameMs = mFrameTimes.back();
+    mStatus.frameMs = 1000.0 * (end - now);
+    mMeasures.frameMs.push_back(mStatus.frameMs);
+    if (mMeasures.pendingSince >= 0.0) {
+        mMeasures.latencyMs.push_back(1000.0 * (end - mMeasures.pendingSince));
+        mMeasures.pendingSince = -1.0;
+    }
     mLastFrame = now;
     ++mFramesDrawn;
 }
@@ -417,6 +430,7 @@ void SculptApp::writeReport(const fs::path& path)
     r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
     mReportVersion = session.mesher()->version();
     r["bytes_uploaded"] = mStatus.bytesUploaded;
+    r["mesh_bytes"] = mDisplay.meshBytes();
     mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
     mLastRemeshed = 0;
     const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
@@ -434,6 +448,11 @@ void SculptApp::writeReport(const fs::path& path)
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
     r["frame_ms"] = mStatus.frameMs;
+    r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
+    r["latencies_ms"] = mMeasures.latencyMs;
+    r["stamps"] = mMeasures.stamps;
+    r["coarse"] = mDisplay.coarse();
+    mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";
     if (!out) showError(path.string() + ": cannot write the report");
@@ -476,6 +495,24 @@ void SculptApp::finishReplay()
     if (!mOptions.stay) mQuit = true;
 }
 
+bool SculptApp::idle() const
+{
+    constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
+    return mDrag == Drag::None && mWindow.time() - mLastInput > kSettleSeconds && mPendingScreenshots.empty() &&
+           mPendingReports.empty();
+}
+
+void SculptApp::autosave()
+{
+    std::string error;
+    if (mAutosave.tick(*mDocument, mWindow.time(), mStroke.active(), error)) {
+        mDialogs.notice = "autosaved to " + mAutosave.recoveryFile(mDocument->path()).string();
+        std::cout << "sculpt-ui: " << mDialogs.notice << std::endl;
+        mLastInput = mWindow.time();  // show the notice
+    }
+    if (!error.empty()) mDialogs.notice = error;
+}
+
 int SculptApp::run()
 {
     frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here
@@ -486,7 +523,8 @@ int SculptApp::run()
     mPlayStart = mWindow.time();
     bool replayDone = false;
     while (!mQuit) {
-        if (mPlayer && !mPlayer->finished()) {
+        const bool replaying = mPlayer && !mPlayer->finished();
+        if (replaying) {
             for (const InputEvent& event : mPlayer->take(mWindow.time() - mPlayStart)) handle(event);
             mWindow.pollEvents(0.0);
         } else {
@@ -495,10 +533,11 @@ int SculptApp::run()
                 finishReplay();
                 if (mQuit) break;
             }
-            const bool busy = mDrag != Drag::None || mWindow.time() - mLastFrame < 0.5;
-            mWindow.pollEvents(busy ? 0.0 : 0.1);
+            // Idle (no input for a while): sleep until an event, waking to autosave.
+            mWindow.pollEvents(idle() ? 0.25 : 0.0);
         }
-        frame();
+        autosave();
+        if (replaying || !idle()) frame();
     }
     if (!mOptions.record.empty()) writeInputEvents(mRecording, mOptions.record.string());
     mAutosave.discard(mDocument->path());  // a clean quit: nothing to recover

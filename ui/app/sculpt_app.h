@@ -17,7 +17,6 @@
 #include "ui/view/symmetry_planes.h"
 #include "ui/view/viewport.h"
 
-#include <deque>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -94,6 +93,8 @@ public:
 
 private:
     void frame();
+    bool idle() const;
+    void autosave();
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
@@ -106,6 +107,8 @@ private:
     void saveTo(const std::filesystem::path& path);
     void showError(const std::string& message);
     bool modalOpen() const;
+    /// When an event happened on the window's clock (a replayed one: when it was due).
+    double arrival(const InputEvent& event) const;
     void writeScreenshot(const std::filesystem::path& path);
     void writeReport(const std::filesystem::path& path);
     void finishReplay();
@@ -149,10 +152,16 @@ private:
     // Frame bookkeeping.
     bool mQuit = false;
     int mExitStatus = 0;
-    double mLastFrame = 0.0, mPlayStart = -1.0;
+    double mLastFrame = 0.0, mPlayStart = -1.0, mLastInput = 0.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
     std::uint64_t mReportVersion = 0;
-    std::deque<double> mFrameTimes;
+    /// Figures for reports, since the previous one: frame times, event-to-screen latencies, stamps.
+    struct Measures {
+        std::vector<double> frameMs, latencyMs;
+        std::size_t stamps = 0;
+        double pendingSince = -1.0;  // a stamp not yet on screen: when its event arrived
+    };
+    Measures mMeasures;
     std::vector<std::filesystem::path> mPendingScreenshots, mPendingReports;
     std::uint64_t mTopologyVersion = ~std::uint64_t(0);
     SurfaceStatistics::Topology mTopology;

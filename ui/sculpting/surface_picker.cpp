@@ -15,13 +15,26 @@ SurfacePicker::~SurfacePicker() = default;
 void SurfacePicker::reset()
 {
     mIntersector.reset();
+    mFrozen.reset();
     mField = nullptr;
+}
+
+void SurfacePicker::freeze(const FieldImage& field)
+{
+    mFrozen = field.grid().deepCopy();
+    mIntersector = std::make_unique<Intersector>(*mFrozen);
+}
+
+void SurfacePicker::thaw()
+{
+    mFrozen.reset();
+    mIntersector.reset();
 }
 
 std::optional<SurfaceHit> SurfacePicker::pick(const FieldImage& field, std::uint64_t fieldVersion, const Ray& ray)
 {
     if (field.grid().tree().activeVoxelCount() == 0) return std::nullopt;
-    if (!mIntersector || mField != &field || mVersion != fieldVersion) {
+    if (!mFrozen && (!mIntersector || mField != &field || mVersion != fieldVersion)) {
         mIntersector = std::make_unique<Intersector>(field.grid());
         mField = &field;
         mVersion = fieldVersion;

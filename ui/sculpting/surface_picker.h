@@ -3,6 +3,10 @@
 /// @brief What the mouse points at: the ray cast against the level set itself (OpenVDB's
 ///        LevelSetRayIntersector), giving the exact hit and normal with no mesh locator to
 ///        rebuild. The intersector is remade only when the field changed since the last pick.
+///
+/// During a stroke the picker holds on to the surface as it was when the stroke began (as
+/// Blender's strokes do without "accumulate"): otherwise each sample would land on the clay the
+/// previous stamps just added, and an add stroke would climb towards the eye.
 
 #include "core/field/field_image.h"
 #include "ui/view/viewport.h"
@@ -27,10 +31,14 @@ public:
     std::optional<SurfaceHit> pick(const FieldImage& field, std::uint64_t fieldVersion, const Ray& ray);
     /// Forget the intersector (a new document).
     void reset();
+    /// Picks against a copy of the field as it is now, until thaw().
+    void freeze(const FieldImage& field);
+    void thaw();
 
 private:
     struct Intersector;
     std::unique_ptr<Intersector> mIntersector;
+    openvdb::FloatGrid::Ptr mFrozen;
     const FieldImage* mField = nullptr;
     std::uint64_t mVersion = 0;
 };

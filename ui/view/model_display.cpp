@@ -21,6 +21,18 @@ namespace sculpt::ui {
 namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
+constexpr int kChunkBlocks = 4;  // per axis
+
+int floorTo(int v, int b) { return v >= 0 ? v / b * b : -((-v + b - 1) / b) * b; }
+
+/// `part` appended to `whole`, its indices shifted.
+void append(BlockMesh& whole, const BlockMesh& part)
+{
+    const auto base = std::uint32_t(whole.positions.size());
+    whole.positions.insert(whole.positions.end(), part.positions.begin(), part.positions.end());
+    whole.normals.insert(whole.normals.end(), part.normals.begin(), part.normals.end());
+    for (const auto& t : part.triangles) whole.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
 
 vtkSmartPointer<vtkFloatArray> floatTriples(const std::vector<std::array<float, 3>>& values)
 {
@@ -74,8 +86,15 @@ std::size_t bytesOf(const BlockMesh& mesh)
 }  // namespace
 
 struct ModelDisplay::Block {
-    vtkSmartPointer<vtkActor> full, coarse;
-    std::size_t coarseTriangles = 0;
+    vtkSmartPointer<vtkActor> full;
+    BlockMesh coarse;
+    std::size_t bytes = 0;  // of the full mesh
+};
+
+struct ModelDisplay::Chunk {
+    vtkSmartPointer<vtkActor> actor;
+    std::size_t triangles = 0;
+    bool dirty = true;
 };
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look) : mRenderer(renderer), mLook(look) {}
@@ -83,6 +102,13 @@ ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look) : mRe
 ModelDisplay::~ModelDisplay()
 {
     while (!mBlocks.empty()) remove(mBlocks.begin()->first);
+    for (auto& [origin, chunk] : mChunks) mRenderer->RemoveActor(chunk.actor);
+}
+
+openvdb::Coord ModelDisplay::chunkOf(const openvdb::Coord& block) const
+{
+    const int size = kChunkBlocks * mBlockVoxels;
+    return {floorTo(block.x(), size), floorTo(block.y(), size), floorTo(block.z(), size)};
 }
 
 void ModelDisplay::remove(const openvdb::Coord& origin)
@@ -90,23 +116,50 @@ void ModelDisplay::remove(const openvdb::Coord& origin)
     auto it = mBlocks.find(origin);
     if (it == mBlocks.end()) return;
     mRenderer->RemoveActor(it->second.full);
-    mRenderer->RemoveActor(it->second.coarse);
-    mCoarseTriangles -= it->second.coarseTriangles;
+    mMeshBytes -= it->second.bytes;
     mBlocks.erase(it);
+    mChunks[chunkOf(origin)].dirty = true;
 }
 
 void ModelDisplay::upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize)
 {
     remove(origin);
-    const BlockMesh coarse = clusterBlockMesh(mesh, kCoarseCellVoxels * voxelSize);
-    Block block{actorOf(mesh, mLook), actorOf(coarse, mLook), coarse.triangles.size()};
+    Block block{actorOf(mesh, mLook), clusterBlockMesh(mesh, kCoarseCellVoxels * voxelSize), bytesOf(mesh)};
     block.full->SetVisibility(!mCoarse);
-    block.coarse->SetVisibility(mCoarse);
     mRenderer->AddActor(block.full);
-    mRenderer->AddActor(block.coarse);
-    mCoarseTriangles += block.coarseTriangles;
-    mLastBytes += bytesOf(mesh) + bytesOf(coarse);
+    mMeshBytes += block.bytes;
+    mLastBytes += block.bytes;
     mBlocks.emplace(origin, std::move(block));
+    mChunks[chunkOf(origin)].dirty = true;
+}
+
+void ModelDisplay::rebuildChunk(const openvdb::Coord& origin, Chunk& chunk)
+{
+    const int size = kChunkBlocks * mBlockVoxels;
+    BlockMesh joined;
+    // The map orders blocks by x, then y, then z: walk each x slab of the chunk.
+    for (int x = origin.x(); x < origin.x() + size; x += mBlockVoxels) {
+        for (auto it = mBlocks.lower_bound(openvdb::Coord(x, origin.y(), origin.z()));
+             it != mBlocks.end() && it->first.x() == x && it->first.y() < origin.y() + size; ++it) {
+            if (it->first.z() >= origin.z() && it->first.z() < origin.z() + size) append(joined, it->second.coarse);
+        }
+    }
+    if (chunk.actor) mRenderer->RemoveActor(chunk.actor);
+    mCoarseTriangles -= chunk.triangles;
+    chunk.actor = actorOf(joined, mLook);
+    chunk.actor->SetVisibility(mCoarse);
+    chunk.triangles = joined.triangles.size();
+    mCoarseTriangles += chunk.triangles;
+    mRenderer->AddActor(chunk.actor);
+    mLastBytes += bytesOf(joined);
+    chunk.dirty = false;
+}
+
+void ModelDisplay::rebuildDirtyChunks()
+{
+    for (auto& [origin, chunk] : mChunks) {
+        if (chunk.dirty) rebuildChunk(origin, chunk);
+    }
 }
 
 void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
@@ -115,8 +168,12 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
     IncrementalMesher::Changes changes;
     if (&mesher != mSource) {
         while (!mBlocks.empty()) remove(mBlocks.begin()->first);
+        for (auto& [origin, chunk] : mChunks) mRenderer->RemoveActor(chunk.actor);
+        mChunks.clear();
+        mCoarseTriangles = 0;
         for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
         mSource = &mesher;
+        mBlockVoxels = mesher.blockVoxels();
     } else {
         if (mesher.version() == mVersion) return;
         changes = mesher.changesSince(mVersion);
@@ -130,16 +187,16 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
         upload(origin, mesher.blocks().at(origin), voxelSize);
         ++mLastUploads;
     }
+    if (mCoarse) rebuildDirtyChunks();
 }
 
 void ModelDisplay::setCoarse(bool coarse)
 {
     if (coarse == mCoarse) return;
     mCoarse = coarse;
-    for (auto& [origin, block] : mBlocks) {
-        block.full->SetVisibility(!coarse);
-        block.coarse->SetVisibility(coarse);
-    }
+    if (coarse) rebuildDirtyChunks();
+    for (auto& [origin, block] : mBlocks) block.full->SetVisibility(!coarse);
+    for (auto& [origin, chunk] : mChunks) chunk.actor->SetVisibility(coarse);
 }
 
 BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld)

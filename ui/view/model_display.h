@@ -1,11 +1,15 @@
 #pragma once
 /// @file model_display.h
 /// @brief The sculpt on screen: one VTK actor per mesher block, re-uploaded only when the
-///        mesher re-meshed that block, and a coarse twin of each block shown while the camera
-///        moves (the display's level of detail).
+///        mesher re-meshed that block, and a coarse display shown while the camera moves (the
+///        display's level of detail).
 ///
-/// Every block actor shares the SurfaceLook's property and shader. vtkCompositePolyDataMapper2
-/// is not used: in VTK 9.1 it re-uploads every block when any block changes.
+/// Every actor shares the SurfaceLook's property and shader. vtkCompositePolyDataMapper2 is not
+/// used: in VTK 9.1 it re-uploads every block when any block changes. The coarse display is
+/// each block's mesh with vertices clustered (about 9x fewer triangles), joined into chunks of
+/// 4^3 blocks: on Mesa each actor costs ~30 us a frame, so a million triangles in 1,800 block
+/// actors would stay slow however few triangles each had. A chunk is rebuilt from its blocks'
+/// cached coarse meshes only when shown after one of them changed.
 
 #include "core/mesh/incremental_mesher.h"
 
@@ -38,19 +42,27 @@ public:
     std::size_t lastUploadBytes() const { return mLastBytes; }
     std::size_t blockCount() const { return mBlocks.size(); }
     std::size_t coarseTriangles() const { return mCoarseTriangles; }
+    /// Bytes of every full-detail block as handed to VTK: what one upload of the whole mesh costs.
+    std::size_t meshBytes() const { return mMeshBytes; }
 
 private:
     struct Block;
+    struct Chunk;
     void remove(const openvdb::Coord& origin);
     void upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize);
+    openvdb::Coord chunkOf(const openvdb::Coord& block) const;
+    void rebuildChunk(const openvdb::Coord& origin, Chunk& chunk);
+    void rebuildDirtyChunks();
 
     vtkRenderer* mRenderer;
     const SurfaceLook& mLook;
     std::map<openvdb::Coord, Block> mBlocks;
+    std::map<openvdb::Coord, Chunk> mChunks;
+    int mBlockVoxels = IncrementalMesher::kDefaultBlockVoxels;
     const IncrementalMesher* mSource = nullptr;
     std::uint64_t mVersion = 0;
     bool mCoarse = false;
-    std::size_t mLastUploads = 0, mLastRemovals = 0, mLastBytes = 0, mCoarseTriangles = 0;
+    std::size_t mLastUploads = 0, mLastRemovals = 0, mLastBytes = 0, mCoarseTriangles = 0, mMeshBytes = 0;
 };
 
 /// A block's mesh with its vertices merged into clusters of `cellWorld` (a cube grid fixed in
