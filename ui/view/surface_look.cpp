@@ -5,6 +5,8 @@
 #include <vtkShaderProperty.h>
 #include <vtkUniforms.h>
 
+#include <string>
+
 namespace sculpt::ui {
 
 namespace {
@@ -26,9 +28,15 @@ vec3 matcapColour(vec3 n)
 }
 )";
 
-constexpr const char* kMatcapImpl = R"(//VTK::Light::Impl
-  if (matcapOn == 1) gl_FragData[0] = vec4(matcapColour(normalize(normalVCVSOutput)), 1.0);
-)";
+/// The matcap replaces VTK's lit colour; with the wireframe on, VTK's edge term (emix, only
+/// declared then) darkens it near the triangles' edges.
+std::string matcapImpl(bool wireframe)
+{
+    return std::string("//VTK::Light::Impl\n  if (matcapOn == 1) {\n"
+                       "    vec3 matcap = matcapColour(normalize(normalVCVSOutput));\n") +
+           (wireframe ? "    matcap = mix(matcap, vec3(0.08, 0.08, 0.1), emix);\n" : "") +
+           "    gl_FragData[0] = vec4(matcap, 1.0);\n  }\n";
+}
 
 struct Matcap {
     float base[3], shadow[3], rim[3];
@@ -54,8 +62,7 @@ SurfaceLook::SurfaceLook()
     mProperty->SetSpecularPower(20.0);
     mProperty->SetEdgeColor(0.1, 0.1, 0.12);
     mShader = vtkSmartPointer<vtkShaderProperty>::New();
-    mShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kMatcapFunction, false);
-    mShader->AddFragmentShaderReplacement("//VTK::Light::Impl", true, kMatcapImpl, false);
+    setWireframe(false);
     setShading(Shading::Clay);
 }
 
@@ -84,6 +91,9 @@ void SurfaceLook::setWireframe(bool wireframe)
 {
     mWireframe = wireframe;
     mProperty->SetEdgeVisibility(wireframe);
+    mShader->ClearAllFragmentShaderReplacements();
+    mShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kMatcapFunction, false);
+    mShader->AddFragmentShaderReplacement("//VTK::Light::Impl", true, matcapImpl(wireframe), false);
 }
 
 void SurfaceLook::apply(vtkActor* actor) const
