@@ -63,7 +63,8 @@ void SurfaceStatistics::update(const IncrementalMesher& mesher)
     if (mStarted && mesher.version() == mVersion) return;
     IncrementalMesher::Changes changes;
     if (mStarted) changes = mesher.changesSince(mVersion);
-    else for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
+    else
+        for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
     for (const openvdb::Coord& origin : changes.removed) {
         if (auto it = mTallies.find(origin); it != mTallies.end()) {
             add(it->second, -1.0);

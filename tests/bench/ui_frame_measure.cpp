@@ -45,7 +45,8 @@ void summarise(const std::string& model, const std::vector<json>& r)
     std::printf("  %-28s %.0f stamps in 10 s: %.1f per second; %.0f KiB uploaded per stamp vs %.0f KiB whole mesh\n",
                 "stamps", stamps, stamps / 10.0, r[1]["bytes_uploaded"].get<double>() / std::max(1.0, stamps) / 1024.0,
                 r[1]["mesh_bytes"].get<double>() / 1024.0);
-    line(r[3]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)", numbers(r[3]["frame_times_ms"]));
+    line(r[3]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)",
+         numbers(r[3]["frame_times_ms"]));
 }
 
 CommandResult replay(const UiEvents& events, const std::string& document, const std::string& extra, const TempDir& dir)
@@ -74,7 +75,8 @@ void measure(const std::string& model, const std::string& document, const std::s
     orbit.move(200, 650).wait(1.0).report(r).press("right");
     for (int i = 1; i <= 180; ++i) orbit.wait(1.0 / 60.0 - 0.02).move(200 + 3 * i, 650);
     orbit.report(r).release("right");
-    if (replay(sculpting, document, extra, dir).exitCode != 0 || replay(orbit, document, extra, dir).exitCode != 0) return;
+    if (replay(sculpting, document, extra, dir).exitCode != 0 || replay(orbit, document, extra, dir).exitCode != 0)
+        return;
     summarise(model, readReports(r));
 }
 

@@ -38,8 +38,9 @@ std::string checksumOfFile(const fs::path& path) { return formatChecksum(gridChe
 TEST(SculptUi, TheOpeningViewShowsTheClayBall)
 {
     TempDir dir;
-    const CommandResult run = runUi("--screenshot " + shellQuoted(dir / "open.png") + " --state-dir " + shellQuoted(dir / "state"),
-                                    dir.path().string());
+    const CommandResult run =
+        runUi("--screenshot " + shellQuoted(dir / "open.png") + " --state-dir " + shellQuoted(dir / "state"),
+              dir.path().string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
     vtkSmartPointer<vtkImageData> image = readPng(dir / "open.png");
     const int* d = image->GetDimensions();
@@ -75,12 +76,14 @@ TEST(SculptUi, TheCursorPicksTheSphereWithinHalfAVoxelAndNothingOffIt)
     for (int i = 0; i < 4; ++i) {
         ASSERT_TRUE(reports[size_t(i)]["pick"]["hit"].get<bool>()) << i;
         const auto& p = reports[size_t(i)]["pick"]["position"];
-        const double radius = std::sqrt(p[0].get<double>() * p[0].get<double>() + p[1].get<double>() * p[1].get<double>() +
-                                        p[2].get<double>() * p[2].get<double>());
+        const double radius =
+            std::sqrt(p[0].get<double>() * p[0].get<double>() + p[1].get<double>() * p[1].get<double>() +
+                      p[2].get<double>() * p[2].get<double>());
         EXPECT_NEAR(radius, 50.0, 0.25) << "pick " << i;  // half a voxel of 0.5
         EXPECT_GT(p[2].get<double>(), 0.0) << "the front of the ball faces the camera";
         const auto& n = reports[size_t(i)]["pick"]["normal"];
-        EXPECT_NEAR(n[0].get<double>() * p[0].get<double>() / radius + n[1].get<double>() * p[1].get<double>() / radius +
+        EXPECT_NEAR(n[0].get<double>() * p[0].get<double>() / radius +
+                        n[1].get<double>() * p[1].get<double>() / radius +
                         n[2].get<double>() * p[2].get<double>() / radius,
                     1.0, 0.01);
     }
@@ -95,7 +98,7 @@ TEST(SculptUi, AddAndCarveDragsChangeTheVolumeAndCtrlZRestoresTheGridBitForBit)
     events.move(560, 380).report(r).screenshot(dir / "before.png");
     events.drag(560, 380, 720, 400).move(1150, 600).report(r).screenshot(dir / "added.png");
     events.key("Z", {"ctrl"}).report(r);
-    events.key("C").drag(560, 380, 720, 400).report(r);                   // carve tool
+    events.key("C").drag(560, 380, 720, 400).report(r);  // carve tool
     events.key("Z", {"ctrl"}).report(r);
     events.key("A").drag(600, 300, 700, 300, 10, {"ctrl"}).report(r);  // add with Ctrl: carves
     events.key("Z", {"ctrl"}).key("Z", {"ctrl", "shift"}).report(r);   // undo, redo
@@ -142,11 +145,17 @@ TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
     TempDir dir;
     ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
     UiEvents events;
-    events.key("X").drag(600, 330, 760, 470, 25).key("I").drag(500, 450, 640, 300, 15).key("S").drag(560, 350, 700, 360, 10);
+    events.key("X")
+        .drag(600, 330, 760, 470, 25)
+        .key("I")
+        .drag(500, 450, 640, 300, 15)
+        .key("S")
+        .drag(560, 350, 700, 360, 10);
     events.key("Z", {"ctrl"}).key("G").drag(640, 300, 660, 250, 8).key("P").drag(520, 500, 700, 520, 10);
     events.key("B").drag(700, 300, 720, 310, 3).report(dir / "r.jsonl");
-    const CommandResult run = play(dir, events, (dir / "ball.vdb").string(),
-                                   "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "ui.vdb"));
+    const CommandResult run =
+        play(dir, events, (dir / "ball.vdb").string(),
+             "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "ui.vdb"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const CommandResult apply = runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string());
     ASSERT_EQ(apply.exitCode, 0) << apply.err;
@@ -196,8 +205,8 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     UiEvents first;
     first.drag(560, 380, 700, 420).report(dir / "first.jsonl");
     first.write(dir / "first.json");
-    const std::string args = shellQuoted(dir / "ball.vdb") + " --play " + shellQuoted(dir / "first.json") + " --state-dir " +
-                             shellQuoted(state) + " --autosave-seconds 0.5 --stay";
+    const std::string args = shellQuoted(dir / "ball.vdb") + " --play " + shellQuoted(dir / "first.json") +
+                             " --state-dir " + shellQuoted(state) + " --autosave-seconds 0.5 --stay";
     runCommand(uiCommand(args) + " & echo started", dir.path().string());
     fs::path recovery;
     for (int i = 0; i < 600 && recovery.empty(); ++i) {
@@ -205,7 +214,8 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
         std::error_code ec;
         if (fs::exists(state / "recovery", ec)) {
             for (const auto& entry : fs::directory_iterator(state / "recovery")) {
-                if (entry.path().extension() == ".vdb") recovery = entry.path();
+                const std::string name = entry.path().filename().string();
+                if (entry.path().extension() == ".vdb" && name[0] != '.') recovery = entry.path();  // not a temporary
             }
         }
     }

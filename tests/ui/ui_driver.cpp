@@ -42,7 +42,10 @@ UiEvents& UiEvents::key(const std::string& name, const std::vector<std::string>&
 }
 
 UiEvents& UiEvents::text(const std::string& characters) { return add({{"type", "text"}, {"text", characters}}); }
-UiEvents& UiEvents::report(const std::filesystem::path& path) { return add({{"type", "report"}, {"path", path.string()}}); }
+UiEvents& UiEvents::report(const std::filesystem::path& path)
+{
+    return add({{"type", "report"}, {"path", path.string()}});
+}
 UiEvents& UiEvents::screenshot(const std::filesystem::path& path)
 {
     return add({{"type", "screenshot"}, {"path", path.string()}});
@@ -65,7 +68,10 @@ std::string uiCommand(const std::string& args)
     return "xvfb-run -a -s '-screen 0 1280x800x24' '" SCULPT_UI_EXECUTABLE "' " + args;
 }
 
-CommandResult runUi(const std::string& args, const std::string& workDir) { return runCommand(uiCommand(args), workDir); }
+CommandResult runUi(const std::string& args, const std::string& workDir)
+{
+    return runCommand(uiCommand(args), workDir);
+}
 
 std::vector<nlohmann::json> readReports(const std::filesystem::path& path)
 {

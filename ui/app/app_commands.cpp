@@ -28,12 +28,8 @@ void SculptApp::execute(Command command)
     case Command::ToolGrab: tool(BrushTool::Grab); break;
     case Command::ToolPinch: tool(BrushTool::Pinch); break;
     case Command::ToolPrimitive: tool(BrushTool::Primitive); break;
-    case Command::RadiusDrag:
-        mDrag = Drag::Radius, mDragStartX = mMouseX, mDragStartValue = mBrush.radius;
-        break;
-    case Command::StrengthDrag:
-        mDrag = Drag::Strength, mDragStartX = mMouseX, mDragStartValue = mBrush.strength;
-        break;
+    case Command::RadiusDrag: mDrag = Drag::Radius, mDragStartX = mMouseX, mDragStartValue = mBrush.radius; break;
+    case Command::StrengthDrag: mDrag = Drag::Strength, mDragStartX = mMouseX, mDragStartValue = mBrush.strength; break;
     case Command::RadiusSmaller:
         mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(), mBrush.radius * 0.8);
         break;
@@ -51,22 +47,27 @@ void SculptApp::execute(Command command)
         if (guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::New;
         break;
     case Command::Open:
-        if (guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
+        if (guardUnsaved(command))
+            mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
         break;
     case Command::Save:
         if (mDocument->path().empty()) execute(Command::SaveAs);
         else saveTo(mDocument->path());
         break;
     case Command::SaveAs:
-        mDialogs.prompt = Dialogs::Prompt::SaveAs, mDialogs.path = mDocument->path().string(), mDialogs.focusField = true;
+        mDialogs.prompt = Dialogs::Prompt::SaveAs, mDialogs.path = mDocument->path().string(),
+        mDialogs.focusField = true;
         break;
     case Command::ExportMesh:
         mDialogs.prompt = Dialogs::Prompt::ExportMesh, mDialogs.focusField = true;
-        mDialogs.path = mDocument->path().empty() ? "sculpt.ply" : fs::path(mDocument->path()).replace_extension(".ply").string();
+        mDialogs.path =
+            mDocument->path().empty() ? "sculpt.ply" : fs::path(mDocument->path()).replace_extension(".ply").string();
         break;
     case Command::SaveStrokes:
         mDialogs.prompt = Dialogs::Prompt::SaveStrokes, mDialogs.focusField = true;
-        mDialogs.path = mDocument->path().empty() ? "strokes.json" : fs::path(mDocument->path()).replace_extension(".strokes.json").string();
+        mDialogs.path = mDocument->path().empty()
+                            ? "strokes.json"
+                            : fs::path(mDocument->path()).replace_extension(".strokes.json").string();
         break;
     case Command::Quit:
         if (guardUnsaved(command)) mQuit = true;
@@ -115,7 +116,8 @@ void SculptApp::answerUnsaved(bool save, bool discard)
     }
     if (*then == Command::Quit) mQuit = true;
     else if (*then == Command::New) mDialogs.prompt = Dialogs::Prompt::New;
-    else if (*then == Command::Open) mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
+    else if (*then == Command::Open)
+        mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
     if (discard) mAutosave.discard(mDocument->path());
 }
 

@@ -37,8 +37,9 @@ int main(int argc, char** argv)
     cli.add_option("--play", options.play, "replay input events recorded with --record (data/ui-events.schema.json)")
         ->check(CLI::ExistingFile);
     cli.add_option("--record", options.record, "write every input event to this file at exit");
-    cli.add_option("--screenshot", options.screenshot,
-                   "write the composed window as PNG: alone, of the opening view; with --play or --strokes, at the end");
+    cli.add_option(
+        "--screenshot", options.screenshot,
+        "write the composed window as PNG: alone, of the opening view; with --play or --strokes, at the end");
     cli.add_option("--strokes", options.strokes, "replay a `sculpt apply` stroke script into the document, on screen")
         ->check(CLI::ExistingFile);
     cli.add_option("--save-as", options.saveAs, "after --play or --strokes, save the document here (.vdb)");
@@ -50,7 +51,8 @@ int main(int argc, char** argv)
     cli.add_option("--autosave-seconds", options.autosaveSeconds, "autosave interval while there are unsaved changes")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    cli.add_option("--state-dir", options.stateDir, "where recovery files and recent files live")->capture_default_str();
+    cli.add_option("--state-dir", options.stateDir, "where recovery files and recent files live")
+        ->capture_default_str();
     cli.add_option("--lod-triangles", options.lodTriangles,
                    "above this many triangles, draw a coarser mesh while the camera moves")
         ->capture_default_str();

@@ -1,5 +1,3 @@
-#include <vtk_glew.h>
-// VTK's GLEW before any other OpenGL header.
 #include "ui/app/sculpt_app.h"
 
 #include "core/base/errors.h"
@@ -9,16 +7,18 @@
 #include "ui/panels/panels.h"
 #include "ui/window/app_window.h"
 
+#include <unistd.h>
+
 #include <imgui.h>
-#include <backends/imgui_impl_opengl3.h>
 #include <nlohmann/json.hpp>
 #include <vtkImageData.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
 #include <vtkRenderer.h>
 #include <vtkUnsignedCharArray.h>
-#include <vtkPointData.h>
+#include <vtk_glew.h>  // the OpenGL calls made here, as VTK loads them (no other GL header)
 
-#include <unistd.h>
+#include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -116,7 +116,8 @@ void SculptApp::frameModel()
     const FieldImage& field = mDocument->session().field();
     if (!field.grid().tree().evalLeafBoundingBox(box)) return;
     const openvdb::BBoxd world = field.grid().transform().indexToWorld(box);
-    mCamera.frame({world.min().x(), world.min().y(), world.min().z()}, {world.max().x(), world.max().y(), world.max().z()});
+    mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
+                  {world.max().x(), world.max().y(), world.max().z()});
     mHoverValid = false;
 }
 
@@ -127,10 +128,7 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
     return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
 }
 
-double SculptApp::arrival(const InputEvent& event) const
-{
-    return mPlayer ? mPlayStart + event.time : event.time;
-}
+double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayStart + event.time : event.time; }
 
 bool SculptApp::modalOpen() const
 {
@@ -251,7 +249,9 @@ void SculptApp::routeMouse(const InputEvent& event)
         mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
                                  mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));
         break;
-    case Drag::Strength: mBrush.strength = std::clamp(mDragStartValue + (event.x - mDragStartX) / 300.0, 0.01, 1.0); break;
+    case Drag::Strength:
+        mBrush.strength = std::clamp(mDragStartValue + (event.x - mDragStartX) / 300.0, 0.01, 1.0);
+        break;
     case Drag::None: break;
     }
 }
@@ -292,8 +292,8 @@ void SculptApp::updateCursor()
         mHoverValid = true;
     }
     const bool show = mHover && !ImGui::GetIO().WantCaptureMouse;
-    mCursor.setColour(effectiveTool(mBrush.tool, mMods) == BrushTool::Carve ? 1.0 : 1.0,
-                      mStroke.active() ? 0.75 : 1.0, mStroke.active() ? 0.45 : 1.0);
+    mCursor.setColour(effectiveTool(mBrush.tool, mMods) == BrushTool::Carve ? 1.0 : 1.0, mStroke.active() ? 0.75 : 1.0,
+                      mStroke.active() ? 0.45 : 1.0);
     if (show) mCursor.place(true, mHover->position, mHover->normal, mBrush.radius, mBrush.symmetry);
     else mCursor.place(false, {}, {}, 0.0, {});
 }
@@ -434,8 +434,9 @@ void SculptApp::writeReport(const fs::path& path)
     mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
     mLastRemeshed = 0;
     const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
-    r["pick"] = hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
-                    : nlohmann::json{{"hit", false}};
+    r["pick"] =
+        hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
+            : nlohmann::json{{"hit", false}};
     r["modified"] = mDocument->modified();
     r["title"] = mDocument->title();
     r["path"] = mDocument->path().string();
@@ -516,7 +517,8 @@ void SculptApp::autosave()
 int SculptApp::run()
 {
     frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here
-    std::cout << "sculpt-ui: first frame in " << formatNumber(std::round(mWindow.time() * 1000.0) / 1000.0) << " s" << std::endl;
+    std::cout << "sculpt-ui: first frame in " << formatNumber(std::round(mWindow.time() * 1000.0) / 1000.0) << " s"
+              << std::endl;
     if (!mOptions.strokes.empty()) replayStrokes();
     const bool scripted = mPlayer || !mOptions.strokes.empty() || !mOptions.screenshot.empty();
     if (!mPlayer && scripted) finishReplay();

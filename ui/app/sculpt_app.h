@@ -28,15 +28,15 @@ namespace sculpt::ui {
 class AppWindow;
 
 struct AppOptions {
-    std::filesystem::path document;        ///< empty: the default clay ball
-    std::filesystem::path play, record;    ///< event recordings
-    std::filesystem::path screenshot;      ///< after the opening view, or after the replay
-    std::filesystem::path strokes;         ///< a stroke script to replay into the document
+    std::filesystem::path document;                       ///< empty: the default clay ball
+    std::filesystem::path play, record;                   ///< event recordings
+    std::filesystem::path screenshot;                     ///< after the opening view, or after the replay
+    std::filesystem::path strokes;                        ///< a stroke script to replay into the document
     std::filesystem::path saveAs, exportMesh, strokeLog;  ///< written when the replay ends
-    std::filesystem::path stateDir;        ///< recovery files and recent files
+    std::filesystem::path stateDir;                       ///< recovery files and recent files
     double autosaveSeconds = Autosave::kDefaultIntervalSeconds;
-    std::size_t lodTriangles = 300000;     ///< coarse display while moving above this many
-    bool stay = false;                     ///< keep the window open after a replay
+    std::size_t lodTriangles = 300000;  ///< coarse display while moving above this many
+    bool stay = false;                  ///< keep the window open after a replay
 };
 
 /// The figures of the status bar.
@@ -54,12 +54,12 @@ struct StatusFigures {
 struct Dialogs {
     enum class Prompt { None, New, Open, SaveAs, ExportMesh, SaveStrokes };
     Prompt prompt = Prompt::None;
-    std::string path;                       ///< the prompt's text field
+    std::string path;  ///< the prompt's text field
     NewShape newShape;
-    std::optional<Command> afterUnsaved;    ///< asking "save changes?" before this command
+    std::optional<Command> afterUnsaved;            ///< asking "save changes?" before this command
     std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
-    std::string error;                      ///< shown until dismissed
-    std::string notice;                     ///< status line (saved, autosaved, ...)
+    std::string error;                              ///< shown until dismissed
+    std::string notice;                             ///< status line (saved, autosaved, ...)
     bool help = false;
     bool focusField = false;
 };
@@ -146,7 +146,7 @@ private:
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     std::optional<SurfaceHit> mHover;
     bool mHoverValid = false;
-    bool mItemActive = false;  // an ImGui item (a text field) was active at the end of the last frame
+    bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
 
     // Frame bookkeeping.

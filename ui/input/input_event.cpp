@@ -24,19 +24,32 @@ const std::vector<std::pair<int, const char*>>& namedKeys()
 {
     static const std::vector<std::pair<int, const char*>> keys = [] {
         std::vector<std::pair<int, const char*>> k = {
-            {GLFW_KEY_SPACE, "Space"},        {GLFW_KEY_ESCAPE, "Escape"},
-            {GLFW_KEY_ENTER, "Enter"},        {GLFW_KEY_TAB, "Tab"},
-            {GLFW_KEY_BACKSPACE, "Backspace"}, {GLFW_KEY_DELETE, "Delete"},
-            {GLFW_KEY_LEFT, "Left"},          {GLFW_KEY_RIGHT, "Right"},
-            {GLFW_KEY_UP, "Up"},              {GLFW_KEY_DOWN, "Down"},
-            {GLFW_KEY_HOME, "Home"},          {GLFW_KEY_END, "End"},
-            {GLFW_KEY_PAGE_UP, "PageUp"},     {GLFW_KEY_PAGE_DOWN, "PageDown"},
-            {GLFW_KEY_LEFT_BRACKET, "LeftBracket"}, {GLFW_KEY_RIGHT_BRACKET, "RightBracket"},
-            {GLFW_KEY_KP_DECIMAL, "KPDecimal"}, {GLFW_KEY_KP_ADD, "KPAdd"},
-            {GLFW_KEY_KP_SUBTRACT, "KPSubtract"}, {GLFW_KEY_LEFT_SHIFT, "LeftShift"},
-            {GLFW_KEY_LEFT_CONTROL, "LeftControl"}, {GLFW_KEY_LEFT_ALT, "LeftAlt"},
-            {GLFW_KEY_RIGHT_SHIFT, "RightShift"}, {GLFW_KEY_RIGHT_CONTROL, "RightControl"},
-            {GLFW_KEY_RIGHT_ALT, "RightAlt"}, {GLFW_KEY_EQUAL, "Equal"},
+            {GLFW_KEY_SPACE, "Space"},
+            {GLFW_KEY_ESCAPE, "Escape"},
+            {GLFW_KEY_ENTER, "Enter"},
+            {GLFW_KEY_TAB, "Tab"},
+            {GLFW_KEY_BACKSPACE, "Backspace"},
+            {GLFW_KEY_DELETE, "Delete"},
+            {GLFW_KEY_LEFT, "Left"},
+            {GLFW_KEY_RIGHT, "Right"},
+            {GLFW_KEY_UP, "Up"},
+            {GLFW_KEY_DOWN, "Down"},
+            {GLFW_KEY_HOME, "Home"},
+            {GLFW_KEY_END, "End"},
+            {GLFW_KEY_PAGE_UP, "PageUp"},
+            {GLFW_KEY_PAGE_DOWN, "PageDown"},
+            {GLFW_KEY_LEFT_BRACKET, "LeftBracket"},
+            {GLFW_KEY_RIGHT_BRACKET, "RightBracket"},
+            {GLFW_KEY_KP_DECIMAL, "KPDecimal"},
+            {GLFW_KEY_KP_ADD, "KPAdd"},
+            {GLFW_KEY_KP_SUBTRACT, "KPSubtract"},
+            {GLFW_KEY_LEFT_SHIFT, "LeftShift"},
+            {GLFW_KEY_LEFT_CONTROL, "LeftControl"},
+            {GLFW_KEY_LEFT_ALT, "LeftAlt"},
+            {GLFW_KEY_RIGHT_SHIFT, "RightShift"},
+            {GLFW_KEY_RIGHT_CONTROL, "RightControl"},
+            {GLFW_KEY_RIGHT_ALT, "RightAlt"},
+            {GLFW_KEY_EQUAL, "Equal"},
             {GLFW_KEY_MINUS, "Minus"},
         };
         static const char* letters[] = {"A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M",
@@ -56,9 +69,15 @@ const std::vector<std::pair<int, const char*>>& namedKeys()
 }
 
 const std::vector<std::pair<EventType, const char*>> kTypeNames = {
-    {EventType::MouseMove, "move"},   {EventType::MouseButton, "button"},     {EventType::Wheel, "wheel"},
-    {EventType::Key, "key"},          {EventType::Text, "text"},              {EventType::Resize, "resize"},
-    {EventType::Screenshot, "screenshot"}, {EventType::Report, "report"},     {EventType::Quit, "quit"},
+    {EventType::MouseMove, "move"},
+    {EventType::MouseButton, "button"},
+    {EventType::Wheel, "wheel"},
+    {EventType::Key, "key"},
+    {EventType::Text, "text"},
+    {EventType::Resize, "resize"},
+    {EventType::Screenshot, "screenshot"},
+    {EventType::Report, "report"},
+    {EventType::Quit, "quit"},
 };
 const std::vector<std::pair<int, const char*>> kModNames = {
     {kShift, "shift"}, {kControl, "ctrl"}, {kAlt, "alt"}, {kSuper, "super"}};
@@ -67,14 +86,17 @@ const char* kButtonNames[] = {"left", "right", "middle"};
 int parseMods(const json& j, const std::string& where)
 {
     if (!j.contains("mods")) return 0;
-    if (!j["mods"].is_array()) throw InputError(where + ": field 'mods' must be an array of \"shift\", \"ctrl\", \"alt\", \"super\"");
+    if (!j["mods"].is_array())
+        throw InputError(where + ": field 'mods' must be an array of \"shift\", \"ctrl\", \"alt\", \"super\"");
     int mods = 0;
     for (const json& m : j["mods"]) {
         bool known = false;
         for (const auto& [bit, name] : kModNames) {
             if (m.is_string() && m.get<std::string>() == name) mods |= bit, known = true;
         }
-        if (!known) throw InputError(where + ": field 'mods' has " + m.dump() + " (expected \"shift\", \"ctrl\", \"alt\" or \"super\")");
+        if (!known)
+            throw InputError(where + ": field 'mods' has " + m.dump() +
+                             " (expected \"shift\", \"ctrl\", \"alt\" or \"super\")");
     }
     return mods;
 }
@@ -98,7 +120,9 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
     for (const auto& [t, name] : kTypeNames) {
         if (type == name) e.type = t, known = true;
     }
-    if (!known) throw InputError(where + ": field 'type' is \"" + type + "\" (expected move, button, wheel, key, text, resize, screenshot, report or quit)");
+    if (!known)
+        throw InputError(where + ": field 'type' is \"" + type +
+                         "\" (expected move, button, wheel, key, text, resize, screenshot, report or quit)");
     if (j.contains("t")) {
         const double t = number(j, "t", where);
         if (!(t >= clock)) throw InputError(where + ": field 't' must not decrease (seconds since the start)");
@@ -117,8 +141,12 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         break;
     case EventType::MouseButton: {
         const std::string button = textOr(j, "button", "left", where);
-        e.button = button == "left" ? kLeftButton : button == "right" ? kRightButton : button == "middle" ? kMiddleButton : -1;
-        if (e.button < 0) throw InputError(where + ": field 'button' is \"" + button + "\" (expected left, right or middle)");
+        e.button = button == "left"     ? kLeftButton
+                   : button == "right"  ? kRightButton
+                   : button == "middle" ? kMiddleButton
+                                        : -1;
+        if (e.button < 0)
+            throw InputError(where + ": field 'button' is \"" + button + "\" (expected left, right or middle)");
         e.mods = parseMods(j, where);
         tap = !j.contains("action");
         e.press = parsePress(j, where);
@@ -127,7 +155,9 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
     case EventType::Key: {
         const std::string key = textOr(j, "key", "", where);
         e.key = keyFromName(key);
-        if (e.key < 0) throw InputError(where + ": field 'key' is \"" + key + "\", not a key name (A-Z, 0-9, F1-F12, Escape, Enter, ...)");
+        if (e.key < 0)
+            throw InputError(where + ": field 'key' is \"" + key +
+                             "\", not a key name (A-Z, 0-9, F1-F12, Escape, Enter, ...)");
         e.mods = parseMods(j, where);
         tap = !j.contains("action");
         e.press = parsePress(j, where);
@@ -142,7 +172,8 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         }
         break;
     case EventType::Screenshot:
-    case EventType::Report: e.text = textOr(j, "path", "", where);
+    case EventType::Report:
+        e.text = textOr(j, "path", "", where);
         if (e.text.empty()) throw InputError(where + ": field 'path' is missing");
         break;
     case EventType::Quit: break;
@@ -170,7 +201,9 @@ json eventJson(const InputEvent& e)
     case EventType::MouseButton:
         j["button"] = kButtonNames[e.button], j["action"] = e.press ? "press" : "release", j["mods"] = mods;
         break;
-    case EventType::Key: j["key"] = keyName(e.key), j["action"] = e.press ? "press" : "release", j["mods"] = mods; break;
+    case EventType::Key:
+        j["key"] = keyName(e.key), j["action"] = e.press ? "press" : "release", j["mods"] = mods;
+        break;
     case EventType::Text: j["text"] = e.text; break;
     case EventType::Resize: j["width"] = e.width, j["height"] = e.height; break;
     case EventType::Screenshot:
@@ -224,7 +257,8 @@ std::vector<InputEvent> readInputEvents(const std::string& path)
         throw InputError(path + ": field 'format' must be \"" + std::string(kFormat) + "\"");
     }
     if (numberOr(root, "version", kVersion, path) != kVersion) {
-        throw InputError(path + ": version " + root["version"].dump() + " is not supported (this program reads version 1)");
+        throw InputError(path + ": version " + root["version"].dump() +
+                         " is not supported (this program reads version 1)");
     }
     const json& events = field(root, "events", path);
     if (!events.is_array()) throw InputError(path + ": field 'events' must be an array");

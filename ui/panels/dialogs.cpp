@@ -105,7 +105,8 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::Open: return pathDialog(app, "Open", "A .vdb document (path, then Enter)");
     case Dialogs::Prompt::SaveAs: return pathDialog(app, "Save As", "A .vdb file to write");
     case Dialogs::Prompt::ExportMesh: return pathDialog(app, "Export Mesh", "A .ply, .obj or .stl file to write");
-    case Dialogs::Prompt::SaveStrokes: return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
+    case Dialogs::Prompt::SaveStrokes:
+        return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
     case Dialogs::Prompt::None: return;
     }
 }

@@ -50,15 +50,19 @@ void drawMainMenu(SculptApp& app)
     }
     if (ImGui::BeginMenu("View")) {
         for (int s = 0; s < 4; ++s) {
-            if (ImGui::MenuItem(kShadingNames[s], nullptr, int(app.look().shading()) == s)) app.look().setShading(Shading(s));
+            if (ImGui::MenuItem(kShadingNames[s], nullptr, int(app.look().shading()) == s))
+                app.look().setShading(Shading(s));
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Flat Shading", shortcutText(Command::ToggleFlat).c_str(), app.look().flat())) app.execute(Command::ToggleFlat);
-        if (ImGui::MenuItem("Wireframe", shortcutText(Command::ToggleWireframe).c_str(), app.look().wireframe())) app.execute(Command::ToggleWireframe);
-        if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball)) app.execute(Command::ToggleTrackball);
+        if (ImGui::MenuItem("Flat Shading", shortcutText(Command::ToggleFlat).c_str(), app.look().flat()))
+            app.execute(Command::ToggleFlat);
+        if (ImGui::MenuItem("Wireframe", shortcutText(Command::ToggleWireframe).c_str(), app.look().wireframe()))
+            app.execute(Command::ToggleWireframe);
+        if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
+            app.execute(Command::ToggleTrackball);
         ImGui::Separator();
-        for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight, Command::ViewLeft,
-                          Command::ViewTop, Command::ViewBottom}) {
+        for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight,
+                          Command::ViewLeft, Command::ViewTop, Command::ViewBottom}) {
             item(c);
         }
         ImGui::EndMenu();

@@ -13,10 +13,14 @@ struct ToolButton {
 };
 
 constexpr ToolButton kTools[] = {
-    {BrushTool::Add, Command::ToolAdd},         {BrushTool::Carve, Command::ToolCarve},
-    {BrushTool::Inflate, Command::ToolInflate}, {BrushTool::Deflate, Command::ToolDeflate},
-    {BrushTool::Smooth, Command::ToolSmooth},   {BrushTool::Flatten, Command::ToolFlatten},
-    {BrushTool::Grab, Command::ToolGrab},       {BrushTool::Pinch, Command::ToolPinch},
+    {BrushTool::Add, Command::ToolAdd},
+    {BrushTool::Carve, Command::ToolCarve},
+    {BrushTool::Inflate, Command::ToolInflate},
+    {BrushTool::Deflate, Command::ToolDeflate},
+    {BrushTool::Smooth, Command::ToolSmooth},
+    {BrushTool::Flatten, Command::ToolFlatten},
+    {BrushTool::Grab, Command::ToolGrab},
+    {BrushTool::Pinch, Command::ToolPinch},
     {BrushTool::Primitive, Command::ToolPrimitive},
 };
 

@@ -24,14 +24,13 @@ BrushTool effectiveTool(BrushTool tool, int mods)
 std::string primitiveScene(const BrushOptions& options, int mods)
 {
     // A soft object of radius R crosses iso 0.5 near R / 2: twice the brush gives a blob its size.
-    const nlohmann::json scene = {
-        {"iso", 0.5},
-        {"operation", (mods & kControl) ? "difference" : "union"},
-        {"primitives",
-         {{{"kernel", "soft-object"},
-           {"radius", 2.0 * options.radius},
-           {"strength", 1.0},
-           {"skeleton", {{"type", "point"}, {"position", {0.0, 0.0, 0.0}}}}}}}};
+    const nlohmann::json scene = {{"iso", 0.5},
+                                  {"operation", (mods & kControl) ? "difference" : "union"},
+                                  {"primitives",
+                                   {{{"kernel", "soft-object"},
+                                     {"radius", 2.0 * options.radius},
+                                     {"strength", 1.0},
+                                     {"skeleton", {{"type", "point"}, {"position", {0.0, 0.0, 0.0}}}}}}}};
     return scene.dump();
 }
 
@@ -47,7 +46,8 @@ Stroke strokeSettings(const BrushOptions& options, int mods)
     stroke.symmetry = options.symmetry;
     if (stroke.brush.tool == BrushTool::Primitive) {
         const Scene scene = parseScene(primitiveScene(options, mods), "primitive stamp");
-        stroke.brush.primitive = std::make_shared<const PrimitiveStamp>(PrimitiveStamp{scene.primitives, scene.operation});
+        stroke.brush.primitive =
+            std::make_shared<const PrimitiveStamp>(PrimitiveStamp{scene.primitives, scene.operation});
     }
     return stroke;
 }

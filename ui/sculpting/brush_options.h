@@ -14,8 +14,8 @@ struct BrushOptions {
     Falloff falloff = Falloff::Smooth;
     double spacing = 0.25;  ///< of the radius
     Symmetry symmetry;
-    bool keepVolume = false;         ///< smooth
-    bool pressureFromSpeed = true;   ///< a mouse has no pressure: faster strokes press lighter
+    bool keepVolume = false;        ///< smooth
+    bool pressureFromSpeed = true;  ///< a mouse has no pressure: faster strokes press lighter
 };
 
 /// The tool a stroke uses: Shift smooths while held; Ctrl inverts add/carve, inflate/deflate

@@ -15,8 +15,7 @@ constexpr double kLightestPressure = 0.35;
 
 StrokeSample sampleAt(const glm::dvec3& p, double pressure, const Ray& ray)
 {
-    return {openvdb::Vec3d(p.x, p.y, p.z), pressure,
-            openvdb::Vec3d(ray.direction.x, ray.direction.y, ray.direction.z)};
+    return {openvdb::Vec3d(p.x, p.y, p.z), pressure, openvdb::Vec3d(ray.direction.x, ray.direction.y, ray.direction.z)};
 }
 
 }  // namespace

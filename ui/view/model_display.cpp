@@ -208,7 +208,8 @@ BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld)
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
         const auto& p = mesh.positions[v];
         std::uint64_t key = 0;
-        for (int a = 0; a < 3; ++a) key = key << 21 | (std::uint64_t(std::int64_t(std::floor(p[a] / cellWorld)) + (1 << 20)) & 0x1FFFFF);
+        for (int a = 0; a < 3; ++a)
+            key = key << 21 | (std::uint64_t(std::int64_t(std::floor(p[a] / cellWorld)) + (1 << 20)) & 0x1FFFFF);
         auto [it, fresh] = clusterOf.try_emplace(key, std::uint32_t(out.positions.size()));
         if (fresh) {
             out.positions.push_back({0.f, 0.f, 0.f});

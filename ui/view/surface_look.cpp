@@ -46,8 +46,10 @@ struct Matcap {
 Matcap matcapOf(Shading shading)
 {
     switch (shading) {
-    case Shading::White: return {{0.92f, 0.92f, 0.90f}, {0.30f, 0.31f, 0.34f}, {0.18f, 0.18f, 0.20f}, 0.10f, 24.f, 0.30f};
-    case Shading::RedWax: return {{0.78f, 0.16f, 0.12f}, {0.20f, 0.03f, 0.03f}, {0.30f, 0.10f, 0.08f}, 0.45f, 60.f, 0.55f};
+    case Shading::White:
+        return {{0.92f, 0.92f, 0.90f}, {0.30f, 0.31f, 0.34f}, {0.18f, 0.18f, 0.20f}, 0.10f, 24.f, 0.30f};
+    case Shading::RedWax:
+        return {{0.78f, 0.16f, 0.12f}, {0.20f, 0.03f, 0.03f}, {0.30f, 0.10f, 0.08f}, 0.45f, 60.f, 0.55f};
     default: return {{0.80f, 0.62f, 0.48f}, {0.26f, 0.17f, 0.13f}, {0.16f, 0.13f, 0.12f}, 0.06f, 12.f, 0.40f};
     }
 }

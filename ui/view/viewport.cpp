@@ -1,15 +1,13 @@
 #include "ui/view/viewport.h"
 
-#include <vtk_glew.h>
-// VTK's GLEW first: GLFW and ImGui must not pull in another OpenGL header before it.
+#include <glm/gtc/matrix_transform.hpp>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkMatrix4x4.h>
 #include <vtkOpenGLState.h>
 #include <vtkRenderer.h>
-
-#include <glm/gtc/matrix_transform.hpp>
+#include <vtk_glew.h>  // the OpenGL calls made here, as VTK loads them (no other GL header)
 
 namespace sculpt::ui {
 

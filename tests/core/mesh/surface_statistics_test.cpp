@@ -45,10 +45,10 @@ TEST(SurfaceStatistics, FollowsEditsBlockByBlockAndCountsShells)
     SurfaceStatistics stats;
     stats.update(mesher);
     // A separate ball beside the sphere: a second shell, found across the blocks it spans.
-    const FieldImage ball = rasterizeSdf(
-        {[](const openvdb::Vec3d& p) { return (p - openvdb::Vec3d(25, 3, 0)).length() - 6.0; },
-         openvdb::BBoxd(openvdb::Vec3d(19, -3, -6), openvdb::Vec3d(31, 9, 6)), 4 * M_PI * 36, "ball"},
-        0.5);
+    const FieldImage ball =
+        rasterizeSdf({[](const openvdb::Vec3d& p) { return (p - openvdb::Vec3d(25, 3, 0)).length() - 6.0; },
+                      openvdb::BBoxd(openvdb::Vec3d(19, -3, -6), openvdb::Vec3d(31, 9, 6)), 4 * M_PI * 36, "ball"},
+                     0.5);
     mesher.update(field, combine(field, ball, CsgOperation::Union));
     stats.update(mesher);
     expectAgreesWithWeldedMesh(mesher, stats, 2);

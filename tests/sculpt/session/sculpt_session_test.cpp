@@ -93,7 +93,9 @@ TEST(StrokeStamps, APrefixOfTheSamplesStampsAPrefixOfTheStamps)
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> step(-1.5, 1.5);
     Stroke stroke = strokeOf(BrushTool::Add, 2.0, {Vec3d(0.0)});
-    for (int i = 0; i < 60; ++i) stroke.samples.push_back({stroke.samples.back().positionWorld + Vec3d(step(rng), step(rng), step(rng)), 0.5 + 0.008 * i, Vec3d(0, 0, -1)});
+    for (int i = 0; i < 60; ++i)
+        stroke.samples.push_back({stroke.samples.back().positionWorld + Vec3d(step(rng), step(rng), step(rng)),
+                                  0.5 + 0.008 * i, Vec3d(0, 0, -1)});
     stroke.symmetry.y = true;
     const std::vector<BrushStamp> all = strokeStamps(stroke);
     StrokeStepper live(stroke);
@@ -311,11 +313,14 @@ TEST(StrokeScript, AWrittenScriptReadsBackAndReplaysBitForBit)
     smooth.brush.keepVolume = true;
     script.events.push_back({ScriptEvent::Kind::Stroke, smooth, {}});
     script.events.push_back({ScriptEvent::Kind::Undo, {}, {}});
-    const std::string scene = R"({"iso": 0.5, "operation": "union", "primitives": [{"kernel": "soft-object", "radius": 4, "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
+    const std::string scene =
+        R"({"iso": 0.5, "operation": "union", "primitives": [{"kernel": "soft-object", "radius": 4, "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
     Stroke blob = strokeOf(BrushTool::Primitive, 2.0, {Vec3d(0, 0, 20)});
-    blob.brush.primitive = parseStrokeScript(R"({"events": [{"tool": "primitive", "radius": 2, "primitives": )" + scene +
-                                                 R"(, "samples": [[0, 0, 20]]}]})", "inline", ".")
-                               .events[0].stroke.brush.primitive;
+    blob.brush.primitive = parseStrokeScript(R"({"events": [{"tool": "primitive", "radius": 2, "primitives": )" +
+                                                 scene + R"(, "samples": [[0, 0, 20]]}]})",
+                                             "inline", ".")
+                               .events[0]
+                               .stroke.brush.primitive;
     script.events.push_back({ScriptEvent::Kind::Stroke, blob, scene});
 
     const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
