@@ -1,5 +1,7 @@
 #include "tests/ui/ui_driver.h"
 
+#include <unistd.h>
+
 #include <vtkImageData.h>
 #include <vtkPNGReader.h>
 
@@ -65,12 +67,21 @@ void UiEvents::write(const std::filesystem::path& path) const
 
 std::string uiCommand(const std::string& args)
 {
-    return "xvfb-run -a -s '-screen 0 1280x800x24' '" SCULPT_UI_EXECUTABLE "' " + args;
+    // xvfb-run -a looks for a free display from a start number: start each run elsewhere, so
+    // tests running side by side (ctest -j) do not race for the same one.
+    static int runs = 0;
+    const int start = 100 + int(getpid() % 400) * 8 + (runs++ % 8);
+    return "xvfb-run -a -n " + std::to_string(start) + " -s '-screen 0 1280x800x24' '" SCULPT_UI_EXECUTABLE "' " + args;
 }
 
 CommandResult runUi(const std::string& args, const std::string& workDir)
 {
-    return runCommand(uiCommand(args), workDir);
+    CommandResult result;
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        result = runCommand(uiCommand(args), workDir);
+        if (result.err.find("xvfb-run: error") == std::string::npos) break;  // the X server, not the program
+    }
+    return result;
 }
 
 std::vector<nlohmann::json> readReports(const std::filesystem::path& path)
