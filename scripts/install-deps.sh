@@ -8,6 +8,7 @@ packages=(
   libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev
   libvtk9-dev libopenexr-dev
   libglfw3-dev libglm-dev libimgui-dev
+  xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   mricron-data

@@ -17,12 +17,15 @@ constexpr const char* kMatcapFunction = R"(
 //VTK::Light::Dec
 vec3 matcapColour(vec3 n)
 {
+  float len = length(n);
+  n = len > 1e-6 ? n / len : vec3(0.0, 0.0, 1.0);  // a degenerate normal: no black speck
   vec3 key = normalize(vec3(-0.45, 0.55, 0.70));
   float wrap = clamp((dot(n, key) + matcapWrap) / (1.0 + matcapWrap), 0.0, 1.0);
   vec3 colour = mix(matcapShadow, matcapBase, wrap * wrap * (3.0 - 2.0 * wrap));
   vec3 halfway = normalize(key + vec3(0.0, 0.0, 1.0));
   colour += matcapSpecular * pow(max(dot(n, halfway), 0.0), matcapGloss);
-  colour += matcapRim * pow(1.0 - max(n.z, 0.0), 3.0);
+  // The rim lights silhouettes only: normals turned away (inside a nostril) get none.
+  colour += matcapRim * pow(1.0 - clamp(n.z, 0.0, 1.0), 3.0) * clamp(1.0 + 4.0 * n.z, 0.0, 1.0);
   colour *= 0.85 + 0.15 * clamp(0.5 + 0.5 * n.y, 0.0, 1.0);
   return colour;
 }
@@ -33,7 +36,7 @@ vec3 matcapColour(vec3 n)
 std::string matcapImpl(bool wireframe)
 {
     return std::string("//VTK::Light::Impl\n  if (matcapOn == 1) {\n"
-                       "    vec3 matcap = matcapColour(normalize(normalVCVSOutput));\n") +
+                       "    vec3 matcap = matcapColour(normalVCVSOutput);\n") +
            (wireframe ? "    matcap = mix(matcap, vec3(0.08, 0.08, 0.1), emix);\n" : "") +
            "    gl_FragData[0] = vec4(matcap, 1.0);\n  }\n";
 }
