@@ -31,23 +31,25 @@ declare -A uiAllowed=(
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }
 
-for folder in core/*/; do
-  layer=$(basename "$folder")
-  [[ -v allowed[$layer] ]] || { fail "core/$layer is not a layer of ARCHITECTURE.md"; continue; }
-  while IFS=: read -r file used; do
-    [[ $used == "$layer" || " ${allowed[$layer]} " == *" $used "* ]] || fail "$file includes core/$used/"
-  done < <(grep -roE '#include "core/[a-z_]+/' "$folder" | sed -E 's#:\#include "core/([a-z_]+)/#:\1#')
-done
+# check_parts ROOT RULES: each folder of ROOT/ includes only ROOT/ folders its RULES entry lists.
+check_parts() {
+  local root=$1
+  local -n rules=$2
+  for folder in "$root"/*/; do
+    local part
+    part=$(basename "$folder")
+    [[ -v rules[$part] ]] || { fail "$root/$part is not in ARCHITECTURE.md"; continue; }
+    while IFS=: read -r file used; do
+      [[ $used == "$part" || " ${rules[$part]} " == *" $used "* ]] || fail "$file includes $root/$used/"
+    done < <(grep -roE "#include \"$root/[a-z_]+/" "$folder" | sed -E "s#:\#include \"$root/([a-z_]+)/#:\1#")
+  done
+}
+
+check_parts core allowed
+check_parts ui uiAllowed
 grep -rlE '#include "(sculpt|ui)/' core && fail "core/ includes sculpt/ or ui/"
 grep -rlE '#include <vtk' core | grep -vE '^core/(scan|io)/' && fail "VTK included outside core/scan and core/io"
 grep -rlE '#include ("sculpt/cli/|"ui/|<CLI/)' sculpt/session && fail "the session includes the command line or the UI"
-for folder in ui/*/; do
-  part=$(basename "$folder")
-  [[ -v uiAllowed[$part] ]] || { fail "ui/$part is not a part of ui/ in ARCHITECTURE.md"; continue; }
-  while IFS=: read -r file used; do
-    [[ $used == "$part" || " ${uiAllowed[$part]} " == *" $used "* ]] || fail "$file includes ui/$used/"
-  done < <(grep -roE '#include "ui/[a-z_]+/' "$folder" | sed -E 's#:\#include "ui/([a-z_]+)/#:\1#')
-done
 grep -rlE '#include "sculpt/cli/' ui && fail "ui/ includes the command line"
 grep -rlE '#include <vtk' ui | grep -vE '^ui/(view|app)/' && fail "VTK included outside ui/view and ui/app"
 grep -rlE '#include <(imgui|backends/)' ui | grep -vE '^ui/(panels|app|input)/' && fail "ImGui outside ui/panels, ui/input, ui/app"

@@ -166,6 +166,25 @@ TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
     EXPECT_NE(checksumOfFile(dir / "ball.vdb"), ui);
 }
 
+TEST(SculptUi, ARecordingReplaysToTheSameGridAndAResizeResizesTheView)
+{
+    TempDir dir;
+    UiEvents events;
+    events.key("I").drag(560, 380, 700, 420, 12).key("RightBracket").drag(600, 300, 660, 320, 6, {"ctrl"});
+    events.report(dir / "r.jsonl").resize(800, 600).screenshot(dir / "small.png");
+    ASSERT_EQ(play(dir, events, "", "--record " + shellQuoted(dir / "recorded.json")).exitCode, 0);
+    EXPECT_EQ(readPng(dir / "small.png")->GetDimensions()[0], 800);
+    EXPECT_EQ(readPng(dir / "small.png")->GetDimensions()[1], 600);
+    // The recording holds every input (no report, no screenshot): replayed, it makes the same grid.
+    const CommandResult again =
+        runUi("--play recorded.json --state-dir state --save-as replayed.vdb", dir.path().string());
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    const auto report = readReports(dir / "r.jsonl").at(0);
+    EXPECT_EQ(report["undo"], 2);  // both strokes landed
+    const std::string made = report["checksum"];
+    EXPECT_EQ(checksumOfFile(dir / "replayed.vdb"), made);
+}
+
 TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing)
 {
     TempDir dir;

@@ -52,6 +52,11 @@ UiEvents& UiEvents::screenshot(const std::filesystem::path& path)
 {
     return add({{"type", "screenshot"}, {"path", path.string()}});
 }
+UiEvents& UiEvents::resize(int width, int height)
+{
+    return add({{"type", "resize"}, {"width", width}, {"height", height}});
+}
+
 UiEvents& UiEvents::quit() { return add({{"type", "quit"}}); }
 
 UiEvents& UiEvents::wait(double seconds)

@@ -29,6 +29,7 @@ public:
     UiEvents& text(const std::string& characters);
     UiEvents& report(const std::filesystem::path& path);
     UiEvents& screenshot(const std::filesystem::path& path);
+    UiEvents& resize(int width, int height);
     UiEvents& quit();
     UiEvents& wait(double seconds);
     void write(const std::filesystem::path& path) const;

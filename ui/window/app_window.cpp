@@ -10,6 +10,14 @@ namespace {
 
 AppWindow* owner(GLFWwindow* window) { return static_cast<AppWindow*>(glfwGetWindowUserPointer(window)); }
 
+InputEvent eventOf(EventType type, double x = 0.0, double y = 0.0)
+{
+    InputEvent e;
+    e.type = type;
+    e.x = x, e.y = y;
+    return e;
+}
+
 std::string glfwError()
 {
     const char* text = nullptr;
@@ -47,50 +55,36 @@ AppWindow::~AppWindow()
 
 void AppWindow::installCallbacks()
 {
-    glfwSetCursorPosCallback(mWindow, [](GLFWwindow* w, double x, double y) {
-        InputEvent e;
-        e.type = EventType::MouseMove;
-        e.x = x, e.y = y;
-        owner(w)->deliver(e);
-    });
+    glfwSetCursorPosCallback(
+        mWindow, [](GLFWwindow* w, double x, double y) { owner(w)->deliver(eventOf(EventType::MouseMove, x, y)); });
+    glfwSetScrollCallback(
+        mWindow, [](GLFWwindow* w, double dx, double dy) { owner(w)->deliver(eventOf(EventType::Wheel, dx, dy)); });
     glfwSetMouseButtonCallback(mWindow, [](GLFWwindow* w, int button, int action, int mods) {
         if (button > kMiddleButton) return;
-        InputEvent e;
-        e.type = EventType::MouseButton;
+        InputEvent e = eventOf(EventType::MouseButton);
         e.button = button, e.press = action == GLFW_PRESS, e.mods = mods;
-        owner(w)->deliver(e);
-    });
-    glfwSetScrollCallback(mWindow, [](GLFWwindow* w, double dx, double dy) {
-        InputEvent e;
-        e.type = EventType::Wheel;
-        e.x = dx, e.y = dy;
         owner(w)->deliver(e);
     });
     glfwSetKeyCallback(mWindow, [](GLFWwindow* w, int key, int, int action, int mods) {
         if (action == GLFW_REPEAT || keyName(key).empty()) return;
-        InputEvent e;
-        e.type = EventType::Key;
+        InputEvent e = eventOf(EventType::Key);
         e.key = key, e.press = action == GLFW_PRESS, e.mods = mods;
         owner(w)->deliver(e);
     });
     glfwSetCharCallback(mWindow, [](GLFWwindow* w, unsigned codepoint) {
         if (codepoint >= 0x80) return;  // the recordings are ASCII; ImGui's default font is too
-        InputEvent e;
-        e.type = EventType::Text;
+        InputEvent e = eventOf(EventType::Text);
         e.text = std::string(1, char(codepoint));
         owner(w)->deliver(e);
     });
     glfwSetFramebufferSizeCallback(mWindow, [](GLFWwindow* w, int width, int height) {
-        InputEvent e;
-        e.type = EventType::Resize;
+        InputEvent e = eventOf(EventType::Resize);
         e.width = width, e.height = height;
         owner(w)->deliver(e);
     });
     glfwSetWindowCloseCallback(mWindow, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the application decides (unsaved changes)
-        InputEvent e;
-        e.type = EventType::Quit;
-        owner(w)->deliver(e);
+        owner(w)->deliver(eventOf(EventType::Quit));
     });
 }
 
