@@ -258,19 +258,27 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     EXPECT_TRUE(reports[1]["modified"].get<bool>()) << "recovered work is not saved yet";
 }
 
-TEST(SculptUi, QuittingWithUnsavedChangesAsksFirst)
+TEST(SculptUi, NewAndQuitWithUnsavedChangesAskFirst)
 {
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
+    events.report(r).drag(560, 380, 700, 380).key("N", {"ctrl"}).report(r).key("D").report(r).key("Enter").report(r);
     events.drag(560, 380, 700, 380).quit().report(r).key("Escape").report(r).quit().key("D").wait(2.0).report(r);
     const CommandResult run = play(dir, events, "", "--stay");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto reports = readReports(r);
-    ASSERT_EQ(reports.size(), 2u) << "the program quit after Discard, before the last report";
-    EXPECT_TRUE(reports[0]["asking_unsaved"].get<bool>());
-    EXPECT_FALSE(reports[1]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
-    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+    ASSERT_EQ(reports.size(), 6u) << "the program quit after Discard, before the last report";
+    EXPECT_TRUE(reports[1]["asking_unsaved"].get<bool>());
+    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports[2]["prompt"], "new");  // discarded: the New dialog
+    EXPECT_EQ(reports[3]["prompt"], "none");
+    EXPECT_EQ(reports[3]["checksum"], reports[0]["checksum"]);  // a new clay ball, the default shape
+    EXPECT_FALSE(reports[3]["modified"].get<bool>());
+    EXPECT_EQ(reports[3]["undo"], 0);
+    EXPECT_TRUE(reports[4]["asking_unsaved"].get<bool>());
+    EXPECT_FALSE(reports[5]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
+    EXPECT_TRUE(reports[5]["modified"].get<bool>());
 }
 
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)

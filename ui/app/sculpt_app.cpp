@@ -209,6 +209,7 @@ void SculptApp::routeMouse(const InputEvent& event)
             if (hit) {
                 try {
                     mPicker.freeze(mDocument->session().field());
+                    mStrokeMods = event.mods | mHeldMods;
                     mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(mMouseX, mMouseY),
                                   event.time, mMouseX, mMouseY);
                     mDrag = Drag::Stroke;
@@ -292,18 +293,20 @@ void SculptApp::updateCursor()
         mHoverValid = true;
     }
     const bool show = mHover && !ImGui::GetIO().WantCaptureMouse;
-    mCursor.setColour(effectiveTool(mBrush.tool, mMods) == BrushTool::Carve ? 1.0 : 1.0, mStroke.active() ? 0.75 : 1.0,
-                      mStroke.active() ? 0.45 : 1.0);
+    // White for tools that add, red for those that take away, blue for smoothing (Shift).
+    const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
+    if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
+    else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
+    else mCursor.setColour(1.0, 1.0, 1.0);
     if (show) mCursor.place(true, mHover->position, mHover->normal, mBrush.radius, mBrush.symmetry);
     else mCursor.place(false, {}, {}, 0.0, {});
 }
 
 void SculptApp::updateTitle()
 {
-    static std::string shown;
     const std::string title = "Sculpt - " + mDocument->title();
-    if (title != shown) mWindow.setTitle(title);
-    shown = title;
+    if (title != mTitle) mWindow.setTitle(title);
+    mTitle = title;
 }
 
 void SculptApp::refreshStatus(bool topology)

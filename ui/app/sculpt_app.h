@@ -138,8 +138,10 @@ private:
 
     // Pointer state.
     double mMouseX = -1.0, mMouseY = -1.0;
-    int mMods = 0;      // modifiers of the current input
-    int mHeldMods = 0;  // modifier keys held down
+    int mMods = 0;        // modifiers of the current input
+    int mHeldMods = 0;    // modifier keys held down
+    int mStrokeMods = 0;  // the modifiers the current stroke began with
+    std::string mTitle;
     bool mButtons[3] = {false, false, false};
     enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength };
     Drag mDrag = Drag::None;
