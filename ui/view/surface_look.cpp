@@ -66,6 +66,9 @@ SurfaceLook::SurfaceLook()
     mProperty->SetSpecular(0.15);
     mProperty->SetSpecularPower(20.0);
     mProperty->SetEdgeColor(0.1, 0.1, 0.12);
+    // The surface is closed: its back faces are never seen, except as single pixels poking past
+    // a silhouette (specks), and drawing them costs fill rate.
+    mProperty->BackfaceCullingOn();
     mShader = vtkSmartPointer<vtkShaderProperty>::New();
     setWireframe(false);
     setShading(Shading::Clay);
