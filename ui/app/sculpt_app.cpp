@@ -154,10 +154,7 @@ void SculptApp::handle(const InputEvent& event)
     feedImGui(event, mHeldMods);
     mLastInput = mWindow.time();
     switch (event.type) {
-    case EventType::Resize:
-        mWindow.resize(event.width, event.height);
-        mViewport.resize(event.width, event.height);
-        break;
+    case EventType::Resize: mViewport.resize(event.width, event.height); break;
     case EventType::Quit: execute(Command::Quit); break;
     case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
     case EventType::Report: mPendingReports.emplace_back(event.text); break;
@@ -530,7 +527,10 @@ int SculptApp::run()
     while (!mQuit) {
         const bool replaying = mPlayer && !mPlayer->finished();
         if (replaying) {
-            for (const InputEvent& event : mPlayer->take(mWindow.time() - mPlayStart)) handle(event);
+            for (const InputEvent& event : mPlayer->take(mWindow.time() - mPlayStart)) {
+                if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
+                handle(event);
+            }
             mWindow.pollEvents(0.0);
         } else {
             if (mPlayer && !replayDone) {

@@ -91,6 +91,16 @@ void AppWindow::installCallbacks()
 void AppWindow::deliver(InputEvent event)
 {
     event.time = time();
+    if (event.type == EventType::MouseMove) {
+        // GLFW gives the pointer in screen coordinates; everything here is in framebuffer pixels
+        // (they differ on high-density displays).
+        int windowWidth = 0, windowHeight = 0;
+        glfwGetWindowSize(mWindow, &windowWidth, &windowHeight);
+        if (windowWidth > 0 && windowHeight > 0) {
+            event.x *= double(width()) / windowWidth;
+            event.y *= double(height()) / windowHeight;
+        }
+    }
     if (mListener) mListener(event);
 }
 
@@ -102,7 +112,15 @@ void AppWindow::pollEvents(double timeoutSeconds)
 
 void AppWindow::swapBuffers() { glfwSwapBuffers(mWindow); }
 void AppWindow::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
-void AppWindow::resize(int width, int height) { glfwSetWindowSize(mWindow, width, height); }
+void AppWindow::resize(int width, int height)
+{
+    // Framebuffer pixels asked for; the window is sized in screen coordinates.
+    int framebufferWidth = 0, framebufferHeight = 0, windowWidth = 0, windowHeight = 0;
+    glfwGetFramebufferSize(mWindow, &framebufferWidth, &framebufferHeight);
+    glfwGetWindowSize(mWindow, &windowWidth, &windowHeight);
+    const double scale = framebufferWidth > 0 ? double(windowWidth) / framebufferWidth : 1.0;
+    glfwSetWindowSize(mWindow, int(width * scale + 0.5), int(height * scale + 0.5));
+}
 
 int AppWindow::width() const
 {

@@ -1,6 +1,8 @@
 #pragma once
 /// @file app_window.h
 /// @brief The GLFW window and its OpenGL 3.2 core context; turns GLFW callbacks into InputEvents.
+///
+/// Sizes and pointer positions are in framebuffer pixels, the unit VTK and ImGui draw in.
 
 #include "ui/input/input_event.h"
 
@@ -27,7 +29,7 @@ public:
     void pollEvents(double timeoutSeconds);
     void swapBuffers();
     void setTitle(const std::string& title);
-    /// As a user resizing the window (a replayed resize).
+    /// As a user resizing the window (a replayed resize), to this many framebuffer pixels.
     void resize(int width, int height);
 
     int width() const;
