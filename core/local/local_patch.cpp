@@ -4,6 +4,7 @@
 #include "core/field/central_difference.h"
 #include "core/field/leaf_journal.h"
 #include "core/local/band_redistance.h"
+#include "core/local/speck_removal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -108,10 +109,11 @@ void LocalPatch::offsetSurface(const FalloffBall& ball, double amountWorld)
     }
 }
 
-DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal) const
+DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal)
 {
     openvdb::FloatGrid& grid = target.mutableGrid();
     const Capsule region = mRegion.inIndexSpace(grid.transform());
+    removeSpecks(mField.mutableGrid(), region, mInnerLeaves);
     auto acc = grid.getAccessor();
     auto patchAcc = mField.grid().getConstAccessor();
     DirtyRegion touched;

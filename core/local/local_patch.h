@@ -85,9 +85,10 @@ public:
     /// field), in sub-steps of at most a voxel, each redistanced.
     void offsetSurface(const FalloffBall& ball, double amountWorld);
 
-    /// Writes the copy's voxels inside the region back to `target` (value and active state),
-    /// saving each leaf in `journal` before it first changes; marks and returns the changed leaves.
-    DirtyRegion commit(FieldImage& target, LeafJournal* journal) const;
+    /// Removes the specks the edit left in the region (removeSpecks), then writes the copy's
+    /// voxels inside the region back to `target` (value and active state), saving each leaf in
+    /// `journal` before it first changes; marks and returns the changed leaves.
+    DirtyRegion commit(FieldImage& target, LeafJournal* journal);
 
 private:
     using LeafT = openvdb::FloatTree::LeafNodeType;

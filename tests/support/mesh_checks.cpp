@@ -10,7 +10,9 @@
 #include <vtkSTLReader.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -121,6 +123,26 @@ double meshArea(const TriangleMesh& mesh)
         twiceArea += std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     }
     return twiceArea / 2.0;
+}
+
+std::vector<std::size_t> shellTriangleCounts(const TriangleMesh& mesh)
+{
+    std::vector<std::uint32_t> parent(mesh.positions.size());
+    std::iota(parent.begin(), parent.end(), 0u);
+    const auto find = [&](std::uint32_t a) {
+        while (parent[a] != a) a = parent[a] = parent[parent[a]];
+        return a;
+    };
+    for (const auto& t : mesh.triangles) {
+        parent[find(t[0])] = find(t[1]);
+        parent[find(t[1])] = find(t[2]);
+    }
+    std::map<std::uint32_t, std::size_t> counts;
+    for (const auto& t : mesh.triangles) ++counts[find(t[0])];
+    std::vector<std::size_t> sizes;
+    for (const auto& [root, count] : counts) sizes.push_back(count);
+    std::sort(sizes.rbegin(), sizes.rend());
+    return sizes;
 }
 
 VtkMeshReport vtkMeshReport(const std::filesystem::path& meshFile)

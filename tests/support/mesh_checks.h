@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <vector>
 
 namespace sculpt::test {
 
@@ -33,6 +34,8 @@ MeshTopology meshTopology(const TriangleMesh& mesh);
 double meshVolume(const TriangleMesh& mesh);
 /// Sum of triangle areas.
 double meshArea(const TriangleMesh& mesh);
+/// Triangles of each connected shell (triangles sharing a vertex), largest first.
+std::vector<std::size_t> shellTriangleCounts(const TriangleMesh& mesh);
 
 /// What VTK says of a mesh file: read with VTK's reader for its extension, points merged.
 struct VtkMeshReport {

@@ -9,12 +9,14 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
+#include "tests/support/mesh_checks.h"
 #include "tests/support/surface_stats.h"
 
 #include <gtest/gtest.h>
 #include <openvdb/tools/Interpolation.h>
 
 #include <cmath>
+#include <random>
 #include <set>
 
 namespace sculpt {
@@ -293,6 +295,39 @@ TEST(Brush, PrimitiveStampCombinesTheSetAtTheStamp)
         volumeOf(rasterizePrimitives(stamp->primitives.translated(Vec3d(30, 0, 0)), field.grid().transform()));
     EXPECT_NEAR(added, alone, 0.02 * alone);
     EXPECT_EQ(measureField(field).components, 2);
+}
+
+TEST(Brush, AConstantCarveThroughATorusTubeLeavesOneShellAndNoDebris)
+{
+    // The carving ball's boundary grazes the tube's surface where the cut ends: before the speck
+    // pass this left four one-voxel shells there (5 components, Euler characteristic 10).
+    FieldImage torus = makeTorus(50.0, 50.0 / 3.0, 0.5);
+    applyStamp(torus, brush(BrushTool::Carve, 20.0, 1.0, Falloff::Constant), stampAt(Vec3d(50, 0, 0)), nullptr);
+    const FieldMeasures m = measureField(torus);
+    EXPECT_EQ(m.components, 1);
+    EXPECT_EQ(m.eulerCharacteristic, 2);  // the ring is cut: a ball's topology
+}
+
+TEST(Brush, TwoHundredRandomAddAndCarveStampsWithHardFalloffsLeaveNoDebrisShells)
+{
+    // Random carves may cut an earlier bump off (a piece a sculptor sees); what must never
+    // remain is a shell of a few voxels (a one-voxel shell is 8 triangles).
+    FieldImage ball = makeSphere(20.0, 0.5);
+    IncrementalMesher mesher;
+    mesher.rebuild(ball);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0), radius(1.5, 6.0);
+    for (int i = 0; i < 200; ++i) {
+        Vec3d direction(unit(rng), unit(rng), unit(rng));
+        if (direction.length() < 1e-3) continue;
+        direction.normalize();
+        const BrushTool tool = i % 2 ? BrushTool::Carve : BrushTool::Add;
+        const Falloff falloff = i % 4 < 2 ? Falloff::Constant : Falloff::Sharp;
+        mesher.update(ball,
+                      applyStamp(ball, brush(tool, radius(rng), 1.0, falloff), stampAt(direction * 19.5), nullptr));
+        const std::vector<std::size_t> shells = test::shellTriangleCounts(mesher.weldedMesh());
+        ASSERT_GT(shells.back(), 100u) << "a debris shell after stamp " << i << " (" << shells.size() << " shells)";
+    }
 }
 
 TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
