@@ -66,4 +66,12 @@ DirtyRegion FieldImage::allLeaves() const
 
 DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRegion{}); }
 
+bool FieldImage::enclosesSomething() const
+{
+    for (auto it = mGrid->cbeginValueAll(); it; ++it) {
+        if (*it < 0.0f) return true;
+    }
+    return false;
+}
+
 }  // namespace sculpt

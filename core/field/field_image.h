@@ -23,6 +23,10 @@ openvdb::FloatGrid::Ptr makeLevelSetGrid(const openvdb::math::Transform& xform, 
 /// The same on the lattice of voxel size h at the origin, background halfWidthVoxels x h.
 openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxels);
 
+/// Largest |index coordinate| a model may reach: the mesher's edge keys hold 20 bits a
+/// coordinate (2^19 either side), less a block's margin.
+constexpr int kMaxIndexCoordinate = (1 << 19) - 128;
+
 class FieldImage {
 public:
     /// Narrow-band half width used by the builders: what WENO5 stencils need.
@@ -55,6 +59,10 @@ public:
     DirtyRegion takeDirtyRegion();
     /// Every leaf of the grid, for edits that change the whole field.
     DirtyRegion allLeaves() const;
+
+    /// Whether anything is inside: a voxel or tile of negative distance (an edit that removed
+    /// everything leaves only the outside).
+    bool enclosesSomething() const;
 
 private:
     openvdb::FloatGrid::Ptr mGrid;

@@ -48,9 +48,8 @@ std::vector<openvdb::Coord> blocksReading(const DirtyRegion& dirty, int B)
 /// Edge keys pack index coordinates in 20 bits each: refuse boxes beyond that range.
 void requireKeyRange(const openvdb::CoordBBox& box)
 {
-    constexpr int kLimit = (1 << 19) - 128;
     for (int axis = 0; axis < 3 && !box.empty(); ++axis) {
-        if (box.min()[axis] < -kLimit || box.max()[axis] > kLimit) {
+        if (box.min()[axis] < -kMaxIndexCoordinate || box.max()[axis] > kMaxIndexCoordinate) {
             throw std::out_of_range("the field spans more than 2^20 voxels: too large to mesh");
         }
     }

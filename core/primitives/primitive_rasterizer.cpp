@@ -1,6 +1,8 @@
 #include "core/primitives/primitive_rasterizer.h"
 
+#include "core/base/errors.h"
 #include "core/base/memory_budget.h"
+#include "core/base/text_format.h"
 #include "core/field/band_rule.h"
 #include "core/field/central_difference.h"
 
@@ -8,6 +10,7 @@
 #include <openvdb/tools/SignedFloodFill.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -19,6 +22,20 @@ using LeafT = openvdb::FloatTree::LeafNodeType;
 constexpr int kLeafDim = int(LeafT::DIM);
 constexpr int kSamples = kLeafDim + 2;  // the leaf and one voxel around it, for gradients
 
+/// Refuses an influence reaching beyond the largest model: converting it to voxel indices would
+/// overflow, and clipping it would bake something other than the scene.
+void requireIndexRange(const openvdb::BBoxd& box, const openvdb::math::Transform& xform, const std::string& what)
+{
+    const double h = xform.voxelSize()[0];
+    const double reach = std::max(box.min().length(), box.max().length()) / h;
+    if (!(reach < double(kMaxIndexCoordinate))) {
+        throw InputError(what + ": its influence reaches " + formatNumber(reach) +
+                             " voxels from the origin, beyond the largest model (" + formatNumber(kMaxIndexCoordinate) +
+                             "): choose a smaller radius, a position nearer the origin or a coarser voxel size",
+                         Remedy::CoarserVoxelSize);
+    }
+}
+
 /// Leaf origins meeting any primitive's influence (grown by `marginVoxels`), each with the
 /// primitives that reach it.
 std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set, const openvdb::math::Transform& xform,
@@ -27,6 +44,7 @@ std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set
     std::map<openvdb::Coord, std::vector<int>> leaves;
     for (int i = 0; i < int(set.primitives().size()); ++i) {
         const openvdb::BBoxd box = set.influence(i);
+        requireIndexRange(box, xform, describePrimitive(i, set.primitives()[size_t(i)].name));
         const openvdb::Coord lo = xform.worldToIndexCellCentered(box.min()).offsetBy(-marginVoxels);
         const openvdb::Coord hi = xform.worldToIndexCellCentered(box.max()).offsetBy(marginVoxels);
         requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float),

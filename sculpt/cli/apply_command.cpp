@@ -2,6 +2,7 @@
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/mesh_output.h"
+#include "sculpt/cli/number_checks.h"
 #include "sculpt/session/stroke_script.h"
 
 #include <CLI/CLI.hpp>
@@ -52,7 +53,7 @@ void addApplyCommand(CLI::App& app)
     cmd->add_option("script", options->script, "the stroke script (.json)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");
-    cmd->add_option("--threads", options->threads, "worker threads (default: all cores)")->check(CLI::PositiveNumber);
+    cmd->add_option("--threads", options->threads, "worker threads (default: all cores)")->check(positiveNumber());
     cmd->callback([options] { runApply(*options); });
 }
 

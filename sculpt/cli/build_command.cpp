@@ -5,7 +5,9 @@
 #include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/mesh_output.h"
+#include "sculpt/cli/number_checks.h"
 
 #include <CLI/CLI.hpp>
 
@@ -36,6 +38,7 @@ void runBuild(const BuildOptions& o)
         const double h = o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5);
         return rasterizePrimitives(scene.primitives, *openvdb::math::Transform::createLinearTransform(h));
     }();
+    refuseEmptyResult(result, o.scene, o.base.empty() ? "the scene" : "combining the scene into " + o.base);
     writeFieldImage(result, o.output);
     std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
               << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()
@@ -54,7 +57,8 @@ void addBuildCommand(CLI::App& app)
                                     "by the scene's operation (union, difference, intersection, replace).");
     cmd->add_option("scene", options->scene, "the scene .json file")->required();
     cmd->add_option("--voxel-size", options->voxelSize,
-                    "voxel size without --into (default: the scene's voxel_size, else 0.5)");
+                    "voxel size without --into (default: the scene's voxel_size, else 0.5)")
+        ->check(positiveNumber());
     cmd->add_option("--into", options->base, "base .vdb document to combine the scene into");
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");

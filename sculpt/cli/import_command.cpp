@@ -4,6 +4,7 @@
 #include "core/mesh/field_measures.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/mesh_output.h"
+#include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/shape_import.h"
 
@@ -103,7 +104,7 @@ void addImportCommand(CLI::App& app)
         ->delimiter(',')
         ->expected(6);
     cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
-        ->check(CLI::NonNegativeNumber);
+        ->check(nonNegativeNumber());
     cmd->add_flag("--largest-component", o->largest,
                   "keep only the largest solid piece: drops islands, fills closed cavities");
     cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);

@@ -6,6 +6,7 @@
 #include "core/motion/morph.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/frame_files.h"
+#include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/shape_import.h"
 
@@ -92,10 +93,10 @@ void addMorphCommand(CLI::App& app)
                   "shapes do not overlap)");
     cmd->add_option("--tolerance", options->morph.toleranceVoxels,
                     "converged when every surface point is this near the target (voxels)")
-        ->check(CLI::PositiveNumber)
+        ->check(positiveNumber())
         ->capture_default_str();
     cmd->add_option("--max-steps", options->morph.maxSteps, "give up after this many steps")
-        ->check(CLI::PositiveNumber)
+        ->check(positiveNumber())
         ->capture_default_str();
     cmd->callback([options] { runMorph(*options); });
 }

@@ -2,6 +2,7 @@
 #include "core/motion/surface_flows.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/number_checks.h"
 
 #include <CLI/CLI.hpp>
 
@@ -39,7 +40,7 @@ void addSmoothCommand(CLI::App& app)
                                      "small features vanish first. One iteration is one stable step (dt = h^2/6).");
     cmd->add_option("input", options->input, "the .vdb document to smooth")->required();
     cmd->add_option("--iterations", options->iterations, "number of smoothing steps")
-        ->check(CLI::NonNegativeNumber)
+        ->check(nonNegativeNumber())
         ->capture_default_str();
     cmd->add_flag("--keep-volume", options->keepVolume,
                   "hold the enclosed volume constant (otherwise smoothing shrinks the shape)");

@@ -115,6 +115,14 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
     std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke
                                        << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
+    const auto blob = [](const std::string& operation, const std::string& radius, const std::string& at) {
+        return R"({"iso": 0.5, "operation": ")" + operation +
+               R"(", "primitives": [{"kernel": "soft-object", "radius": )" + radius +
+               R"(, "skeleton": {"type": "point", "position": [)" + at + "]}}]}";
+    };
+    std::ofstream(dir / "huge_blob.json") << blob("union", "1e30", "0, 0, 0");
+    std::ofstream(dir / "far_blob.json") << blob("union", "5", "1e15, 0, 0");
+    std::ofstream(dir / "eat_all.json") << blob("difference", "40", "0, 0, 0");
     std::ofstream(dir / "junk.nii") << "not a NIfTI header, just some words";
     std::ofstream(dir / "tiny.raw") << "tiny";
     const auto before = dir.entries();
@@ -169,7 +177,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"render good.vdb -o out.png --background pink", "--background"},
         BadCall{"render good.vdb -o out.png --camera 0,0,0 --look-at 0,0,0", "coincide"},
         BadCall{"render good.vdb -o out.png --fov 200", "field of view"},
-        BadCall{"render . -o frames --turntable 3", "not a directory of frames"}, BadCall{"", "ubcommand"}),
+        BadCall{"render . -o frames --turntable 3", "not a directory of frames"}, BadCall{"", "ubcommand"},
+        // Operations that would destroy the model, or reach beyond what a model can hold.
+        BadCall{"offset good.vdb --distance -100 -o out.vdb", "good.vdb: offsetting leaves nothing of the model"},
+        BadCall{"smooth good.vdb --iterations 2000 -o out.vdb", "good.vdb: smoothing leaves nothing of the model"},
+        BadCall{"build eat_all.json --into good.vdb -o out.vdb", "combining the scene into good.vdb leaves nothing"},
+        BadCall{"build huge_blob.json -o out.vdb", "primitive 0: its influence reaches 3.4641e+30 voxels"},
+        BadCall{"build far_blob.json -o out.vdb", "beyond the largest model"},
+        BadCall{"build huge_blob.json --voxel-size 0 -o out.vdb", "--voxel-size: must be a positive number (got 0)"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
