@@ -1,6 +1,7 @@
 #include "core/mesh/field_measures.h"
 
 #include "core/mesh/incremental_mesher.h"
+#include "core/mesh/surface_statistics.h"
 
 #include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_reduce.h>
@@ -115,6 +116,15 @@ FieldMeasures measureField(const FieldImage& field)
 
     measureMesh(field, m);
     return m;
+}
+
+MeshVolumeArea meshVolumeArea(const FieldImage& field)
+{
+    IncrementalMesher mesher;
+    mesher.rebuild(field);
+    SurfaceStatistics statistics;  // per-block sums: the triangles partition the closed surface
+    statistics.update(mesher);
+    return {statistics.volume(), statistics.area()};
 }
 
 }  // namespace sculpt

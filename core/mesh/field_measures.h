@@ -27,4 +27,12 @@ struct FieldMeasures {
 /// in the band size, parallel.
 FieldMeasures measureField(const FieldImage& field);
 
+/// Volume and area of the marching-cubes surface, as measureField gives them, without welding or
+/// counting shells: what volume control holds. Cost: one meshing pass over the band.
+struct MeshVolumeArea {
+    double volume = 0.0;  ///< world units^3
+    double area = 0.0;    ///< world units^2
+};
+MeshVolumeArea meshVolumeArea(const FieldImage& field);
+
 }  // namespace sculpt

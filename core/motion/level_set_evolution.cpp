@@ -5,6 +5,7 @@
 #include "core/field/central_difference.h"
 #include "core/field/dense_gather.h"
 #include "core/local/local_patch.h"
+#include "core/mesh/field_measures.h"
 #include "core/motion/volume_estimate.h"
 
 #include <openvdb/math/FiniteDifference.h>
@@ -309,13 +310,37 @@ double LevelSetEvolution::step(double maxDt)
     return dt;
 }
 
+void LevelSetEvolution::calibrateVolume()
+{
+    mVolumeBias = meshVolumeArea(mField).volume - estimateVolumeArea(mField.grid()).volume;
+    mCalibratedAt = mSteps;
+}
+
 void LevelSetEvolution::correctVolume()
 {
-    const auto [volume, area] = estimateVolumeArea(mField.grid());
+    constexpr int kCalibrationSteps = 10;
+    if (mCalibratedAt < 0 || mSteps - mCalibratedAt >= kCalibrationSteps) calibrateVolume();
+    const auto [estimate, area] = estimateVolumeArea(mField.grid());
     if (!(area > 0.0)) return;
     const double budget = mOptions.cfl * mField.voxelSize();
-    const double displacement =
-        std::clamp(mTerms.volume->gamma * (mTerms.volume->targetVolume - volume) / area, -budget, budget);
+    const double volume = estimate + mVolumeBias;
+    offsetValues(std::clamp(mTerms.volume->gamma * (mTerms.volume->targetVolume - volume) / area, -budget, budget));
+}
+
+void LevelSetEvolution::settleVolume()
+{
+    if (!mTerms.volume) return;
+    for (int i = 0; i < 4; ++i) {
+        const MeshVolumeArea now = meshVolumeArea(mField);
+        const double error = mTerms.volume->targetVolume - now.volume;
+        if (!(now.area > 0.0) || std::abs(error) <= 1e-4 * std::abs(mTerms.volume->targetVolume)) break;
+        offsetValues(std::clamp(error / now.area, -mField.voxelSize(), mField.voxelSize()));
+    }
+    mCalibratedAt = -1;
+}
+
+void LevelSetEvolution::offsetValues(double displacement)
+{
     openvdb::FloatGrid& grid = mField.mutableGrid();
     const float background = grid.background();
     const auto leaves = leafList(grid.tree());

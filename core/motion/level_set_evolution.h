@@ -51,6 +51,9 @@ public:
     void advance(double duration);
     /// Rebuilds and redistances the band now (done automatically as the surface moves).
     void redistance();
+    /// With volume control: offsets the surface until its mesh volume is the target's within
+    /// 0.01% (a few Newton steps, each one meshing): before a result is written.
+    void settleVolume();
 
     double time() const { return mTime; }
     int stepCount() const { return mSteps; }
@@ -62,6 +65,11 @@ private:
     /// Volume control by operator splitting: after the other terms' step, a uniform offset
     /// brings the volume back to its target.
     void correctVolume();
+    /// Mesh volume minus the band estimate, measured now.
+    void calibrateVolume();
+    /// Moves the surface by `displacement` along its normal (> 0 grows): every active value
+    /// lowered by it, within the band.
+    void offsetValues(double displacement);
     double maxAdvectionSpeed() const;
 
     FieldImage& mField;
@@ -71,6 +79,8 @@ private:
     double mTime = 0.0;
     int mSteps = 0;
     double mMovedSinceRedistance = 0.0;
+    double mVolumeBias = 0.0;  // mesh volume - band estimate, at the last calibration
+    int mCalibratedAt = -1;    // step of the last calibration
     double mDiffusedSinceRedistance = 0.0;
 };
 

@@ -2,11 +2,10 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
-#include "core/motion/volume_estimate.h"
 
 #include <openvdb/tools/GridTransformer.h>
-#include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_reduce.h>
 
@@ -164,16 +163,16 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
 
     FieldImage field(start.grid().deepCopy(), source.units());
     MotionTerms terms = targetTerms(target);
-    // Controlled in the estimator's own terms (robust between redistancings); frames report
-    // LevelSetMeasure's volume of the redistanced field.
-    const double v0 = estimateVolumeArea(field.grid()).volume;
-    const double v1 = estimateVolumeArea(target.grid()).volume;
+    // Volumes are the meshes' (what a user measures on the exported frames).
+    const double v0 = meshVolumeArea(field).volume;
+    const double v1 = meshVolumeArea(target).volume;
     if (o.keepVolume) terms.volume = VolumeTerm{v0, 1.0};
     LevelSetEvolution evolution(field, terms);
 
     auto emit = [&](int index) {
         if (index > 0) evolution.redistance();
-        const double volume = openvdb::tools::levelSetVolume(field.grid());
+        if (evolution.terms().volume) evolution.settleVolume();  // on the straight line
+        const double volume = meshVolumeArea(field).volume;
         summary.frameVolumes.push_back(volume);
         onFrame(MorphFrame{index, evolution.time(), volume, field});
     };

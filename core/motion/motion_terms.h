@@ -32,8 +32,11 @@ struct SmoothTerm {
 /// uniform normal speed that restores the volume V* (global, never local). Applied by operator
 /// splitting: after the other terms' step, the surface is offset by gamma (V* - V) / A, so the
 /// volume the other terms lost or gained in the step is restored in the same step, without lag.
+/// V is the volume of the marching-cubes mesh (what `info`, the export and a printer see): each
+/// step reads the fast band estimate, corrected by its difference from the mesh's volume, which
+/// is measured every few steps (the two differ at sharp edges, by an amount that changes slowly).
 struct VolumeTerm {
-    double targetVolume = 0.0;  ///< V* at the end of the next step, world units^3
+    double targetVolume = 0.0;  ///< V* at the end of the next step, world units^3, of the mesh
     double gamma = 1.0;         ///< fraction of the volume error corrected per step
 };
 

@@ -2,8 +2,8 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
-#include "core/motion/volume_estimate.h"
 
 #include <cmath>
 
@@ -14,13 +14,16 @@ void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& 
     if (iterations < 0) throw InputError("iterations must be >= 0 (got " + std::to_string(iterations) + ")");
     MotionTerms terms;
     terms.smooth = SmoothTerm{1.0, std::nullopt};
-    if (keepVolume) terms.volume = VolumeTerm{estimateVolumeArea(field.grid()).volume, 1.0};
+    if (keepVolume) terms.volume = VolumeTerm{meshVolumeArea(field).volume, 1.0};
     LevelSetEvolution evolution(field, terms);
     for (int i = 0; i < iterations; ++i) {
         evolution.step();
         report(progress, double(i + 1) / double(iterations));
     }
-    if (iterations > 0) evolution.redistance();
+    if (iterations > 0) {
+        evolution.redistance();
+        evolution.settleVolume();
+    }
 }
 
 void offset(FieldImage& field, double distanceWorld, const Progress& progress)

@@ -3,6 +3,8 @@
 #include "core/base/errors.h"
 #include "core/field/csg_combine.h"
 #include "core/field/grid_checksum.h"
+#include "core/mesh/field_measures.h"
+#include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
@@ -289,6 +291,18 @@ TEST(StrokeScript, ReplaysAreBitIdenticalTwiceAndWithOneOrTwoThreads)
     }
     EXPECT_EQ(results[0], results[1]);
     EXPECT_EQ(results[0], results[2]);
+}
+
+TEST(StrokeScript, KeepVolumeSmoothingOfTheSculptedFaceHoldsItsMeshVolume)
+{
+    SculptSession session(makeSphere(50.0, 0.5));
+    replayScript(session, readStrokeScript(dataPath("strokes/face.json")), "face.json");
+    FieldImage face = session.takeField();
+    const double before = measureField(face).volume;
+    smooth(face, 30, true);
+    EXPECT_NEAR(measureField(face).volume, before, 0.001 * before) << "after 30 iterations";
+    smooth(face, 170, true);
+    EXPECT_NEAR(measureField(face).volume, before, 0.001 * before) << "after 200 iterations";
 }
 
 /// The error message of parsing `events` (a JSON array) as a script.
