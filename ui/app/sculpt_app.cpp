@@ -2,7 +2,6 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
-#include "core/field/grid_checksum.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
 #include "ui/window/app_window.h"
@@ -10,19 +9,13 @@
 #include <unistd.h>
 
 #include <imgui.h>
-#include <nlohmann/json.hpp>
-#include <vtkImageData.h>
-#include <vtkPNGWriter.h>
-#include <vtkPointData.h>
 #include <vtkRenderer.h>
-#include <vtkUnsignedCharArray.h>
 #include <vtk_glew.h>  // the OpenGL calls made here, as VTK loads them (no other GL header)
 
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <iostream>
 
@@ -34,7 +27,6 @@ namespace {
 
 /// The coarse display stays on this long after the camera last moved.
 constexpr double kNavigationSettleSeconds = 0.25;
-constexpr double kWheelZoomStep = 1.15;
 
 std::size_t residentBytes()
 {
@@ -48,20 +40,6 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path)
 {
     if (path.empty()) return std::make_unique<Document>(Document::create(NewShape{}));
     return std::make_unique<Document>(Document::open(path));
-}
-
-nlohmann::json vec3Json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-
-const char* promptName(Dialogs::Prompt prompt)
-{
-    switch (prompt) {
-    case Dialogs::Prompt::New: return "new";
-    case Dialogs::Prompt::Open: return "open";
-    case Dialogs::Prompt::SaveAs: return "save-as";
-    case Dialogs::Prompt::ExportMesh: return "export";
-    case Dialogs::Prompt::SaveStrokes: return "save-strokes";
-    default: return "none";
-    }
 }
 
 }  // namespace
@@ -140,144 +118,6 @@ void SculptApp::showError(const std::string& message)
 {
     mDialogs.error = message;
     std::cerr << "sculpt-ui: " << message << "\n";
-}
-
-// ---------------------------------------------------------------------------------------------
-// Input
-
-void SculptApp::handle(const InputEvent& event)
-{
-    if (!mOptions.record.empty() && event.type != EventType::Screenshot && event.type != EventType::Report) {
-        mRecording.push_back(event);
-    }
-    if (event.type == EventType::Key) trackModifiers(event);
-    feedImGui(event, mHeldMods);
-    mLastInput = mWindow.time();
-    switch (event.type) {
-    case EventType::Resize: mViewport.resize(event.width, event.height); break;
-    case EventType::Quit: execute(Command::Quit); break;
-    case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
-    case EventType::Report: mPendingReports.emplace_back(event.text); break;
-    case EventType::Key: routeKey(event); break;
-    case EventType::Text: break;
-    default: routeMouse(event); break;
-    }
-}
-
-void SculptApp::routeMouse(const InputEvent& event)
-{
-    const double dx = event.x - mMouseX, dy = event.y - mMouseY;
-    if (event.type == EventType::MouseMove) {
-        mMouseX = event.x, mMouseY = event.y;
-        mHoverValid = false;
-    }
-    if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
-    const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
-    if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
-
-    if (event.type == EventType::Wheel) {
-        const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
-        const Ray ray = mViewport.rayThrough(mMouseX, mMouseY);
-        const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
-        const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
-        mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
-        mLastNavigation = arrival(event);
-        mHoverValid = false;
-        return;
-    }
-    if (event.type == EventType::MouseButton) {
-        mButtons[event.button] = event.press;
-        if (!event.press) {
-            if (mDrag == Drag::Stroke && event.button == kLeftButton) {
-                mStroke.end(*mDocument);
-                mPicker.thaw();
-                mHoverValid = false;
-            }
-            if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
-            return;
-        }
-        if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
-            mDrag = Drag::None;  // a click keeps the new size
-            return;
-        }
-        const bool alt = event.mods & kAlt;
-        if (event.button == kLeftButton && !alt) {
-            const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);  // a button event has no position
-            if (hit) {
-                try {
-                    mPicker.freeze(mDocument->session().field());
-                    mStrokeMods = event.mods | mHeldMods;
-                    mStroke.begin(*mDocument, mBrush, event.mods, *hit, mViewport.rayThrough(mMouseX, mMouseY),
-                                  event.time, mMouseX, mMouseY);
-                    mDrag = Drag::Stroke;
-                    mMeasures.pendingSince = arrival(event);
-                } catch (const InputError& e) {
-                    mPicker.thaw();
-                    showError(e.what());
-                }
-                mHoverValid = false;
-                return;
-            }
-        }
-        // Navigation: middle (Blender), right (SculptGL), Alt+left (touchpads), left off the model.
-        mDrag = (event.mods & kShift) ? Drag::Pan : (event.mods & kControl) ? Drag::Zoom : Drag::Orbit;
-        return;
-    }
-    // A move.
-    switch (mDrag) {
-    case Drag::Stroke: {
-        const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
-        try {
-            const std::size_t stamps =
-                mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
-            mMeasures.stamps += stamps;
-            // From when the pointer got there (a replayed event: when it was due) to the frame showing it.
-            if (stamps > 0 && mMeasures.pendingSince < 0.0) {
-                mMeasures.pendingSince = arrival(event);
-            }
-        } catch (const InputError& e) {
-            showError(e.what());
-        }
-        break;
-    }
-    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = arrival(event); break;
-    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = arrival(event); break;
-    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = arrival(event); break;
-    case Drag::Radius:
-        mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
-                                 mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));
-        break;
-    case Drag::Strength:
-        mBrush.strength = std::clamp(mDragStartValue + (event.x - mDragStartX) / 300.0, 0.01, 1.0);
-        break;
-    case Drag::None: break;
-    }
-}
-
-void SculptApp::trackModifiers(const InputEvent& event)
-{
-    const int bit = modifierOfKey(event.key);
-    if (bit) mHeldMods = event.press ? (mHeldMods | bit) : (mHeldMods & ~bit);
-    mMods = mHeldMods | (event.press ? event.mods : 0);
-}
-
-void SculptApp::routeKey(const InputEvent& event)
-{
-    if (modifierOfKey(event.key)) return;
-    if (!event.press) return;
-    // A dialog takes its own keys (panels), and so does a panel's field being edited. ImGui's
-    // WantTextInput lags a frame (it still claims keys for a prompt just closed): ask instead
-    // whether an item was active when the last frame ended.
-    if (modalOpen() || mItemActive) return;
-    if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
-        if (event.key == 256) {  // Escape: put the value back
-            (mDrag == Drag::Radius ? mBrush.radius : mBrush.strength) = mDragStartValue;
-        }
-        mDrag = Drag::None;
-        return;
-    }
-    Command command;
-    if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -392,71 +232,6 @@ void SculptApp::drawPanels()
                                                 : "strength %.2f (move, click to keep, Esc to cancel)",
                           mDrag == Drag::Radius ? mBrush.radius : mBrush.strength);
     }
-}
-
-void SculptApp::writeScreenshot(const fs::path& path)
-{
-    const int w = mViewport.width(), h = mViewport.height();
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->SetDimensions(w, h, 1);
-    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadBuffer(GL_BACK);
-    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, image->GetScalarPointer());  // bottom row first, as VTK
-    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
-    writer->SetFileName(path.c_str());
-    writer->SetInputData(image);
-    writer->Write();
-    if (writer->GetErrorCode() != 0) showError(path.string() + ": cannot write the screenshot");
-    else std::cout << "sculpt-ui: screenshot " << path.string() << std::endl;
-}
-
-void SculptApp::writeReport(const fs::path& path)
-{
-    const SculptSession& session = mDocument->session();
-    nlohmann::json r;
-    r["frame"] = mFramesDrawn;
-    r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
-    r["volume"] = mStatus.volume;
-    r["area"] = mStatus.area;
-    r["triangles"] = mStatus.triangles;
-    r["euler"] = mStatus.euler;
-    r["shells"] = mStatus.shells;
-    r["blocks"] = mDisplay.blockCount();
-    r["uploaded"] = mStatus.blocksUploaded;  // since the previous report
-    r["removed"] = mStatus.blocksRemoved;
-    r["remeshed"] = mLastRemeshed;  // blocks the mesher re-meshed, empty candidates included
-    const IncrementalMesher::Changes changes = session.mesher()->changesSince(mReportVersion);
-    r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
-    mReportVersion = session.mesher()->version();
-    r["bytes_uploaded"] = mStatus.bytesUploaded;
-    r["mesh_bytes"] = mDisplay.meshBytes();
-    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
-    mLastRemeshed = 0;
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
-    r["pick"] =
-        hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
-            : nlohmann::json{{"hit", false}};
-    r["modified"] = mDocument->modified();
-    r["title"] = mDocument->title();
-    r["path"] = mDocument->path().string();
-    r["undo"] = session.history().undoCount();
-    r["redo"] = session.history().redoCount();
-    r["recovery_offered"] = mDialogs.recovery.has_value();
-    r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
-    r["prompt"] = promptName(mDialogs.prompt);
-    r["error"] = mDialogs.error;
-    r["radius"] = mBrush.radius;
-    r["tool"] = brushToolName(mBrush.tool);
-    r["frame_ms"] = mStatus.frameMs;
-    r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
-    r["latencies_ms"] = mMeasures.latencyMs;
-    r["stamps"] = mMeasures.stamps;
-    r["coarse"] = mDisplay.coarse();
-    mMeasures = Measures();
-    std::ofstream out(path, std::ios::app);
-    out << r.dump() << "\n";
-    if (!out) showError(path.string() + ": cannot write the report");
 }
 
 // ---------------------------------------------------------------------------------------------

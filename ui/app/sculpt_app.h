@@ -98,6 +98,12 @@ private:
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
+    void zoomAtPointer(const InputEvent& event);
+    void pressButton(const InputEvent& event);
+    void releaseButton(const InputEvent& event);
+    void beginStroke(const InputEvent& event, const SurfaceHit& hit);
+    void dragTo(const InputEvent& event, double dx, double dy);
+    void extendStroke(const InputEvent& event);
     void trackModifiers(const InputEvent& event);
     void updateCursor();
     void updateTitle();
@@ -142,7 +148,6 @@ private:
     int mHeldMods = 0;    // modifier keys held down
     int mStrokeMods = 0;  // the modifiers the current stroke began with
     std::string mTitle;
-    bool mButtons[3] = {false, false, false};
     enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;

@@ -1,0 +1,165 @@
+// SculptApp: where every input event goes (the keys and mouse of README's table).
+
+#include "core/base/errors.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/input/imgui_input.h"
+#include "ui/window/app_window.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr double kWheelZoomStep = 1.15;
+
+}  // namespace
+
+void SculptApp::handle(const InputEvent& event)
+{
+    if (!mOptions.record.empty() && event.type != EventType::Screenshot && event.type != EventType::Report) {
+        mRecording.push_back(event);
+    }
+    if (event.type == EventType::Key) trackModifiers(event);
+    feedImGui(event, mHeldMods);
+    mLastInput = mWindow.time();
+    switch (event.type) {
+    case EventType::Resize: mViewport.resize(event.width, event.height); break;
+    case EventType::Quit: execute(Command::Quit); break;
+    case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
+    case EventType::Report: mPendingReports.emplace_back(event.text); break;
+    case EventType::Key: routeKey(event); break;
+    case EventType::Text: break;
+    default: routeMouse(event); break;
+    }
+}
+
+void SculptApp::routeMouse(const InputEvent& event)
+{
+    const double dx = event.x - mMouseX, dy = event.y - mMouseY;
+    if (event.type == EventType::MouseMove) {
+        mMouseX = event.x, mMouseY = event.y;
+        mHoverValid = false;
+    }
+    if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
+    const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
+    if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
+    if (event.type == EventType::Wheel) zoomAtPointer(event);
+    else if (event.type == EventType::MouseButton && event.press) pressButton(event);
+    else if (event.type == EventType::MouseButton) releaseButton(event);
+    else dragTo(event, dx, dy);
+}
+
+void SculptApp::zoomAtPointer(const InputEvent& event)
+{
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const Ray ray = mViewport.rayThrough(mMouseX, mMouseY);
+    const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
+    const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
+    mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
+    mLastNavigation = arrival(event);
+    mHoverValid = false;
+}
+
+void SculptApp::pressButton(const InputEvent& event)
+{
+    if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
+        mDrag = Drag::None;  // a click keeps the new size
+        return;
+    }
+    if (event.button == kLeftButton && !(event.mods & kAlt)) {
+        if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
+            beginStroke(event, *hit);
+            return;
+        }
+    }
+    // Navigation: middle (Blender), right (SculptGL), Alt+left (touchpads), left off the model.
+    mDrag = (event.mods & kShift) ? Drag::Pan : (event.mods & kControl) ? Drag::Zoom : Drag::Orbit;
+}
+
+void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
+{
+    try {
+        mPicker.freeze(mDocument->session().field());
+        mStrokeMods = event.mods | mHeldMods;
+        mStroke.begin(*mDocument, mBrush, mStrokeMods, hit, mViewport.rayThrough(mMouseX, mMouseY), event.time, mMouseX,
+                      mMouseY);
+        mDrag = Drag::Stroke;
+        mMeasures.pendingSince = arrival(event);
+    } catch (const InputError& e) {
+        mPicker.thaw();
+        showError(e.what());
+    }
+    mHoverValid = false;
+}
+
+void SculptApp::releaseButton(const InputEvent& event)
+{
+    if (mDrag == Drag::Stroke && event.button == kLeftButton) {
+        mStroke.end(*mDocument);
+        mPicker.thaw();
+        mHoverValid = false;
+    }
+    if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
+}
+
+void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
+{
+    switch (mDrag) {
+    case Drag::Stroke: extendStroke(event); break;
+    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = arrival(event); break;
+    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = arrival(event); break;
+    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = arrival(event); break;
+    case Drag::Radius:
+        mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
+                                 mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));
+        break;
+    case Drag::Strength:
+        mBrush.strength = std::clamp(mDragStartValue + (event.x - mDragStartX) / 300.0, 0.01, 1.0);
+        break;
+    case Drag::None: break;
+    }
+}
+
+void SculptApp::extendStroke(const InputEvent& event)
+{
+    const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
+    try {
+        const std::size_t stamps =
+            mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
+        mMeasures.stamps += stamps;
+        // From when the pointer got there (a replayed event: when it was due) to the frame showing it.
+        if (stamps > 0 && mMeasures.pendingSince < 0.0) mMeasures.pendingSince = arrival(event);
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+void SculptApp::trackModifiers(const InputEvent& event)
+{
+    const int bit = modifierOfKey(event.key);
+    if (bit) mHeldMods = event.press ? (mHeldMods | bit) : (mHeldMods & ~bit);
+    mMods = mHeldMods | (event.press ? event.mods : 0);
+}
+
+void SculptApp::routeKey(const InputEvent& event)
+{
+    if (modifierOfKey(event.key) || !event.press) return;
+    // A dialog takes its own keys (panels), and so does a panel's field being edited. ImGui's
+    // WantTextInput lags a frame (it still claims keys for a prompt just closed): ask instead
+    // whether an item was active when the last frame ended.
+    if (modalOpen() || mItemActive) return;
+    if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
+        if (event.key == GLFW_KEY_ESCAPE) (mDrag == Drag::Radius ? mBrush.radius : mBrush.strength) = mDragStartValue;
+        mDrag = Drag::None;
+        return;
+    }
+    Command command;
+    if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
+}
+
+}  // namespace sculpt::ui

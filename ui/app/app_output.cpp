@@ -1,0 +1,101 @@
+// SculptApp: what it writes for replays and tests, the composed frame and the state report.
+
+#include "core/field/grid_checksum.h"
+#include "ui/app/sculpt_app.h"
+
+#include <nlohmann/json.hpp>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtk_glew.h>  // the OpenGL calls made here, as VTK loads them (no other GL header)
+
+#include <fstream>
+#include <iostream>
+
+namespace sculpt::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+nlohmann::json vec3Json(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+const char* promptName(Dialogs::Prompt prompt)
+{
+    switch (prompt) {
+    case Dialogs::Prompt::New: return "new";
+    case Dialogs::Prompt::Open: return "open";
+    case Dialogs::Prompt::SaveAs: return "save-as";
+    case Dialogs::Prompt::ExportMesh: return "export";
+    case Dialogs::Prompt::SaveStrokes: return "save-strokes";
+    default: return "none";
+    }
+}
+
+}  // namespace
+
+void SculptApp::writeScreenshot(const fs::path& path)
+{
+    const int w = mViewport.width(), h = mViewport.height();
+    auto image = vtkSmartPointer<vtkImageData>::New();
+    image->SetDimensions(w, h, 1);
+    image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadBuffer(GL_BACK);
+    glReadPixels(0, 0, w, h, GL_RGB, GL_UNSIGNED_BYTE, image->GetScalarPointer());  // bottom row first, as VTK
+    auto writer = vtkSmartPointer<vtkPNGWriter>::New();
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(image);
+    writer->Write();
+    if (writer->GetErrorCode() != 0) showError(path.string() + ": cannot write the screenshot");
+    else std::cout << "sculpt-ui: screenshot " << path.string() << std::endl;
+}
+
+void SculptApp::writeReport(const fs::path& path)
+{
+    const SculptSession& session = mDocument->session();
+    nlohmann::json r;
+    r["frame"] = mFramesDrawn;
+    r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
+    r["volume"] = mStatus.volume;
+    r["area"] = mStatus.area;
+    r["triangles"] = mStatus.triangles;
+    r["euler"] = mStatus.euler;
+    r["shells"] = mStatus.shells;
+    r["blocks"] = mDisplay.blockCount();
+    r["uploaded"] = mStatus.blocksUploaded;  // since the previous report
+    r["removed"] = mStatus.blocksRemoved;
+    r["remeshed"] = mLastRemeshed;  // blocks the mesher re-meshed, empty candidates included
+    const IncrementalMesher::Changes changes = session.mesher()->changesSince(mReportVersion);
+    r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
+    mReportVersion = session.mesher()->version();
+    r["bytes_uploaded"] = mStatus.bytesUploaded;
+    r["mesh_bytes"] = mDisplay.meshBytes();
+    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
+    mLastRemeshed = 0;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    r["pick"] =
+        hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
+            : nlohmann::json{{"hit", false}};
+    r["modified"] = mDocument->modified();
+    r["title"] = mDocument->title();
+    r["path"] = mDocument->path().string();
+    r["undo"] = session.history().undoCount();
+    r["redo"] = session.history().redoCount();
+    r["recovery_offered"] = mDialogs.recovery.has_value();
+    r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
+    r["prompt"] = promptName(mDialogs.prompt);
+    r["error"] = mDialogs.error;
+    r["radius"] = mBrush.radius;
+    r["tool"] = brushToolName(mBrush.tool);
+    r["frame_ms"] = mStatus.frameMs;
+    r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
+    r["latencies_ms"] = mMeasures.latencyMs;
+    r["stamps"] = mMeasures.stamps;
+    r["coarse"] = mDisplay.coarse();
+    mMeasures = Measures();
+    std::ofstream out(path, std::ios::app);
+    out << r.dump() << "\n";
+    if (!out) showError(path.string() + ": cannot write the report");
+}
+
+}  // namespace sculpt::ui
