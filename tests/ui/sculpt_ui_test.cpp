@@ -240,7 +240,9 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     }
     ASSERT_FALSE(recovery.empty()) << "no autosave within a minute";
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    runCommand("pkill -KILL -f -- " + shellQuoted(state), dir.path().string());
+    // The program only (its command line starts with it): xvfb-run then stops its X server.
+    runCommand("pkill -KILL -f -- " + shellQuoted("^" SCULPT_UI_EXECUTABLE " .*" + state.string()),
+               dir.path().string());
     const auto firstReports = readReports(dir / "first.jsonl");
     ASSERT_EQ(firstReports.size(), 1u);
     ASSERT_TRUE(fs::exists(recovery)) << "a killed program leaves its autosave";
