@@ -70,4 +70,10 @@ std::size_t removeSpecks(openvdb::FloatGrid& grid, const Capsule& indexRegion,
     return flipped;
 }
 
+std::size_t removeSpecks(FieldImage& field, int maxVoxels)
+{
+    const Capsule everywhere{openvdb::Vec3d(0.0), openvdb::Vec3d(0.0), 4.0 * double(kMaxIndexCoordinate)};
+    return removeSpecks(field.mutableGrid(), everywhere, field.allLeaves().leafOrigins(), maxVoxels);
+}
+
 }  // namespace sculpt

@@ -5,6 +5,7 @@
 ///        at a grazing angle, e.g. where a carving ball's boundary grazes the sculpt. A printer's
 ///        slicer, a component count and the Euler characteristic all see them; a sculptor cannot.
 
+#include "core/field/field_image.h"
 #include "core/local/capsule.h"
 
 #include <openvdb/openvdb.h>
@@ -24,5 +25,9 @@ constexpr int kMaxSpeckVoxels = 8;
 /// @return the voxels flipped.
 std::size_t removeSpecks(openvdb::FloatGrid& grid, const Capsule& indexRegion,
                          const std::vector<openvdb::Coord>& leafOrigins, int maxVoxels = kMaxSpeckVoxels);
+
+/// The same over the whole field, after an operation that changes all of it (smoothing,
+/// offsetting, an import, a bake, a morph frame). Cost: linear in the band's surface voxels.
+std::size_t removeSpecks(FieldImage& field, int maxVoxels = kMaxSpeckVoxels);
 
 }  // namespace sculpt

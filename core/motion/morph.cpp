@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
 
@@ -170,7 +171,10 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     LevelSetEvolution evolution(field, terms);
 
     auto emit = [&](int index) {
-        if (index > 0) evolution.redistance();
+        if (index > 0) {
+            evolution.redistance();
+            removeSpecks(field);
+        }
         if (evolution.terms().volume) evolution.settleVolume();  // on the straight line
         const double volume = meshVolumeArea(field).volume;
         summary.frameVolumes.push_back(volume);

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
 
@@ -22,6 +23,7 @@ void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& 
     }
     if (iterations > 0) {
         evolution.redistance();
+        removeSpecks(field);
         evolution.settleVolume();
     }
 }
@@ -39,6 +41,7 @@ void offset(FieldImage& field, double distanceWorld, const Progress& progress)
         report(progress, evolution.time() / duration);
     }
     evolution.redistance();
+    removeSpecks(field);
 }
 
 }  // namespace sculpt

@@ -2,6 +2,7 @@
 #include "core/base/errors.h"
 #include "core/field/csg_combine.h"
 #include "core/io/vdb_file.h"
+#include "core/local/speck_removal.h"
 #include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
 #include "sculpt/cli/commands.h"
@@ -38,6 +39,7 @@ void runBuild(const BuildOptions& o)
         const double h = o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5);
         return rasterizePrimitives(scene.primitives, *openvdb::math::Transform::createLinearTransform(h));
     }();
+    removeSpecks(result);
     refuseEmptyResult(result, o.scene, o.base.empty() ? "the scene" : "combining the scene into " + o.base);
     writeFieldImage(result, o.output);
     std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"

@@ -5,6 +5,7 @@
 #include "core/base/text_format.h"
 #include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
+#include "core/local/speck_removal.h"
 #include "core/scan/scan_to_level_set.h"
 
 namespace sculpt {
@@ -60,6 +61,10 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
     FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
                                                          : importScan(input, options, report, progress);
     if (options.largestComponent) report.pieces = keepLargestComponent(field);
+    if (const std::size_t flipped = removeSpecks(field)) {
+        report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +
+                                  std::to_string(kMaxSpeckVoxels) + " voxels, too small to keep at this voxel size)");
+    }
     return field;
 }
 

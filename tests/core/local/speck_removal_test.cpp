@@ -42,6 +42,13 @@ TEST(SpeckRemoval, FlipsABubbleOfOutsideInTheInside)
     EXPECT_FLOAT_EQ(field.grid().getConstAccessor().getValue(Coord(0, 0, 8)), -0.3f);
 }
 
+TEST(SpeckRemoval, TheWholeFieldPassFindsSpecksAnywhere)
+{
+    FieldImage field = sphereWith({{Coord(12, 0, 0), -0.2f}, {Coord(0, -12, 5), -0.3f}, {Coord(0, 0, -8), 0.4f}});
+    EXPECT_EQ(removeSpecks(field), 3u);
+    EXPECT_EQ(removeSpecks(field), 0u);
+}
+
 TEST(SpeckRemoval, KeepsTheSurfaceFeaturesAndWhatLiesBeyondTheRegion)
 {
     // A group of nine voxels is a feature; a speck reaching past the region cannot be fixed here.

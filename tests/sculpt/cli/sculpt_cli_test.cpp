@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 
 namespace sculpt {
 namespace {
@@ -312,6 +313,33 @@ TEST(SculptCli, ApplyReplaysTheFaceScriptOnTheClayBall)
     r = runSculpt("apply clay.vdb " + script + " -o again.vdb --threads 1", dir.path());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(infoJson(dir, "again.vdb"), face);
+}
+
+TEST(SculptCli, ImportRemovesDebrisShellsAndSaysSo)
+{
+    // A cube of side 20 and, beside it, one under two voxels wide: too small to keep as a shell.
+    TempDir dir;
+    std::ofstream obj(dir / "two.obj");
+    const auto cube = [&obj](double cx, double a) {
+        for (int k = 0; k < 8; ++k)
+            obj << "v " << cx + (k & 1 ? a : -a) << " " << (k & 2 ? a : -a) << " " << (k & 4 ? a : -a) << "\n";
+    };
+    cube(0.0, 10.0);
+    cube(20.1, 0.45);
+    for (int base : {0, 8}) {
+        for (const char* face : {"1 3 4 2", "5 6 8 7", "1 2 6 5", "3 7 8 4", "1 5 7 3", "2 4 8 6"}) {
+            obj << "f";
+            std::istringstream corners(face);
+            for (int c; corners >> c;) obj << " " << base + c;
+            obj << "\n";
+        }
+    }
+    obj.close();
+    const auto r = runSculpt("import two.obj --voxel-size 0.5 -o two.vdb", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("voxels of debris"), std::string::npos) << r.err;
+    const auto info = runSculpt("info two.vdb --json", dir.path());
+    EXPECT_NE(info.out.find("\"components\":1,"), std::string::npos) << info.out;
 }
 
 TEST(SculptCli, ImportMeshesAndScansAndMorphTowardsAMesh)
