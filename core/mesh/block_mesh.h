@@ -27,6 +27,10 @@ struct BlockMesh {
     std::size_t memoryBytes() const;
 };
 
+/// The multiple of `size` at or below `v` (floor division, for negative coordinates too): the
+/// origin of the block or chunk holding coordinate v.
+inline int floorToMultiple(int v, int size) { return v >= 0 ? v / size * size : -((-v + size - 1) / size) * size; }
+
 /// Global key of the grid edge from voxel (x, y, z) along `axis`: 20 bits per coordinate
 /// (|x|, |y|, |z| < 2^19) and 2 bits of axis. Axis 3 names the centre vertex of cell (x, y, z)
 /// (see mc::kCentre).

@@ -1,12 +1,12 @@
 #include "core/mesh/field_measures.h"
 
+#include "core/base/union_find.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/mesh/surface_statistics.h"
 
 #include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_reduce.h>
 
-#include <numeric>
 #include <vector>
 
 namespace sculpt {
@@ -56,18 +56,12 @@ struct CrossingBounds {
 /// The number of shells of a welded mesh: sets of triangles connected through shared vertices.
 int countShells(const TriangleMesh& mesh)
 {
-    std::vector<std::uint32_t> parent(mesh.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto root = [&](std::uint32_t v) {
-        while (parent[v] != v) v = parent[v] = parent[parent[v]];  // path halving
-        return v;
-    };
+    UnionFind sets(mesh.positions.size());
     for (const auto& t : mesh.triangles) {
-        for (int k = 1; k < 3; ++k) parent[root(t[size_t(k)])] = root(t[0]);
+        sets.join(t[1], t[0]);
+        sets.join(t[2], t[0]);
     }
-    int shells = 0;
-    for (std::uint32_t v = 0; v < parent.size(); ++v) shells += parent[v] == v;
-    return shells;
+    return int(sets.count());
 }
 
 /// Volume (divergence theorem), area, V - E + F and shells of our welded mesh. It is closed

@@ -12,12 +12,11 @@ namespace sculpt {
 
 namespace {
 
-int floorTo(int v, int B) { return v & ~(B - 1); }
-
 /// Block origins o (multiples of B) with lo <= o <= hi on every axis.
 void addBlocksBetween(const openvdb::Coord& lo, const openvdb::Coord& hi, int B, std::set<openvdb::Coord>& out)
 {
-    const openvdb::Coord first(floorTo(lo.x() + B - 1, B), floorTo(lo.y() + B - 1, B), floorTo(lo.z() + B - 1, B));
+    const openvdb::Coord first(floorToMultiple(lo.x() + B - 1, B), floorToMultiple(lo.y() + B - 1, B),
+                               floorToMultiple(lo.z() + B - 1, B));
     for (int x = first.x(); x <= hi.x(); x += B)
         for (int y = first.y(); y <= hi.y(); y += B)
             for (int z = first.z(); z <= hi.z(); z += B) out.insert(openvdb::Coord(x, y, z));

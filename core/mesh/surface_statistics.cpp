@@ -1,29 +1,18 @@
 #include "core/mesh/surface_statistics.h"
 
+#include "core/base/union_find.h"
+
 #include <algorithm>
-#include <numeric>
 
 namespace sculpt {
 
 namespace {
 
-struct UnionFind {
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t a)
-    {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-    std::vector<std::uint32_t> parent;
-};
-
-int floorTo(int v, int b) { return v >= 0 ? v / b * b : -((-v + b - 1) / b) * b; }
-
 /// Origin of the block that owns the vertex of `key`: the one its edge (or cell) starts in.
 openvdb::Coord ownerOf(std::uint64_t key, int B)
 {
-    return {floorTo(edgeKeyCoord(key, 0), B), floorTo(edgeKeyCoord(key, 1), B), floorTo(edgeKeyCoord(key, 2), B)};
+    return {floorToMultiple(edgeKeyCoord(key, 0), B), floorToMultiple(edgeKeyCoord(key, 1), B),
+            floorToMultiple(edgeKeyCoord(key, 2), B)};
 }
 
 }  // namespace
@@ -113,7 +102,7 @@ SurfaceStatistics::Topology SurfaceStatistics::topology(const IncrementalMesher&
             if (!found) ++topo.vertices;  // owned by no block: counted here, once per use
         }
     }
-    for (std::uint32_t n = 0; n < nodes; ++n) topo.shells += sets.find(n) == n ? 1 : 0;
+    topo.shells = sets.count();
     topo.euler = static_cast<long long>(topo.vertices) - static_cast<long long>(mTriangles / 2);
     return topo;
 }

@@ -1,5 +1,7 @@
 #include "tests/support/mesh_checks.h"
 
+#include "core/base/union_find.h"
+
 #include <vtkCleanPolyData.h>
 #include <vtkFeatureEdges.h>
 #include <vtkMassProperties.h>
@@ -12,7 +14,6 @@
 
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -127,18 +128,13 @@ double meshArea(const TriangleMesh& mesh)
 
 std::vector<std::size_t> shellTriangleCounts(const TriangleMesh& mesh)
 {
-    std::vector<std::uint32_t> parent(mesh.positions.size());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto find = [&](std::uint32_t a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    };
+    UnionFind sets(mesh.positions.size());
     for (const auto& t : mesh.triangles) {
-        parent[find(t[0])] = find(t[1]);
-        parent[find(t[1])] = find(t[2]);
+        sets.join(t[1], t[0]);
+        sets.join(t[2], t[0]);
     }
     std::map<std::uint32_t, std::size_t> counts;
-    for (const auto& t : mesh.triangles) ++counts[find(t[0])];
+    for (const auto& t : mesh.triangles) ++counts[sets.find(t[0])];
     std::vector<std::size_t> sizes;
     for (const auto& [root, count] : counts) sizes.push_back(count);
     std::sort(sizes.rbegin(), sizes.rend());

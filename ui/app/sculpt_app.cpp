@@ -80,7 +80,7 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
     mDocument = std::move(document);
     mPicker.reset();
     mStatistics = SurfaceStatistics();
-    mTopologyVersion = ~std::uint64_t(0);
+    mTopologyVersion = mMeasuredVersion = ~std::uint64_t(0);
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
     mReportVersion = mDocument->session().mesher()->version();
     mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
@@ -153,7 +153,11 @@ void SculptApp::refreshStatus(bool topology)
     mStatus.triangles = mStatistics.triangles();
     mStatus.volume = mStatistics.volume();
     mStatus.area = mStatistics.area();
-    mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
+    if (mMeasuredVersion != session.mesher()->version()) {  // whole-tree passes: only after a change
+        mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
+        mModelSize = session.modelSize();
+        mMeasuredVersion = session.mesher()->version();
+    }
     mStatus.blocks = mDisplay.blockCount();
     mStatus.undoBytes = session.history().memoryBytes();
     if (mFramesDrawn % 30 == 0) mStatus.memoryBytes = residentBytes();
@@ -181,9 +185,7 @@ void SculptApp::frame()
     mDisplay.setCoarse(moving && mStatistics.triangles() > mOptions.lodTriangles);
     refreshStatus(!mStroke.active());
     updateCursor();
-    openvdb::CoordBBox box;
-    session.field().grid().tree().evalLeafBoundingBox(box);
-    mPlanes.show(mBrush.symmetry, 0.6 * double(box.dim().asVec3d().length()) * session.field().voxelSize());
+    mPlanes.show(mBrush.symmetry, 0.6 * mModelSize);
     updateTitle();
 
     mViewport.renderer()->ResetCameraClippingRange();

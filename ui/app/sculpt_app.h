@@ -171,6 +171,8 @@ private:
     Measures mMeasures;
     std::vector<std::filesystem::path> mPendingScreenshots, mPendingReports;
     std::uint64_t mTopologyVersion = ~std::uint64_t(0);
+    std::uint64_t mMeasuredVersion = ~std::uint64_t(0);  // of the status's active voxels and mModelSize
+    double mModelSize = 0.0;                             // SculptSession::modelSize
     SurfaceStatistics::Topology mTopology;
     std::uint64_t mFramesDrawn = 0;
 };

@@ -23,8 +23,6 @@ namespace {
 constexpr double kCoarseCellVoxels = 3.0;
 constexpr int kChunkBlocks = 4;  // per axis
 
-int floorTo(int v, int b) { return v >= 0 ? v / b * b : -((-v + b - 1) / b) * b; }
-
 /// `part` appended to `whole`, its indices shifted.
 void append(BlockMesh& whole, const BlockMesh& part)
 {
@@ -108,7 +106,7 @@ ModelDisplay::~ModelDisplay()
 openvdb::Coord ModelDisplay::chunkOf(const openvdb::Coord& block) const
 {
     const int size = kChunkBlocks * mBlockVoxels;
-    return {floorTo(block.x(), size), floorTo(block.y(), size), floorTo(block.z(), size)};
+    return {floorToMultiple(block.x(), size), floorToMultiple(block.y(), size), floorToMultiple(block.z(), size)};
 }
 
 void ModelDisplay::remove(const openvdb::Coord& origin)
