@@ -24,9 +24,10 @@ declare -A uiAllowed=(
   [window]="input"
   [view]=""
   [document]=""
+  [jobs]=""
   [sculpting]="view document input"
   [panels]="app"
-  [app]="app document input panels sculpting view window"
+  [app]="app document input jobs panels sculpting view window"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }

@@ -11,7 +11,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  mricron-data
+  mricron-data libcgal-demo
 )
 
 missing=()

@@ -55,6 +55,16 @@ FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
     }
 }
 
+void FieldImage::swapGrid(openvdb::FloatGrid::Ptr& other)
+{
+    if (!other || other->getGridClass() != openvdb::GRID_LEVEL_SET || other->transform() != mGrid->transform()) {
+        throw InputError("a whole-model edit must keep the model's voxels (a level set on the same transform)");
+    }
+    markDirty(allLeaves());
+    std::swap(mGrid, other);
+    markDirty(allLeaves());
+}
+
 double FieldImage::halfWidthVoxels() const { return double(mGrid->background()) / mVoxelSize; }
 
 DirtyRegion FieldImage::allLeaves() const

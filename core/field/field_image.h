@@ -51,6 +51,8 @@ public:
     /// Write access for edits; the editor must report what it touched with markDirty().
     openvdb::FloatGrid& mutableGrid() { return *mGrid; }
     openvdb::FloatGrid::ConstPtr gridPtr() const { return mGrid; }
+    /// The grid's shared pointer with write access, to hand the whole grid on (an undo record).
+    openvdb::FloatGrid::Ptr mutableGridPtr() { return mGrid; }
 
     /// Adds leaves to the region touched since the last takeDirtyRegion().
     void markDirty(const DirtyRegion& region) { mDirty.merge(region); }
@@ -59,6 +61,9 @@ public:
     DirtyRegion takeDirtyRegion();
     /// Every leaf of the grid, for edits that change the whole field.
     DirtyRegion allLeaves() const;
+    /// Exchanges the grid with `other` (a whole-model edit and its undo); every leaf of both is
+    /// marked dirty. @throws InputError unless `other` is a level set on the same transform.
+    void swapGrid(openvdb::FloatGrid::Ptr& other);
 
     /// Whether anything is inside: a voxel or tile of negative distance (an edit that removed
     /// everything leaves only the outside).

@@ -71,8 +71,21 @@ void LeafJournal::restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOr
     }
 }
 
+LeafJournal LeafJournal::wholeGrid(openvdb::FloatGrid::Ptr grid)
+{
+    LeafJournal journal;
+    journal.mBytes = grid->memUsage();
+    journal.mWholeGrid = std::move(grid);
+    return journal;
+}
+
 void LeafJournal::swap(FieldImage& field)
 {
+    if (mWholeGrid) {
+        field.swapGrid(mWholeGrid);
+        mBytes = mWholeGrid->memUsage();
+        return;
+    }
     openvdb::FloatTree& tree = field.mutableGrid().tree();
     // Capture everything first: restoring a coarse tile wipes the leaves below it.
     std::map<openvdb::Coord, Saved> current;

@@ -8,6 +8,8 @@
 /// replaced, so a second swap() re-applies the edit: both restore the tree bit for bit, down to
 /// the tiles a split produced. Memory follows the number of leaves edited, not the model.
 ///
+/// A whole-model edit (a filter over the model) journals the whole grid instead: wholeGrid().
+///
 /// The tree must be a pruned level set (pruneLevelSet erases +background root tiles), which is
 /// what every edit here leaves behind.
 
@@ -26,6 +28,9 @@ public:
     LeafJournal(LeafJournal&&) noexcept;
     LeafJournal& operator=(LeafJournal&&) noexcept;
 
+    /// A journal holding a whole grid: swap() exchanges it with the field's (same transform).
+    static LeafJournal wholeGrid(openvdb::FloatGrid::Ptr grid);
+
     /// Keeps the tree's state at this leaf position, unless this journal already holds it.
     void save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
     bool contains(const openvdb::Coord& leafOrigin) const;
@@ -33,7 +38,7 @@ public:
     /// Restores every saved position and keeps what it replaced; marks them dirty in `field`.
     void swap(FieldImage& field);
 
-    bool empty() const { return mEntries.empty(); }
+    bool empty() const { return mEntries.empty() && !mWholeGrid; }
     std::size_t leafCount() const { return mEntries.size(); }
     /// Heap bytes held (leaf copies and bookkeeping).
     std::size_t memoryBytes() const { return mBytes; }
@@ -44,6 +49,7 @@ private:
     static void restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin, const Saved& saved);
 
     std::map<openvdb::Coord, Saved> mEntries;
+    openvdb::FloatGrid::Ptr mWholeGrid;
     std::size_t mBytes = 0;
 };
 

@@ -148,7 +148,9 @@ private:
         double speed = 0.0;
         if (mTarget) {
             const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
-            speed -= mC.alpha * std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
+            const double clamped = std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
+            if (std::abs(s.at(x, y, z)) < mC.h) mFastestTarget = std::max(mFastestTarget, std::abs(clamped));
+            speed -= mC.alpha * clamped;
         }
         if (mC.local) {
             const openvdb::Vec3d world = mC.xform->indexToWorld(foot);
@@ -159,30 +161,41 @@ private:
         return speed;
     }
 
+public:
+    /// Largest |clamped phi_T| read so far within a voxel of the surface: how fast the target
+    /// term actually moved the surface.
+    double fastestTarget() const { return mFastestTarget; }
+
 private:
     const StepConstants& mC;
     std::optional<openvdb::tree::ValueAccessor<const openvdb::FloatTree>> mTarget;
+    double mFastestTarget = 0.0;
 };
 
 /// One explicit Euler stage over every leaf: out[i] = phi + dt * rate (inactive voxels kept).
-void eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves, const StepConstants& c, double dt,
-                std::vector<LeafValues>& out)
+/// Returns the largest |clamped phi_T| the stage read near the surface (0 without a target).
+double eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& leaves, const StepConstants& c, double dt,
+                  std::vector<LeafValues>& out)
 {
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const tbb::blocked_range<size_t>& r) {
-        LeafStencil stencil;
-        VoxelRate rate(c);
-        for (size_t i = r.begin(); i < r.end(); ++i) {
-            const LeafT& leaf = *leaves[i];
-            std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
-            if (leaf.isEmpty()) continue;
-            stencil.gather(tree, leaf.origin());
-            for (auto it = leaf.cbeginValueOn(); it; ++it) {
-                const openvdb::Coord local = it.getCoord() - leaf.origin();
-                const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
-                if (dphi) out[i][it.pos()] = float(*it + dt * *dphi);
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, leaves.size()), 0.0,
+        [&](const tbb::blocked_range<size_t>& r, double fastest) {
+            LeafStencil stencil;
+            VoxelRate rate(c);
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                const LeafT& leaf = *leaves[i];
+                std::copy(leaf.buffer().data(), leaf.buffer().data() + LeafT::SIZE, out[i].begin());
+                if (leaf.isEmpty()) continue;
+                stencil.gather(tree, leaf.origin());
+                for (auto it = leaf.cbeginValueOn(); it; ++it) {
+                    const openvdb::Coord local = it.getCoord() - leaf.origin();
+                    const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
+                    if (dphi) out[i][it.pos()] = float(*it + dt * *dphi);
+                }
             }
-        }
-    });
+            return std::max(fastest, rate.fastestTarget());
+        },
+        [](double a, double b) { return std::max(a, b); });
 }
 
 void writeLeaves(const std::vector<LeafT*>& leaves, const std::vector<LeafValues>& values, float background)
@@ -225,8 +238,9 @@ void validateTerms(const MotionTerms& t, const FieldImage& field)
     }
 }
 
-/// One TVD-RK2 (Heun) step over every leaf of `grid`.
-void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
+/// One TVD-RK2 (Heun) step over every leaf of `grid`; returns the largest |clamped phi_T| read
+/// near the surface.
+double rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
 {
     auto& tree = grid.tree();
     auto leaves = leafList(tree);
@@ -236,9 +250,9 @@ void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
         leaves.end());
     if (c.firstOrderTime) {
         std::vector<LeafValues> next(leaves.size());
-        eulerStage(tree, leaves, c, dt, next);
+        const double fastest = eulerStage(tree, leaves, c, dt, next);
         writeLeaves(leaves, next, grid.background());
-        return;
+        return fastest;
     }
     std::vector<LeafValues> phi0(leaves.size()), stage(leaves.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
@@ -246,15 +260,16 @@ void rk2Step(openvdb::FloatGrid& grid, const StepConstants& c, double dt)
             std::copy(leaves[i]->buffer().data(), leaves[i]->buffer().data() + LeafT::SIZE, phi0[i].begin());
         }
     });
-    eulerStage(tree, leaves, c, dt, stage);
+    double fastest = eulerStage(tree, leaves, c, dt, stage);
     writeLeaves(leaves, stage, grid.background());
-    eulerStage(tree, leaves, c, dt, stage);
+    fastest = std::max(fastest, eulerStage(tree, leaves, c, dt, stage));
     tbb::parallel_for(tbb::blocked_range<size_t>(0, leaves.size()), [&](const auto& r) {
         for (size_t i = r.begin(); i < r.end(); ++i) {
             for (size_t k = 0; k < LeafT::SIZE; ++k) stage[i][k] = 0.5f * (phi0[i][k] + stage[i][k]);
         }
     });
     writeLeaves(leaves, stage, grid.background());
+    return fastest;
 }
 
 void redistanceGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
@@ -277,13 +292,14 @@ LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, Evolu
     if (mTerms.target && mTerms.target->clampWorld <= 0.0) {
         mTerms.target->clampWorld = mTerms.target->target->background();
     }
+    if (mTerms.target) mTargetReach = mTerms.target->clampWorld;
     if (!(mOptions.cfl > 0.0 && mOptions.cfl <= 1.0)) throw InputError("CFL number must be in (0, 1]");
 }
 
 double LevelSetEvolution::maxAdvectionSpeed() const
 {
     double speed = 0.0;
-    if (mTerms.target) speed += mTerms.target->alpha * mTerms.target->clampWorld;
+    if (mTerms.target) speed += mTerms.target->alpha * mTargetReach;
     if (mTerms.local) speed += std::abs(mTerms.local->speedWorld);
     if (mTerms.uniform) speed += std::abs(mTerms.uniform->speedWorld);
     return speed;
@@ -365,7 +381,7 @@ void LevelSetEvolution::applyStep(double dt)
     if (mTerms.target) {
         c.target = &mTerms.target->target->tree();
         c.alpha = float(mTerms.target->alpha);
-        c.clampWorld = float(mTerms.target->clampWorld);
+        c.clampWorld = float(mTargetReach);
     }
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
     if (mTerms.smooth) c.smoothWeight = mTerms.smooth->weight;
@@ -386,7 +402,7 @@ void LevelSetEvolution::applyStep(double dt)
     };
     if (!mRegion) {
         DirtyRegion touched = mField.allLeaves();
-        rk2Step(grid, c, dt);
+        updateTargetReach(rk2Step(grid, c, dt));
         if (redistanceDue()) {
             mDiffusedSinceRedistance = 0.0;
             redistanceGrid(grid, mOptions);
@@ -399,13 +415,22 @@ void LevelSetEvolution::applyStep(double dt)
     // Local: move a copy of the leaves around the region, track it there, copy the inside back.
     LocalPatch patch(mField, Capsule::ball(mRegion->centreWorld, mRegion->radiusWorld + grid.background() + c.h));
     openvdb::FloatGrid& copy = patch.field().mutableGrid();
-    rk2Step(copy, c, dt);
+    updateTargetReach(rk2Step(copy, c, dt));
     if (redistanceDue()) {
         mDiffusedSinceRedistance = 0.0;
         redistanceGrid(copy, mOptions);
         mMovedSinceRedistance = 0.0;
     }
     patch.commit(mField, nullptr);
+}
+
+void LevelSetEvolution::updateTargetReach(double fastest)
+{
+    // Within a step the surface moves at most cfl h (and the volume control as much again),
+    // and phi_T is 1-Lipschitz: a voxel more than the fastest reading near the surface bounds
+    // the surface's next speed. Voxels deeper in the band are clamped to the same reach (their
+    // foot points are less sure), so the CFL limit holds everywhere.
+    if (mTerms.target) mTargetReach = std::min(mTerms.target->clampWorld, fastest + mField.voxelSize());
 }
 
 void LevelSetEvolution::redistance()

@@ -6,7 +6,8 @@
 /// volume and local terms. The advective part uses Godunov's upwind |grad phi| built from HJ-WENO5
 /// one-sided differences (or first-order ones); the curvature part central differences; time
 /// integration is the TVD Runge-Kutta of order 2 (Heun). Steps obey the CFL limits
-/// dt <= cfl h / max|F_adv| and dt <= h^2 / (6 beta). Each leaf is processed on a dense copy
+/// dt <= cfl h / max|F_adv| and dt <= h^2 / (6 beta), where the target term's share of max|F_adv|
+/// is clamped to what the previous step read near the surface plus a voxel. Each leaf is processed on a dense copy
 /// with a 3-voxel apron (gatherDense), in parallel. Once any level set of the band may have moved
 /// half a voxel (max|F_adv| t), or curvature diffusion may have carried the band edge's error half
 /// a voxel (beta t >= h^2 / 2), the band is rebuilt and redistanced with
@@ -71,6 +72,8 @@ private:
     /// lowered by it, within the band.
     void offsetValues(double displacement);
     double maxAdvectionSpeed() const;
+    /// Bounds the target term's next speed by what the last step read.
+    void updateTargetReach(double fastest);
 
     FieldImage& mField;
     MotionTerms mTerms;
@@ -82,6 +85,10 @@ private:
     double mVolumeBias = 0.0;  // mesh volume - band estimate, at the last calibration
     int mCalibratedAt = -1;    // step of the last calibration
     double mDiffusedSinceRedistance = 0.0;
+    // The target term's clamp for the next step, world units: the clamp w, or less once the
+    // surface is nearer the target than w. Near convergence it falls well below w, so steps
+    // grow (the CFL limit follows the speed the surface actually has).
+    double mTargetReach = 0.0;
 };
 
 }  // namespace sculpt

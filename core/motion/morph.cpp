@@ -1,23 +1,23 @@
 #include "core/motion/morph.h"
 
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
+#include "core/motion/shape_distance.h"
+#include "core/motion/wide_distance.h"
 
 #include <openvdb/tools/GridTransformer.h>
-#include <openvdb/tree/LeafManager.h>
-#include <tbb/parallel_reduce.h>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace sculpt {
 
 namespace {
-
-using ConstLeafRange = openvdb::tree::LeafManager<const openvdb::FloatTree>::LeafRange;
 
 /// Centre of the interior (voxels and tiles with negative values), world space.
 openvdb::Vec3d interiorCentroid(const openvdb::FloatGrid& grid)
@@ -59,7 +59,14 @@ FieldImage resampleInto(const FieldImage& source, const FieldImage& target, cons
     return FieldImage(out, source.units());
 }
 
-FieldImage prepareSource(const FieldImage& source, const FieldImage& target, bool align, openvdb::Vec3d& shift)
+}  // namespace
+
+bool morphConverged(const ShapeDistance& d, double toleranceWorld, double voxelSize)
+{
+    return d.maxResolvedWorld <= toleranceWorld && d.maxWorld <= toleranceWorld + voxelSize;
+}
+
+FieldImage morphStart(const FieldImage& source, const FieldImage& target, bool align, openvdb::Vec3d& shift)
 {
     shift = align ? interiorCentroid(target.grid()) - interiorCentroid(source.grid()) : openvdb::Vec3d(0.0);
     FieldImage prepared = resampleInto(source, target, shift);
@@ -71,6 +78,8 @@ FieldImage prepareSource(const FieldImage& source, const FieldImage& target, boo
     return prepared;
 }
 
+namespace {
+
 MotionTerms targetTerms(const FieldImage& target)
 {
     MotionTerms terms;
@@ -78,79 +87,134 @@ MotionTerms targetTerms(const FieldImage& target)
     return terms;
 }
 
-/// Watches the distance to the target: converged below the tolerance, stalled when 40 steps
-/// brought no 1% improvement (sharp corners stay a fraction of a voxel off).
+/// The target and its distance widened over the source. The motion reads the band: its speed is
+/// clamped to the band's half width anyway, and beyond the band only the sign matters. The
+/// convergence measure reads the widened distance, so it sees far parts approach.
+struct MorphTarget {
+    const FieldImage& shape;
+    WideDistance distance;
+    ShapeDistance distanceFrom(const FieldImage& field) const
+    {
+        return twoSidedDistance(field.grid(), shape.grid(), distance);
+    }
+};
+
+/// Watches the two-sided distance to the target: converged when it is within tolerance
+/// (withinTolerance); stalled when 40 steps brought no 1% fall of its mean
+/// (thin parts and sharp edges stay a fraction of a voxel off). The mean keeps falling while
+/// any part still travels, far or near.
 class ConvergenceWatch {
 public:
     explicit ConvergenceWatch(double tolerance) : mTolerance(tolerance) {}
 
     /// Measures every 4th step; true when the morph should stop.
-    bool done(const FieldImage& field, const FieldImage& target, int step)
+    bool done(const FieldImage& field, const MorphTarget& target, int step)
     {
         if (step % 4 != 0) return false;
-        mLast = surfaceDistance(field, target);
-        if (mLast < 0.99 * mBest) {
-            mBest = mLast;
+        mLast = target.distanceFrom(field);
+        if (mLast.meanWorld < 0.99 * mBestMean) {
+            mBestMean = mLast.meanWorld;
             mBestStep = step;
         }
-        return mLast <= mTolerance || step - mBestStep >= 40;
+        return morphConverged(mLast, mTolerance, field.voxelSize()) || step - mBestStep >= 40;
     }
-    double last() const { return mLast; }
+    double lastMax() const { return mLast.maxResolvedWorld; }
 
 private:
     double mTolerance;
-    double mBest = std::numeric_limits<double>::infinity();
-    double mLast = std::numeric_limits<double>::infinity();
+    double mBestMean = std::numeric_limits<double>::infinity();
+    ShapeDistance mLast{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                        std::numeric_limits<double>::infinity(), 0.0};
     int mBestStep = 0;
 };
 
-/// First pass: how long the plain target-following motion takes to converge.
-double convergenceTime(const FieldImage& start, const FieldImage& target, const MorphOptions& o, double tolerance,
-                       const Progress& progress)
+/// States of the plain target-following motion, kept every few steps of the first pass, so the
+/// second starts each frame from the latest state before it instead of from the source (without
+/// volume control the two passes follow the same motion). At most 16 copies, fewer if memory is
+/// short; when full, every other one goes and the interval doubles.
+class Checkpoints {
+public:
+    struct State {
+        double time;
+        openvdb::FloatGrid::ConstPtr grid;
+    };
+
+    explicit Checkpoints(const openvdb::FloatGrid& grid)
+        : mCapacity(
+              std::min<std::uint64_t>(16, availableMemoryBytes() / (4 * std::max<std::uint64_t>(grid.memUsage(), 1))))
+    {}
+
+    void offer(const openvdb::FloatGrid& grid, double time, int step)
+    {
+        if (mCapacity < 2 || step % mEvery != 0) return;
+        if (mKept.size() == mCapacity) {
+            for (size_t i = 1; 2 * i < mKept.size(); ++i) mKept[i] = mKept[2 * i];
+            mKept.resize((mKept.size() + 1) / 2);
+            mEvery *= 2;
+            if (step % mEvery != 0) return;
+        }
+        mKept.push_back({time, grid.deepCopy()});
+    }
+
+    /// The latest state at or before `time`, or nullptr.
+    const State* latestAtOrBefore(double time) const
+    {
+        const State* found = nullptr;
+        for (const State& s : mKept) {
+            if (s.time <= time) found = &s;
+        }
+        return found;
+    }
+
+private:
+    std::uint64_t mCapacity;
+    int mEvery = 8;
+    std::vector<State> mKept;
+};
+
+struct FirstPass {
+    double duration = 0.0;  ///< morph time T to convergence (or stall)
+    int steps = 0;
+    Checkpoints states;
+};
+
+/// First pass: how long the plain target-following motion takes to converge, and states along
+/// the way (the last at T).
+FirstPass convergenceTime(const FieldImage& start, const MorphTarget& target, const MorphOptions& o, double tolerance,
+                          const Progress& progress)
 {
     FieldImage field(start.grid().deepCopy());
-    LevelSetEvolution evolution(field, targetTerms(target));
+    LevelSetEvolution evolution(field, targetTerms(target.shape));
     ConvergenceWatch watch(tolerance);
-    const double d0 = std::max(surfaceDistance(field, target), 2.0 * tolerance);
+    FirstPass pass{0.0, 0, Checkpoints(field.grid())};
+    const double d0 = std::max(target.distanceFrom(field).maxWorld, 2.0 * tolerance);
     while (evolution.stepCount() < o.maxSteps && !watch.done(field, target, evolution.stepCount())) {
         evolution.step();
-        const double d = std::max(watch.last(), tolerance);
-        if (std::isfinite(d)) report(progress, 0.5 * std::clamp(std::log(d0 / d) / std::log(d0 / tolerance), 0.0, 1.0));
+        pass.states.offer(field.grid(), evolution.time(), evolution.stepCount());
+        const double d = std::max(watch.lastMax(), tolerance);
+        if (std::isfinite(d)) report(progress, std::clamp(std::log(d0 / d) / std::log(d0 / tolerance), 0.0, 1.0));
     }
-    return evolution.time();
+    pass.duration = evolution.time();
+    pass.steps = evolution.stepCount();
+    pass.states.offer(field.grid(), pass.duration, 0);
+    return pass;
+}
+
+/// The Hausdorff distance between the final surface and the target, both ways beyond the bands.
+ShapeDistance finalDistance(const FieldImage& field, const MorphTarget& target)
+{
+    const WideDistance fieldDistance(field.gridPtr(), target.shape.grid());
+    return twoSidedDistance(field.grid(), fieldDistance, target.shape.grid(), target.distance);
+}
+
+/// Progress of a part of the work: fractions [begin, end] of the whole.
+Progress part(const Progress& progress, double begin, double end)
+{
+    if (!progress) return {};
+    return [=](double f) { return progress(begin + (end - begin) * f); };
 }
 
 }  // namespace
-
-double surfaceDistance(const FieldImage& field, const FieldImage& target)
-{
-    openvdb::tree::LeafManager<const openvdb::FloatTree> leaves(field.grid().tree());
-    return tbb::parallel_reduce(
-        leaves.leafRange(), 0.0,
-        [&](const ConstLeafRange& r, double worst) {
-            auto acc = field.grid().getConstAccessor();
-            auto targetAcc = target.grid().getConstAccessor();
-            for (auto leaf = r.begin(); leaf; ++leaf) {
-                for (auto it = leaf->cbeginValueOn(); it; ++it) {
-                    if (*it >= 0.0f) continue;
-                    for (int axis = 0; axis < 3; ++axis) {
-                        for (int side : {-1, 1}) {
-                            openvdb::Coord n = it.getCoord();
-                            n[axis] += side;
-                            const float outside = acc.getValue(n);
-                            if (outside < 0.0f) continue;
-                            openvdb::Vec3d p = it.getCoord().asVec3d();
-                            p[axis] += side * double(*it) / (double(*it) - double(outside));
-                            const double d = std::abs(openvdb::tools::BoxSampler::sample(targetAcc, p));
-                            worst = std::max(worst, d);
-                        }
-                    }
-                }
-            }
-            return worst;
-        },
-        [](double a, double b) { return std::max(a, b); });
-}
 
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& o,
                    const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress)
@@ -158,9 +222,11 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     if (o.frames < 2) throw InputError("a morph needs at least 2 frames (got " + std::to_string(o.frames) + ")");
     if (!(o.toleranceVoxels > 0.0)) throw InputError("morph tolerance must be positive");
     MorphSummary summary;
-    const FieldImage start = prepareSource(source, target, o.align, summary.translation);
+    const FieldImage start = morphStart(source, target, o.align, summary.translation);
     const double tolerance = o.toleranceVoxels * target.voxelSize();
-    const double duration = convergenceTime(start, target, o, tolerance, progress);
+    const MorphTarget goal{target, WideDistance(target.gridPtr(), start.grid(), part(progress, 0.0, 0.05))};
+    FirstPass first = convergenceTime(start, goal, o, tolerance, part(progress, 0.05, 0.5));
+    const double duration = first.duration;
 
     FieldImage field(start.grid().deepCopy(), source.units());
     MotionTerms terms = targetTerms(target);
@@ -168,46 +234,61 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     const double v0 = meshVolumeArea(field).volume;
     const double v1 = meshVolumeArea(target).volume;
     if (o.keepVolume) terms.volume = VolumeTerm{v0, 1.0};
-    LevelSetEvolution evolution(field, terms);
+    std::optional<LevelSetEvolution> evolution(std::in_place, field, terms);
+    double startTime = 0.0;  // morph time at which `evolution` started
+    int steps = 0;           // of the evolutions before this one
+    auto now = [&] { return startTime + evolution->time(); };
+    auto secondPassSteps = [&] { return steps + evolution->stepCount(); };
+    auto resumeFrom = [&](const Checkpoints::State& state) {
+        steps += evolution->stepCount();
+        field = FieldImage(state.grid->deepCopy(), source.units());
+        evolution.emplace(field, terms);
+        startTime = state.time;
+    };
 
     auto emit = [&](int index) {
         if (index > 0) {
-            evolution.redistance();
+            evolution->redistance();
             removeSpecks(field);
         }
-        if (evolution.terms().volume) evolution.settleVolume();  // on the straight line
+        if (evolution->terms().volume) evolution->settleVolume();  // on the straight line
         const double volume = meshVolumeArea(field).volume;
         summary.frameVolumes.push_back(volume);
-        onFrame(MorphFrame{index, evolution.time(), volume, field});
+        onFrame(MorphFrame{index, now(), volume, field});
     };
     emit(0);
     for (int frame = 1; frame < o.frames; ++frame) {
         const double frameTime = duration * frame / (o.frames - 1);
-        while (evolution.time() < frameTime && evolution.stepCount() < o.maxSteps) {
-            const double dt = std::min(frameTime - evolution.time(), evolution.stableTimeStep());
+        const Checkpoints::State* state = o.keepVolume ? nullptr : first.states.latestAtOrBefore(frameTime);
+        if (state && state->time > now()) resumeFrom(*state);
+        while (now() < frameTime && secondPassSteps() < o.maxSteps) {
+            const double dt = std::min(frameTime - now(), evolution->stableTimeStep());
             // The line ends on the target's volume at T; from there the shape converges onto the
             // target itself, which has that volume, so the control stops.
-            auto& volume = evolution.terms().volume;
-            if (volume && evolution.time() + dt < duration) {
-                volume->targetVolume = v0 + (v1 - v0) * (evolution.time() + dt) / duration;
+            auto& volume = evolution->terms().volume;
+            if (volume && now() + dt < duration) {
+                volume->targetVolume = v0 + (v1 - v0) * (now() + dt) / duration;
             } else {
                 volume.reset();
             }
-            evolution.step(dt);
-            report(progress, 0.5 + 0.5 * evolution.time() / std::max(duration, 1e-30));
+            evolution->step(dt);
+            report(progress, 0.5 + 0.5 * now() / std::max(duration, 1e-30));
         }
         if (frame + 1 == o.frames) {  // the last frame waits until the surface stops improving
             ConvergenceWatch watch(0.0);
-            while (evolution.stepCount() < o.maxSteps && !watch.done(field, target, evolution.stepCount())) {
-                evolution.step();
+            while (secondPassSteps() < o.maxSteps && !watch.done(field, goal, evolution->stepCount())) {
+                evolution->step();
             }
         }
         emit(frame);
     }
-    summary.steps = evolution.stepCount();
-    summary.duration = evolution.time();
-    summary.finalDistanceWorld = surfaceDistance(field, target);
-    summary.converged = summary.finalDistanceWorld <= tolerance;
+    summary.steps = first.steps + secondPassSteps();
+    summary.duration = now();
+    const ShapeDistance final = finalDistance(field, goal);
+    summary.finalDistanceWorld = final.maxResolvedWorld;
+    summary.worstDistanceWorld = final.maxWorld;
+    summary.resolvedFraction = final.resolvedFraction;
+    summary.converged = morphConverged(final, tolerance, target.voxelSize());
     return summary;
 }
 

@@ -3,10 +3,14 @@
 /// @brief Automatic morphing: the source surface follows a target shape by level-set motion
 ///        (F_T = -alpha clamp(phi_T, -w, w)), growing where the target is larger and shrinking
 ///        where it is smaller, through changes of topology, optionally on a straight line of
-///        volumes between the two shapes.
+///        volumes between the two shapes. phi_T is the target's distance widened beyond its band
+///        over the whole source (target_distance.h): far parts travel at the full speed alpha w
+///        and the morph sees them approach, so it stops only once the shapes meet or the
+///        distance stops falling, whatever their placement.
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
+#include "core/motion/shape_distance.h"
 
 #include <functional>
 #include <vector>
@@ -14,11 +18,12 @@
 namespace sculpt {
 
 struct MorphOptions {
-    int frames = 10;               ///< frames written, >= 2: the first is the source
-    bool keepVolume = false;       ///< hold V(t) on the line from V_source to V_target
-    bool align = false;            ///< translate the source's centroid onto the target's first
-    double toleranceVoxels = 0.4;  ///< converged when every surface point is this near the target
-    int maxSteps = 20000;          ///< give up after this many steps (per pass)
+    int frames = 10;          ///< frames written, >= 2: the first is the source
+    bool keepVolume = false;  ///< hold V(t) on the line from V_source to V_target
+    bool align = false;       ///< translate the source's centroid onto the target's first
+    double toleranceVoxels =
+        0.4;               ///< converged when each surface is this near the other where the target is resolvable
+    int maxSteps = 20000;  ///< give up after this many steps (per pass)
 };
 
 /// One frame of the sequence, evenly spaced in morph time.
@@ -30,9 +35,11 @@ struct MorphFrame {
 };
 
 struct MorphSummary {
-    int steps = 0;                  ///< steps of the recorded pass
+    int steps = 0;                  ///< steps of both passes
     double duration = 0.0;          ///< morph time at the last frame
-    double finalDistanceWorld = 0;  ///< surfaceDistance() of the final surface
+    double finalDistanceWorld = 0;  ///< Hausdorff distance to the target where it is resolvable (shape_distance.h)
+    double worstDistanceWorld = 0;  ///< the same over every point, thin parts and sharp edges included
+    double resolvedFraction = 1;    ///< share of surface points where the target is resolvable
     bool converged = false;
     openvdb::Vec3d translation{0.0};  ///< applied by align
     std::vector<double> frameVolumes;
@@ -40,15 +47,23 @@ struct MorphSummary {
 
 /// Morphs `source` into `target`. The source is first resampled into the target's voxels. A first
 /// pass finds the time T the morph needs to converge; the second records frames at i T/(N-1),
-/// continuing past T if it has not converged yet (the last frame is the final state).
-/// Cost: two passes of (time / step) x band steps.
+/// continuing past T if it has not converged yet (the last frame is the final state). Without
+/// volume control the second pass starts each frame from the first pass's latest kept state
+/// before it. Cost: (time / step) x band steps, plus per frame up to the interval between kept
+/// states (twice the steps with keepVolume); a coarse distance field over the source.
 /// @throws InputError if the shapes do not overlap and align is off, or options are invalid;
 ///         Cancelled if progress says stop.
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& options,
                    const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress = {});
 
-/// How far the surface of `field` is from the target's: max |phi_T| (trilinear) over the points
-/// where the surface crosses grid edges. Both grids must share their transform.
-double surfaceDistance(const FieldImage& field, const FieldImage& target);
+/// Converged: the two-sided distance is within `toleranceWorld` where the target is resolvable,
+/// and within a voxel more at its thin parts and sharp edges (so a thin part the surface never
+/// reached still counts).
+bool morphConverged(const ShapeDistance& distance, double toleranceWorld, double voxelSize);
+
+/// The source as the morph starts from it: in the target's voxels, moved by `shift` (world units)
+/// so its centroid sits on the target's if `align`, else not moved.
+/// @throws InputError if the shapes do not overlap (then align them).
+FieldImage morphStart(const FieldImage& source, const FieldImage& target, bool align, openvdb::Vec3d& shift);
 
 }  // namespace sculpt

@@ -9,6 +9,7 @@
 #include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
+#include "sculpt/session/model_filter.h"
 
 #include <CLI/CLI.hpp>
 

@@ -3,20 +3,10 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/io/vdb_file.h"
-#include "core/motion/volume_estimate.h"
 #include "sculpt/cli/progress_bar.h"
+#include "sculpt/session/model_filter.h"
 
 namespace sculpt::cli {
-
-void refuseEmptyResult(const FieldImage& field, const std::string& source, const std::string& operation)
-{
-    // Less than a voxel of volume left is nothing a user can see or print either.
-    const double voxel = field.voxelSize() * field.voxelSize() * field.voxelSize();
-    if (!field.enclosesSomething() || estimateVolumeArea(field.grid()).volume < voxel) {
-        throw InputError(source + ": " + operation +
-                         " leaves nothing of the model (no surface remains); nothing written");
-    }
-}
 
 FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
                         const std::function<void(FieldImage&, const Progress&)>& edit)

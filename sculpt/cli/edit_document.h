@@ -14,9 +14,6 @@ namespace sculpt::cli {
 /// Reads `input`, applies `edit` (drawing a bar labelled `label`), writes `output`; returns the
 /// edited field for the command's report. Fails before any work if `output` cannot be written,
 /// and refuses (writing nothing) an edit that leaves nothing of the model.
-/// @throws InputError naming `source` if `field` encloses nothing after `operation`.
-void refuseEmptyResult(const FieldImage& field, const std::string& source, const std::string& operation);
-
 FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
                         const std::function<void(FieldImage&, const Progress&)>& edit);
 

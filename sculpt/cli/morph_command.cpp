@@ -61,6 +61,11 @@ void runMorph(const MorphCommandOptions& o)
     std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps, summary.duration,
                 summary.finalDistanceWorld, target.units().c_str(),
                 summary.converged ? "converged" : "NOT converged: raise --max-steps or --tolerance");
+    if (summary.resolvedFraction < 1.0) {
+        std::printf("  measured where the target is at least 2.4 voxels thick (%.1f%% of the surface); at its thinner "
+                    "parts and sharp edges: %g %s\n",
+                    100.0 * summary.resolvedFraction, summary.worstDistanceWorld, target.units().c_str());
+    }
     for (size_t i = 0; i < summary.frameVolumes.size(); ++i) {
         std::printf("frame %04zu volume %g %s^3\n", i, summary.frameVolumes[i], target.units().c_str());
     }

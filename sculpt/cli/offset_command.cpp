@@ -1,6 +1,6 @@
-#include "core/motion/surface_flows.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
+#include "sculpt/session/model_filter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -18,8 +18,9 @@ struct OffsetOptions {
 
 void runOffset(const OffsetOptions& o)
 {
-    const FieldImage field = editDocument(o.input, o.output, "offsetting",
-                                          [&](FieldImage& f, const Progress& p) { offset(f, o.distance, p); });
+    const FieldImage field = editDocument(o.input, o.output, "offsetting", [&](FieldImage& f, const Progress& p) {
+        f = applyFilter(f, {ModelFilter::Kind::Offset, 0, false, o.distance}, o.input, p);
+    });
     std::cout << "wrote " << o.output << ": surface moved " << o.distance << " " << field.units()
               << " along its normal\n";
 }

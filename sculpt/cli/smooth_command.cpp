@@ -1,8 +1,8 @@
 #include "core/mesh/field_measures.h"
-#include "core/motion/surface_flows.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/number_checks.h"
+#include "sculpt/session/model_filter.h"
 
 #include <CLI/CLI.hpp>
 
@@ -24,7 +24,7 @@ void runSmooth(const SmoothOptions& o)
     double before = 0.0;
     const FieldImage field = editDocument(o.input, o.output, "smoothing", [&](FieldImage& f, const Progress& p) {
         before = measureField(f).volume;
-        smooth(f, o.iterations, o.keepVolume, p);
+        f = applyFilter(f, {ModelFilter::Kind::Smooth, o.iterations, o.keepVolume, 0.0}, o.input, p);
     });
     std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume " << before << " -> "
               << measureField(field).volume << " " << field.units() << "^3\n";

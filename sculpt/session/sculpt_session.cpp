@@ -136,6 +136,15 @@ void SculptSession::cancelStroke()
     updateMesh();
 }
 
+void SculptSession::replaceField(FieldImage result)
+{
+    if (mLive) throw std::logic_error("replaceField during a live stroke");
+    LeafJournal journal = LeafJournal::wholeGrid(result.mutableGridPtr());
+    journal.swap(mField);  // the field holds the result now, the journal what it replaced
+    mHistory.push(std::move(journal));
+    updateMesh();
+}
+
 bool SculptSession::undo()
 {
     const bool done = mHistory.undo(mField);

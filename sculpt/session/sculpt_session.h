@@ -50,6 +50,10 @@ public:
     /// Puts the field back as before the live stroke and forgets it.
     void cancelStroke();
     bool strokeActive() const { return mLive != nullptr; }
+    /// Makes `result` (a whole-model edit of this field: a filter, a morph frame) the field, as
+    /// one undo step that keeps the whole previous grid. Not during a live stroke.
+    /// @throws InputError unless `result` has the field's transform; nothing changes then.
+    void replaceField(FieldImage result);
     bool undo();
     bool redo();
 

@@ -283,6 +283,59 @@ TEST(SculptUi, NewAndQuitWithUnsavedChangesAskFirst)
     EXPECT_TRUE(reports[5]["modified"].get<bool>());
 }
 
+TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothing)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).key("S", {"alt"}).text("5000").key("Enter").wait(0.5).report(r);
+    for (int i = 0; i < 4; ++i) events.key("Left").wait(0.2);  // orbit while it runs
+    events.report(r).screenshot(dir / "job.png").key("Escape").untilJobEnds().report(r);
+    const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 4u);
+    const std::string original = reports[0]["checksum"];
+    ASSERT_TRUE(reports[1]["job"].is_object()) << reports[1].dump();
+    EXPECT_EQ(reports[1]["job"]["label"], "smooth 5000");
+    ASSERT_TRUE(reports[2]["job"].is_object()) << "5000 iterations cannot be over in a second";
+    // Frames kept coming while the job ran: at least one per orbit.
+    EXPECT_GE(reports[2]["frame"].get<int>() - reports[1]["frame"].get<int>(), 4);
+    EXPECT_EQ(reports[2]["checksum"], original);  // the job works on its own copy
+    EXPECT_EQ(reports[3]["last_job"], "cancelled");
+    EXPECT_TRUE(reports[3]["job"].is_null());
+    EXPECT_EQ(reports[3]["checksum"], original);
+    EXPECT_EQ(reports[3]["undo"], 0);
+    EXPECT_FALSE(reports[3]["modified"].get<bool>());
+}
+
+TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("smooth clay.vdb --iterations 8 -o cli.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).key("S", {"alt"}).text("8").key("Enter").untilJobEnds().report(r);
+    events.key("O", {"alt"}).text("2").key("Enter").untilJobEnds().report(r);
+    events.key("Z", {"ctrl"}).report(r).key("Z", {"ctrl"}).report(r).key("Z", {"ctrl", "shift"}).report(r);
+    const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 6u);
+    EXPECT_EQ(reports[1]["last_job"], "finished") << reports[1]["error"];
+    EXPECT_EQ(reports[1]["undo"], 1);
+    EXPECT_EQ(reports[1]["checksum"], checksumOfFile(dir / "cli.vdb"));  // as `sculpt smooth` does it
+    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+    EXPECT_EQ(reports[2]["undo"], 2);
+    EXPECT_GT(reports[2]["volume"].get<double>(), 1.1 * reports[1]["volume"].get<double>());  // offset by 2
+    EXPECT_EQ(reports[3]["checksum"], reports[1]["checksum"]);  // each undo is one filter, bit for bit
+    EXPECT_EQ(reports[4]["checksum"], reports[0]["checksum"]);
+    EXPECT_FALSE(reports[4]["modified"].get<bool>());
+    EXPECT_EQ(reports[5]["checksum"], reports[1]["checksum"]);
+}
+
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 {
     TempDir dir;

@@ -59,6 +59,8 @@ UiEvents& UiEvents::resize(int width, int height)
 
 UiEvents& UiEvents::quit() { return add({{"type", "quit"}}); }
 
+UiEvents& UiEvents::untilJobEnds() { return add({{"type", "wait"}}); }
+
 UiEvents& UiEvents::wait(double seconds)
 {
     mTime += seconds;

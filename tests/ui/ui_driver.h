@@ -32,6 +32,8 @@ public:
     UiEvents& resize(int width, int height);
     UiEvents& quit();
     UiEvents& wait(double seconds);
+    /// The replay holds until the running job (a filter) has ended.
+    UiEvents& untilJobEnds();
     void write(const std::filesystem::path& path) const;
 
 private:

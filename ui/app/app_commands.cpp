@@ -1,6 +1,7 @@
 #include "core/base/errors.h"
 #include "core/io/vdb_file.h"
 #include "ui/app/sculpt_app.h"
+#include "ui/window/app_window.h"
 
 #include <iostream>
 
@@ -38,16 +39,16 @@ void SculptApp::execute(Command command)
     case Command::SymmetryY: toggle(mBrush.symmetry.y); break;
     case Command::SymmetryZ: toggle(mBrush.symmetry.z); break;
     case Command::Undo:
-        if (!mDocument->undo()) mDialogs.notice = "nothing to undo";
+        if (!busy() && !mDocument->undo()) mDialogs.notice = "nothing to undo";
         break;
     case Command::Redo:
-        if (!mDocument->redo()) mDialogs.notice = "nothing to redo";
+        if (!busy() && !mDocument->redo()) mDialogs.notice = "nothing to redo";
         break;
     case Command::New:
-        if (guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::New;
+        if (!busy() && guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::New;
         break;
     case Command::Open:
-        if (guardUnsaved(command))
+        if (!busy() && guardUnsaved(command))
             mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
         break;
     case Command::Save:
@@ -70,7 +71,14 @@ void SculptApp::execute(Command command)
                             : fs::path(mDocument->path()).replace_extension(".strokes.json").string();
         break;
     case Command::Quit:
-        if (guardUnsaved(command)) mQuit = true;
+        if (guardUnsaved(command)) mQuit = true;  // a running job is cancelled on the way out
+        break;
+    case Command::SmoothModel:
+    case Command::OffsetModel:
+        if (busy()) break;
+        mDialogs.filter.kind = command == Command::SmoothModel ? ModelFilter::Kind::Smooth : ModelFilter::Kind::Offset;
+        mDialogs.prompt = command == Command::SmoothModel ? Dialogs::Prompt::SmoothModel : Dialogs::Prompt::OffsetModel;
+        mDialogs.focusField = true;
         break;
     case Command::FrameModel: frameModel(); break;
     case Command::ViewFront: mCamera.axisView(AxisView::Front); break;
@@ -169,10 +177,63 @@ void SculptApp::confirmPrompt()
             mDocument->saveStrokes(path);
             mDialogs.notice = "saved strokes to " + path.string();
             break;
+        case Dialogs::Prompt::SmoothModel:
+        case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
         case Dialogs::Prompt::None: break;
         }
     } catch (const InputError& e) {
         showError(e.what());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Jobs
+
+bool SculptApp::busy()
+{
+    if (!mJob) return false;
+    mDialogs.notice = "wait for " + mJob->label() + " to finish, or press Esc to cancel it";
+    return true;
+}
+
+void SculptApp::startFilter(const ModelFilter& filter)
+{
+    if (busy()) return;
+    // The job works on its own copy: the document stays as it is until the result lands.
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().grid().deepCopy(),
+                                             mDocument->session().field().units());
+    const std::string source = mDocument->path().empty() ? std::string("the model") : mDocument->path().string();
+    mJob = std::make_unique<BackgroundJob>(filterLabel(filter), [copy, filter, source](const Progress& p) {
+        return applyFilter(*copy, filter, source, p);
+    });
+    mDialogs.notice = mJob->label() + "...";
+}
+
+void SculptApp::cancelJob()
+{
+    if (mJob) mJob->cancel();
+}
+
+void SculptApp::pollJob()
+{
+    if (!mJob || !mJob->finished()) return;
+    const std::unique_ptr<BackgroundJob> job = std::move(mJob);
+    if (std::optional<FieldImage> result = job->takeResult()) {
+        mDocument->replaceField(std::move(*result), job->label());
+        mDialogs.notice = job->label() + " done (Ctrl+Z undoes it)";
+        mLastJob = "finished";
+    } else if (job->cancelled()) {
+        mDialogs.notice = job->label() + " cancelled: the model is as it was";
+        mLastJob = "cancelled";
+    } else {
+        showError(job->error());
+        mLastJob = "failed";
+    }
+    mHoverValid = false;
+    mLastInput = mWindow.time();  // show the notice
+    if (mWaitingSince >= 0.0) {   // the replay resumes, its later events as far apart as recorded
+        mPlayStart += mWindow.time() - mWaitingSince;
+        mWaitingSince = -1.0;
     }
 }
 

@@ -21,7 +21,9 @@ constexpr double kWheelZoomStep = 1.15;
 
 void SculptApp::handle(const InputEvent& event)
 {
-    if (!mOptions.record.empty() && event.type != EventType::Screenshot && event.type != EventType::Report) {
+    const bool scripted =
+        event.type == EventType::Screenshot || event.type == EventType::Report || event.type == EventType::WaitForJob;
+    if (!mOptions.record.empty() && !scripted) {
         mRecording.push_back(event);
     }
     if (event.type == EventType::Key) trackModifiers(event);
@@ -34,6 +36,9 @@ void SculptApp::handle(const InputEvent& event)
     case EventType::Report: mPendingReports.emplace_back(event.text); break;
     case EventType::Key: routeKey(event); break;
     case EventType::Text: break;
+    case EventType::WaitForJob:
+        if (mJob) mWaitingSince = mWindow.time();
+        break;
     default: routeMouse(event); break;
     }
 }
@@ -71,7 +76,7 @@ void SculptApp::pressButton(const InputEvent& event)
         mDrag = Drag::None;  // a click keeps the new size
         return;
     }
-    if (event.button == kLeftButton && !(event.mods & kAlt)) {
+    if (event.button == kLeftButton && !(event.mods & kAlt) && !busy()) {
         if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
             beginStroke(event, *hit);
             return;
@@ -158,6 +163,7 @@ void SculptApp::routeKey(const InputEvent& event)
         mDrag = Drag::None;
         return;
     }
+    if (mJob && event.key == GLFW_KEY_ESCAPE) return cancelJob();
     Command command;
     if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
 }

@@ -27,6 +27,8 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::SaveAs: return "save-as";
     case Dialogs::Prompt::ExportMesh: return "export";
     case Dialogs::Prompt::SaveStrokes: return "save-strokes";
+    case Dialogs::Prompt::SmoothModel: return "smooth-model";
+    case Dialogs::Prompt::OffsetModel: return "offset-model";
     default: return "none";
     }
 }
@@ -85,6 +87,8 @@ void SculptApp::writeReport(const fs::path& path)
     r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
     r["prompt"] = promptName(mDialogs.prompt);
     r["error"] = mDialogs.error;
+    r["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
+    r["last_job"] = mLastJob;
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
     r["frame_ms"] = mStatus.frameMs;

@@ -34,6 +34,8 @@ enum class Command {
     ExportMesh,
     SaveStrokes,
     Quit,
+    SmoothModel,
+    OffsetModel,
     FrameModel,
     ViewFront,
     ViewBack,

@@ -172,6 +172,7 @@ void SculptApp::refreshStatus(bool topology)
 void SculptApp::frame()
 {
     const double now = mWindow.time();
+    pollJob();
 
     const SculptSession& session = mDocument->session();
     const std::size_t remeshed = session.remeshedBlocks();
@@ -222,6 +223,7 @@ void SculptApp::drawPanels()
     drawHistoryPanel(*this);
     drawStatusBar(*this);
     drawDialogs(*this);
+    drawJobPanel(*this);
     if (mDialogs.help) drawHelpPanel(*this);
     if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
@@ -276,8 +278,8 @@ void SculptApp::finishReplay()
 bool SculptApp::idle() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
-    return mDrag == Drag::None && mWindow.time() - mLastInput > kSettleSeconds && mPendingScreenshots.empty() &&
-           mPendingReports.empty();
+    return mDrag == Drag::None && !mJob && mWindow.time() - mLastInput > kSettleSeconds &&
+           mPendingScreenshots.empty() && mPendingReports.empty();
 }
 
 void SculptApp::autosave()
@@ -302,9 +304,11 @@ int SculptApp::run()
     mPlayStart = mWindow.time();
     bool replayDone = false;
     while (!mQuit) {
-        const bool replaying = mPlayer && !mPlayer->finished();
+        const bool waiting = mWaitingSince >= 0.0;  // for a job (wait event): frames go on, events hold
+        const bool replaying = mPlayer && (!mPlayer->finished() || waiting);
         if (replaying) {
-            for (const InputEvent& event : mPlayer->take(mWindow.time() - mPlayStart)) {
+            for (const InputEvent& event :
+                 waiting ? std::vector<InputEvent>{} : mPlayer->take(mWindow.time() - mPlayStart)) {
                 if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
                 handle(event);
             }

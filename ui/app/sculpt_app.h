@@ -4,11 +4,13 @@
 ///        panels; every input, live or replayed, enters through handle().
 
 #include "core/mesh/surface_statistics.h"
+#include "sculpt/session/model_filter.h"
 #include "ui/app/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
+#include "ui/jobs/background_job.h"
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
@@ -52,10 +54,11 @@ struct StatusFigures {
 
 /// The dialogs ImGui shows; at most one prompt at a time.
 struct Dialogs {
-    enum class Prompt { None, New, Open, SaveAs, ExportMesh, SaveStrokes };
+    enum class Prompt { None, New, Open, SaveAs, ExportMesh, SaveStrokes, SmoothModel, OffsetModel };
     Prompt prompt = Prompt::None;
     std::string path;  ///< the prompt's text field
     NewShape newShape;
+    ModelFilter filter;                             ///< the Smooth/Offset Model prompts' settings
     std::optional<Command> afterUnsaved;            ///< asking "save changes?" before this command
     std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
     std::string error;                              ///< shown until dismissed
@@ -84,6 +87,10 @@ public:
     RecentFiles& recent() { return mRecent; }
     const StatusFigures& status() const { return mStatus; }
     bool strokeActive() const { return mStroke.active(); }
+    /// The whole-model job running, or nullptr.
+    const BackgroundJob* job() const { return mJob.get(); }
+    /// Asks the running job to stop; the document stays as it was.
+    void cancelJob();
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -121,6 +128,12 @@ private:
     void frameModel();
     std::optional<SurfaceHit> pickAt(double x, double y);
     void replayStrokes();
+    /// Starts `filter` over a copy of the model as a background job.
+    void startFilter(const ModelFilter& filter);
+    /// Lands a finished job's result as one undo step (or reports why there is none).
+    void pollJob();
+    /// True (with a notice) if a job runs, so an edit must wait.
+    bool busy();
 
     AppWindow& mWindow;
     AppOptions mOptions;
@@ -140,6 +153,9 @@ private:
     Dialogs mDialogs;
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
+    std::unique_ptr<BackgroundJob> mJob;
+    std::string mLastJob;         // how the last job ended: "finished", "cancelled", "failed"
+    double mWaitingSince = -1.0;  // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
 
     // Pointer state.

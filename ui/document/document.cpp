@@ -66,6 +66,10 @@ void Document::exportMesh(const std::filesystem::path& path) const
 
 void Document::saveStrokes(const std::filesystem::path& path) const
 {
+    if (!mUnscripted.empty()) {
+        throw InputError(path.string() + ": the history holds a whole-model edit (" + mUnscripted +
+                         "), which a stroke script cannot replay; save the document instead");
+    }
     writeFileAtomically(path, writeStrokeScript(mLog));
 }
 
@@ -88,12 +92,25 @@ void Document::endStroke()
     SculptSession::FinishedStroke done = mSession.endStroke();
     ++mRevision;
     if (done.report.leavesChanged == 0) return;  // the history ignores a stroke that changed nothing
-    mUndoLabels.push_back(strokeLabel(done.stroke, done.report.stamps));
+    recordStep(strokeLabel(done.stroke, done.report.stamps));
+    mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingScene)});
+}
+
+void Document::replaceField(FieldImage result, const std::string& label)
+{
+    mSession.replaceField(std::move(result));
+    ++mRevision;
+    recordStep(label);
+    if (mUnscripted.empty()) mUnscripted = label;
+}
+
+void Document::recordStep(const std::string& label)
+{
+    mUndoLabels.push_back(label);
     mRedoLabels.clear();
     mRedoStates.clear();
     mUndoStates.push_back(mState);
     mState = mNextState++;
-    mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingScene)});
     const std::size_t kept = mSession.history().undoCount();  // the oldest may be forgotten (budget)
     while (mUndoLabels.size() > kept) {
         mUndoLabels.erase(mUndoLabels.begin());

@@ -36,6 +36,8 @@ public:
     /// Writes the welded mesh (.ply, .obj, .stl). @throws InputError naming the file.
     void exportMesh(const std::filesystem::path& path) const;
     /// Writes every edit since the document was opened as a `sculpt apply` stroke script.
+    /// @throws InputError naming the file if a whole-model edit (a filter) happened: a stroke
+    ///         script cannot replay it.
     void saveStrokes(const std::filesystem::path& path) const;
 
     SculptSession& session() { return mSession; }
@@ -55,16 +57,22 @@ public:
     void endStroke();
     bool undo();
     bool redo();
+    /// A whole-model edit's result (SculptSession::replaceField), one undo step named `label`.
+    void replaceField(FieldImage result, const std::string& label);
 
     /// Labels of the strokes that can be undone (oldest first) and redone (next first).
     const std::vector<std::string>& undoLabels() const { return mUndoLabels; }
     const std::vector<std::string>& redoLabels() const { return mRedoLabels; }
 
 private:
+    /// A new undo step: its label and the modified-state bookkeeping.
+    void recordStep(const std::string& label);
+
     SculptSession mSession;
     std::filesystem::path mPath;
     StrokeScript mLog;
     std::string mPendingScene;
+    std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold
     std::vector<std::string> mUndoLabels, mRedoLabels;
     std::vector<std::uint64_t> mUndoStates, mRedoStates;
     std::uint64_t mState = 0, mSavedState = 0, mNextState = 1, mRevision = 0;

@@ -78,6 +78,7 @@ const std::vector<std::pair<EventType, const char*>> kTypeNames = {
     {EventType::Screenshot, "screenshot"},
     {EventType::Report, "report"},
     {EventType::Quit, "quit"},
+    {EventType::WaitForJob, "wait"},
 };
 const std::vector<std::pair<int, const char*>> kModNames = {
     {kShift, "shift"}, {kControl, "ctrl"}, {kAlt, "alt"}, {kSuper, "super"}};
@@ -176,7 +177,8 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         e.text = textOr(j, "path", "", where);
         if (e.text.empty()) throw InputError(where + ": field 'path' is missing");
         break;
-    case EventType::Quit: break;
+    case EventType::Quit:
+    case EventType::WaitForJob: break;
     }
     out.push_back(e);
     if (tap) {
@@ -208,7 +210,8 @@ json eventJson(const InputEvent& e)
     case EventType::Resize: j["width"] = e.width, j["height"] = e.height; break;
     case EventType::Screenshot:
     case EventType::Report: j["path"] = e.text; break;
-    case EventType::Quit: break;
+    case EventType::Quit:
+    case EventType::WaitForJob: break;
     }
     return j;
 }

@@ -22,6 +22,7 @@ enum class EventType {
     Screenshot,   ///< path: the composed frame as PNG, after this event's frame
     Report,       ///< path: the state (checksum, pick, uploads, ...) appended as a JSON line
     Quit,         ///< as closing the window
+    WaitForJob,   ///< the replay holds until the running job (a filter) has ended
 };
 
 /// GLFW's modifier bits (GLFW_MOD_SHIFT, ...), repeated so this header needs no GLFW.

@@ -92,7 +92,48 @@ void pathDialog(SculptApp& app, const char* title, const char* hint)
     else if (cancel) d.prompt = Dialogs::Prompt::None;
 }
 
+void filterDialog(SculptApp& app)
+{
+    Dialogs& d = app.dialogs();
+    ModelFilter& f = d.filter;
+    const bool smoothing = f.kind == ModelFilter::Kind::Smooth;
+    beginDialog(smoothing ? "Smooth Model" : "Offset Model");
+    if (d.focusField) ImGui::SetKeyboardFocusHere();
+    d.focusField = false;
+    if (smoothing) {
+        ImGui::InputInt("iterations", &f.iterations, 1, 10);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stable steps of mean-curvature flow: more is smoother");
+        ImGui::Checkbox("keep volume", &f.keepVolume);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Hold the enclosed volume (otherwise smoothing shrinks the model)");
+    } else {
+        ImGui::InputDouble("distance", &f.distanceWorld, 0.1, 1.0, "%.4g");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("World units along the normal: > 0 grows, < 0 shrinks");
+    }
+    ImGui::TextDisabled("Runs as a job: the view stays live, Esc cancels, Ctrl+Z undoes it");
+    const bool run = ImGui::Button("Run (Enter)") || pressed(GLFW_KEY_ENTER);
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (run) app.confirmPrompt();
+    else if (cancel) d.prompt = Dialogs::Prompt::None;
+}
+
 }  // namespace
+
+void drawJobPanel(SculptApp& app)
+{
+    const BackgroundJob* job = app.job();
+    if (!job) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::Begin("Job", nullptr, kDialogFlags | ImGuiWindowFlags_NoTitleBar);
+    ImGui::Text("%s%s", job->label().c_str(), job->cancelRequested() ? ": cancelling..." : "");
+    ImGui::ProgressBar(float(job->progress()), ImVec2(320.f, 0.f));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)")) app.cancelJob();
+    ImGui::End();
+}
 
 void drawDialogs(SculptApp& app)
 {
@@ -107,6 +148,8 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::ExportMesh: return pathDialog(app, "Export Mesh", "A .ply, .obj or .stl file to write");
     case Dialogs::Prompt::SaveStrokes:
         return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
+    case Dialogs::Prompt::SmoothModel:
+    case Dialogs::Prompt::OffsetModel: return filterDialog(app);
     case Dialogs::Prompt::None: return;
     }
 }

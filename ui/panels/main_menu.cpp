@@ -44,8 +44,13 @@ void drawMainMenu(SculptApp& app)
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        item(Command::Undo, app.document().session().history().undoCount() > 0);
-        item(Command::Redo, app.document().session().history().redoCount() > 0);
+        item(Command::Undo, !app.job() && app.document().session().history().undoCount() > 0);
+        item(Command::Redo, !app.job() && app.document().session().history().redoCount() > 0);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Filters")) {
+        item(Command::SmoothModel, !app.job());
+        item(Command::OffsetModel, !app.job());
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {

@@ -13,6 +13,8 @@ void drawHistoryPanel(SculptApp& app);
 void drawStatusBar(SculptApp& app);
 void drawDialogs(SculptApp& app);
 void drawHelpPanel(SculptApp& app);
+/// The running job's progress bar and Cancel button, if a job runs.
+void drawJobPanel(SculptApp& app);
 
 /// A menu item running `command`, its keys shown beside it.
 void commandMenuItem(SculptApp& app, int command, bool enabled = true);

@@ -1,0 +1,34 @@
+#pragma once
+/// @file model_filter.h
+/// @brief Whole-model filters, the same from the window (Filters menu, run as a job) and the
+///        command line (`sculpt smooth`, `sculpt offset`): smoothing by mean-curvature flow and
+///        offsetting along the normal, on a copy, refused if nothing of the model remains.
+
+#include "core/base/progress.h"
+#include "core/field/field_image.h"
+
+#include <string>
+
+namespace sculpt {
+
+struct ModelFilter {
+    enum class Kind { Smooth, Offset };
+    Kind kind = Kind::Smooth;
+    int iterations = 10;         ///< smooth: stable steps (dt = h^2 / 6)
+    bool keepVolume = false;     ///< smooth: hold the mesh volume
+    double distanceWorld = 1.0;  ///< offset: > 0 grows
+};
+
+/// "smooth 10 (keep volume)", "offset +1.5": what the history shows.
+std::string filterLabel(const ModelFilter& filter);
+
+/// The filtered copy of `field`; `field` is untouched.
+/// @throws InputError (a negative iteration count, a non-finite distance, or nothing of the
+///         model left, naming `source`); Cancelled if progress says stop.
+FieldImage applyFilter(const FieldImage& field, const ModelFilter& filter, const std::string& source,
+                       const Progress& progress = {});
+
+/// @throws InputError naming `source` if `field` encloses less than a voxel after `operation`.
+void refuseEmptyResult(const FieldImage& field, const std::string& source, const std::string& operation);
+
+}  // namespace sculpt

@@ -1,0 +1,15 @@
+#pragma once
+/// @file cgal_data.h
+/// @brief Meshes nobody here wrote: CGAL's sample data (Debian's libcgal-demo ships them in
+///        /usr/share/doc/libcgal-dev/data.tar.gz), extracted once per process on demand.
+
+#include <filesystem>
+#include <string>
+
+namespace sculpt::test {
+
+/// The path of CGAL's data/meshes/`name` (e.g. "camel.off"), extracted into a directory removed
+/// at exit; empty if the archive is missing (install libcgal-demo).
+std::filesystem::path cgalMesh(const std::string& name);
+
+}  // namespace sculpt::test
