@@ -5,9 +5,9 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph.h"
 #include "sculpt/cli/commands.h"
-#include "sculpt/cli/frame_files.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
+#include "sculpt/session/frame_files.h"
 #include "sculpt/session/shape_import.h"
 
 #include <CLI/CLI.hpp>

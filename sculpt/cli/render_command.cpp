@@ -4,8 +4,8 @@
 #include "core/io/vdb_file.h"
 #include "core/render/ray_tracer.h"
 #include "sculpt/cli/commands.h"
-#include "sculpt/cli/frame_files.h"
 #include "sculpt/cli/progress_bar.h"
+#include "sculpt/session/frame_files.h"
 
 #include <CLI/CLI.hpp>
 

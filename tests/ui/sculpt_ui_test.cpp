@@ -336,6 +336,69 @@ TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
     EXPECT_EQ(reports[5]["checksum"], reports[1]["checksum"]);
 }
 
+TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFrameIsOneUndoStep)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 10 --voxel-size 0.5 -o ball.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(
+        runSculpt("new --shape torus --radius 9 --minor-radius 3.5 --voxel-size 0.5 -o torus.vdb", dir.path()).exitCode,
+        0);
+    ASSERT_EQ(runSculpt("morph ball.vdb torus.vdb -o cli", dir.path()).exitCode, 0);  // 10 frames
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).screenshot(dir / "ball.png").key("M", {"alt"}).text("torus.vdb").key("Enter");
+    events.untilJobEnds().report(r);
+    for (int i = 0; i < 9; ++i) events.key("PageUp");
+    events.report(r).key("PageDown").key("PageDown").key("PageDown").screenshot(dir / "frame3.png");
+    events.key("Space").wait(2.0).report(r);  // plays to the last frame at 8 frames a second
+    events.key("E", {"shift"}).key("Enter").key("K").report(r).key("Z", {"ctrl"}).report(r);
+    const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 6u);
+    const std::string original = reports[0]["checksum"];
+    EXPECT_EQ(reports[1]["last_job"], "finished") << reports[1]["error"];
+    ASSERT_TRUE(reports[1]["morph"].is_object());
+    EXPECT_EQ(reports[1]["morph"]["frames"], 10);
+    EXPECT_EQ(reports[1]["morph"]["shown"], 9);
+    EXPECT_TRUE(reports[1]["morph"]["converged"].get<bool>());
+    EXPECT_EQ(reports[1]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
+    EXPECT_EQ(reports[1]["checksum"], original);  // frames on show, the document unchanged
+    EXPECT_EQ(reports[2]["morph"]["shown"], 0);
+    EXPECT_EQ(reports[2]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0000.vdb"));
+    EXPECT_GT(differingShare(readPng(dir / "ball.png"), readPng(dir / "frame3.png")), 0.005);
+    EXPECT_EQ(reports[3]["morph"]["shown"], 9);
+    for (const char* frame : {"frame_0000.vdb", "frame_0004.vdb", "frame_0009.vdb"}) {
+        EXPECT_EQ(checksumOfFile(dir / "morph" / frame), checksumOfFile(dir / "cli" / frame)) << frame;
+    }
+    EXPECT_TRUE(reports[4]["morph"].is_null());
+    EXPECT_EQ(reports[4]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
+    EXPECT_EQ(reports[4]["undo"], 1);
+    EXPECT_EQ(reports[4]["euler"], 0);  // the torus
+    EXPECT_EQ(reports[5]["checksum"], original);
+}
+
+TEST(SculptUi, AMorphCancelledHalfWayLeavesTheDocumentAsItWas)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape box --radius 36 -o box.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).key("M", {"alt"}).text("box.vdb").key("Enter").wait(1.0).report(r);
+    events.key("Escape").untilJobEnds().report(r);
+    const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    ASSERT_TRUE(reports[1]["job"].is_object()) << "the morph cannot be over in a second";
+    EXPECT_EQ(reports[1]["job"]["label"], "morph to box.vdb");
+    EXPECT_EQ(reports[2]["last_job"], "cancelled");
+    EXPECT_TRUE(reports[2]["morph"].is_null());
+    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports[2]["undo"], 0);
+}
+
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 {
     TempDir dir;

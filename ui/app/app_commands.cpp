@@ -1,5 +1,6 @@
 #include "core/base/errors.h"
 #include "core/io/vdb_file.h"
+#include "sculpt/session/morph_run.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
 
@@ -58,6 +59,25 @@ void SculptApp::execute(Command command)
     case Command::SaveAs:
         mDialogs.prompt = Dialogs::Prompt::SaveAs, mDialogs.path = mDocument->path().string(),
         mDialogs.focusField = true;
+        break;
+    case Command::MorphTo:
+        if (busy()) break;
+        mDialogs.prompt = Dialogs::Prompt::Morph, mDialogs.path.clear(), mDialogs.focusField = true;
+        break;
+    case Command::MorphPlay:
+        if (mMorph) mMorph->togglePlay(mWindow.time());
+        break;
+    case Command::MorphPrevious:
+        if (mMorph) mMorph->show(mMorph->shown() - 1);
+        break;
+    case Command::MorphNext:
+        if (mMorph) mMorph->show(mMorph->shown() + 1);
+        break;
+    case Command::MorphKeep:
+        if (mMorph) keepMorphFrame();
+        break;
+    case Command::MorphExport:
+        if (mMorph) mDialogs.prompt = Dialogs::Prompt::MorphExport, mDialogs.path = "morph", mDialogs.focusField = true;
         break;
     case Command::ExportMesh:
         mDialogs.prompt = Dialogs::Prompt::ExportMesh, mDialogs.focusField = true;
@@ -179,6 +199,11 @@ void SculptApp::confirmPrompt()
             break;
         case Dialogs::Prompt::SmoothModel:
         case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
+        case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph); break;
+        case Dialogs::Prompt::MorphExport:
+            writeFrames(mMorph->run().frames, path);
+            mDialogs.notice = "wrote " + std::to_string(mMorph->count()) + " frames to " + path.string();
+            break;
         case Dialogs::Prompt::None: break;
         }
     } catch (const InputError& e) {
@@ -191,9 +216,9 @@ void SculptApp::confirmPrompt()
 
 bool SculptApp::busy()
 {
-    if (!mJob) return false;
-    mDialogs.notice = "wait for " + mJob->label() + " to finish, or press Esc to cancel it";
-    return true;
+    if (mJob) mDialogs.notice = "wait for " + mJob->label() + " to finish, or press Esc to cancel it";
+    else if (mMorph) mDialogs.notice = "the morph's frames are on show: keep one (K) or close them (Esc) first";
+    return mJob || mMorph;
 }
 
 void SculptApp::startFilter(const ModelFilter& filter)
@@ -209,6 +234,40 @@ void SculptApp::startFilter(const ModelFilter& filter)
     mDialogs.notice = mJob->label() + "...";
 }
 
+void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
+{
+    if (busy()) return;
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().grid().deepCopy(),
+                                             mDocument->session().field().units());
+    auto run = std::make_shared<MorphRun>();
+    mMorphRunning = run;
+    mJob = std::make_unique<BackgroundJob>("morph to " + target.filename().string(),
+                                           [copy, run, target, options](const Progress& p) {
+                                               *run = morphInto(*copy, target, options, p);
+                                               return run->frames.back();
+                                           });
+    mDialogs.notice = mJob->label() + "...";
+}
+
+void SculptApp::keepMorphFrame()
+{
+    try {
+        const FieldImage& frame = mMorph->shownField();
+        mDocument->replaceField(FieldImage(frame.grid().deepCopy(), frame.units()),
+                                "morph frame " + std::to_string(mMorph->shown()));
+        mDialogs.notice = "kept morph frame " + std::to_string(mMorph->shown()) + " (Ctrl+Z undoes it)";
+        closeMorph();
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+void SculptApp::closeMorph()
+{
+    mMorph.reset();
+    mHoverValid = false;
+}
+
 void SculptApp::cancelJob()
 {
     if (mJob) mJob->cancel();
@@ -218,9 +277,17 @@ void SculptApp::pollJob()
 {
     if (!mJob || !mJob->finished()) return;
     const std::unique_ptr<BackgroundJob> job = std::move(mJob);
+    const std::shared_ptr<MorphRun> morph = std::move(mMorphRunning);
     if (std::optional<FieldImage> result = job->takeResult()) {
-        mDocument->replaceField(std::move(*result), job->label());
-        mDialogs.notice = job->label() + " done (Ctrl+Z undoes it)";
+        if (morph) {
+            mMorph.emplace(std::move(*morph));
+            const MorphSummary& s = mMorph->run().summary;
+            mDialogs.notice = job->label() + ": " + std::to_string(mMorph->count()) + " frames, " +
+                              (s.converged ? "converged" : "NOT converged") + " (Space plays, K keeps a frame)";
+        } else {
+            mDocument->replaceField(std::move(*result), job->label());
+            mDialogs.notice = job->label() + " done (Ctrl+Z undoes it)";
+        }
         mLastJob = "finished";
     } else if (job->cancelled()) {
         mDialogs.notice = job->label() + " cancelled: the model is as it was";

@@ -164,6 +164,7 @@ void SculptApp::routeKey(const InputEvent& event)
         return;
     }
     if (mJob && event.key == GLFW_KEY_ESCAPE) return cancelJob();
+    if (mMorph && event.key == GLFW_KEY_ESCAPE) return closeMorph();
     Command command;
     if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
 }

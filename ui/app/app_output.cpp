@@ -29,6 +29,8 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::SaveStrokes: return "save-strokes";
     case Dialogs::Prompt::SmoothModel: return "smooth-model";
     case Dialogs::Prompt::OffsetModel: return "offset-model";
+    case Dialogs::Prompt::Morph: return "morph";
+    case Dialogs::Prompt::MorphExport: return "morph-export";
     default: return "none";
     }
 }
@@ -89,6 +91,11 @@ void SculptApp::writeReport(const fs::path& path)
     r["error"] = mDialogs.error;
     r["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
+    r["morph"] = mMorph ? nlohmann::json{{"frames", mMorph->count()},
+                                         {"shown", mMorph->shown()},
+                                         {"checksum", formatChecksum(gridChecksum(mMorph->shownField().grid()))},
+                                         {"converged", mMorph->run().summary.converged}}
+                        : nlohmann::json();
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
     r["frame_ms"] = mStatus.frameMs;

@@ -129,7 +129,7 @@ void SculptApp::updateCursor()
         mHover = mDrag == Drag::None || mDrag == Drag::Stroke ? pickAt(mMouseX, mMouseY) : std::nullopt;
         mHoverValid = true;
     }
-    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse;
+    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse && !mMorph;  // no brush on a frame
     // White for tools that add, red for those that take away, blue for smoothing (Shift).
     const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
@@ -178,7 +178,8 @@ void SculptApp::frame()
     const std::size_t remeshed = session.remeshedBlocks();
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
-    mDisplay.sync(*session.mesher(), session.field().voxelSize());
+    if (mMorph) mMorph->tick(now);
+    mDisplay.sync(mMorph ? mMorph->mesher() : *session.mesher(), session.field().voxelSize());
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
@@ -224,6 +225,7 @@ void SculptApp::drawPanels()
     drawStatusBar(*this);
     drawDialogs(*this);
     drawJobPanel(*this);
+    drawMorphPanel(*this);
     if (mDialogs.help) drawHelpPanel(*this);
     if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
@@ -278,7 +280,8 @@ void SculptApp::finishReplay()
 bool SculptApp::idle() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
-    return mDrag == Drag::None && !mJob && mWindow.time() - mLastInput > kSettleSeconds &&
+    const bool playing = mMorph && mMorph->playing();
+    return mDrag == Drag::None && !mJob && !playing && mWindow.time() - mLastInput > kSettleSeconds &&
            mPendingScreenshots.empty() && mPendingReports.empty();
 }
 

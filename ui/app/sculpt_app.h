@@ -8,6 +8,7 @@
 #include "ui/app/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
+#include "ui/document/morph_frames.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
 #include "ui/jobs/background_job.h"
@@ -54,11 +55,23 @@ struct StatusFigures {
 
 /// The dialogs ImGui shows; at most one prompt at a time.
 struct Dialogs {
-    enum class Prompt { None, New, Open, SaveAs, ExportMesh, SaveStrokes, SmoothModel, OffsetModel };
+    enum class Prompt {
+        None,
+        New,
+        Open,
+        SaveAs,
+        ExportMesh,
+        SaveStrokes,
+        SmoothModel,
+        OffsetModel,
+        Morph,
+        MorphExport
+    };
     Prompt prompt = Prompt::None;
     std::string path;  ///< the prompt's text field
     NewShape newShape;
     ModelFilter filter;                             ///< the Smooth/Offset Model prompts' settings
+    MorphOptions morph;                             ///< the Morph To prompt's settings (target: path)
     std::optional<Command> afterUnsaved;            ///< asking "save changes?" before this command
     std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
     std::string error;                              ///< shown until dismissed
@@ -91,6 +104,10 @@ public:
     const BackgroundJob* job() const { return mJob.get(); }
     /// Asks the running job to stop; the document stays as it was.
     void cancelJob();
+    /// A finished morph's frames on show (Morph panel), or nullptr.
+    MorphFrames* morphFrames() { return mMorph ? &*mMorph : nullptr; }
+    /// Back to the document from the morph's frames.
+    void closeMorph();
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -130,6 +147,9 @@ private:
     void replayStrokes();
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
+    /// Starts a morph of a copy of the model into the file at `target` as a background job.
+    void startMorph(const std::filesystem::path& target, const MorphOptions& options);
+    void keepMorphFrame();
     /// Lands a finished job's result as one undo step (or reports why there is none).
     void pollJob();
     /// True (with a notice) if a job runs, so an edit must wait.
@@ -154,6 +174,8 @@ private:
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     std::unique_ptr<BackgroundJob> mJob;
+    std::shared_ptr<MorphRun> mMorphRunning;  // what a running morph job fills
+    std::optional<MorphFrames> mMorph;
     std::string mLastJob;         // how the last job ended: "finished", "cancelled", "failed"
     double mWaitingSince = -1.0;  // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;

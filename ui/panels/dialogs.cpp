@@ -4,6 +4,9 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
+#include <cstdio>
+
 namespace sculpt::ui {
 
 namespace {
@@ -119,7 +122,61 @@ void filterDialog(SculptApp& app)
     else if (cancel) d.prompt = Dialogs::Prompt::None;
 }
 
+void morphDialog(SculptApp& app)
+{
+    Dialogs& d = app.dialogs();
+    MorphOptions& m = d.morph;
+    beginDialog("Morph To");
+    ImGui::TextDisabled("The target: a .vdb document, a scan or a mesh (path, then Enter)");
+    char buffer[4096];
+    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
+    if (d.focusField) ImGui::SetKeyboardFocusHere();
+    d.focusField = false;
+    ImGui::SetNextItemWidth(480.f);
+    const bool entered = ImGui::InputText("##target", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+    d.path = buffer;
+    ImGui::InputInt("frames", &m.frames, 1, 5);
+    m.frames = std::clamp(m.frames, 2, 1000);
+    ImGui::Checkbox("keep volume", &m.keepVolume);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame volumes on the straight line between the two shapes'");
+    ImGui::Checkbox("align", &m.align);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("First move the model's centroid onto the target's");
+    const bool run = ImGui::Button("Run (Enter)") || entered;
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (run && !d.path.empty()) app.confirmPrompt();
+    else if (cancel) d.prompt = Dialogs::Prompt::None;
+}
+
 }  // namespace
+
+void drawMorphPanel(SculptApp& app)
+{
+    MorphFrames* frames = app.morphFrames();
+    if (!frames) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+    ImGui::Begin("Morph", nullptr, kDialogFlags);
+    int shown = frames->shown();
+    ImGui::SetNextItemWidth(360.f);
+    if (ImGui::SliderInt("frame", &shown, 0, frames->count() - 1)) frames->show(shown);
+    const auto button = [&app](const char* label, Command command) {
+        if (ImGui::Button(label)) app.execute(command);
+        commandTooltip(int(command));
+        ImGui::SameLine();
+    };
+    button("<", Command::MorphPrevious);
+    button(frames->playing() ? "Pause" : "Play", Command::MorphPlay);
+    button(">", Command::MorphNext);
+    button("Keep frame", Command::MorphKeep);
+    button("Export frames...", Command::MorphExport);
+    if (ImGui::Button("Close (Esc)")) app.closeMorph();
+    const MorphSummary& s = frames->run().summary;
+    ImGui::TextDisabled("%d steps, final distance %.3g%s", s.steps, s.finalDistanceWorld,
+                        s.converged ? " (converged)" : " (NOT converged)");
+    ImGui::End();
+}
 
 void drawJobPanel(SculptApp& app)
 {
@@ -150,6 +207,8 @@ void drawDialogs(SculptApp& app)
         return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
     case Dialogs::Prompt::SmoothModel:
     case Dialogs::Prompt::OffsetModel: return filterDialog(app);
+    case Dialogs::Prompt::Morph: return morphDialog(app);
+    case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
     case Dialogs::Prompt::None: return;
     }
 }

@@ -51,6 +51,8 @@ void drawMainMenu(SculptApp& app)
     if (ImGui::BeginMenu("Filters")) {
         item(Command::SmoothModel, !app.job());
         item(Command::OffsetModel, !app.job());
+        ImGui::Separator();
+        item(Command::MorphTo, !app.job());
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {

@@ -15,6 +15,8 @@ void drawDialogs(SculptApp& app);
 void drawHelpPanel(SculptApp& app);
 /// The running job's progress bar and Cancel button, if a job runs.
 void drawJobPanel(SculptApp& app);
+/// A finished morph's frames: slider, play/pause, step, keep, export, close.
+void drawMorphPanel(SculptApp& app);
 
 /// A menu item running `command`, its keys shown beside it.
 void commandMenuItem(SculptApp& app, int command, bool enabled = true);

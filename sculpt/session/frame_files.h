@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace sculpt::cli {
+namespace sculpt {
 
 /// DIR/frame_NNNN.EXT
 std::filesystem::path framePath(const std::filesystem::path& dir, int index, const std::string& extension);
@@ -19,4 +19,4 @@ void prepareDirectory(const std::filesystem::path& dir);
 /// The .vdb files of `dir`, sorted by name. @throws InputError if there are none.
 std::vector<std::filesystem::path> documentsIn(const std::filesystem::path& dir);
 
-}  // namespace sculpt::cli
+}  // namespace sculpt

@@ -1,4 +1,4 @@
-#include "sculpt/cli/frame_files.h"
+#include "sculpt/session/frame_files.h"
 
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace sculpt::cli {
+namespace sculpt {
 
 namespace fs = std::filesystem;
 
@@ -39,4 +39,4 @@ std::vector<fs::path> documentsIn(const fs::path& dir)
     return files;
 }
 
-}  // namespace sculpt::cli
+}  // namespace sculpt

@@ -1,0 +1,35 @@
+#include "ui/document/morph_frames.h"
+
+#include <algorithm>
+
+namespace sculpt::ui {
+
+MorphFrames::MorphFrames(MorphRun run) : mRun(std::move(run)) { show(count() - 1); }
+
+void MorphFrames::show(int index)
+{
+    index = std::clamp(index, 0, count() - 1);
+    if (index == mShown && mMesher) return;
+    // Made before the old one is freed: a new address tells the display to upload it all.
+    auto next = std::make_unique<IncrementalMesher>();
+    next->rebuild(mRun.frames[std::size_t(index)]);
+    mMesher = std::move(next);
+    mShown = index;
+}
+
+void MorphFrames::togglePlay(double now)
+{
+    mPlaying = !mPlaying;
+    if (mPlaying && mShown == count() - 1) show(0);
+    mNextFrameAt = now + 1.0 / kFramesPerSecond;
+}
+
+void MorphFrames::tick(double now)
+{
+    if (!mPlaying || now < mNextFrameAt) return;
+    show(mShown + 1);
+    mNextFrameAt = now + 1.0 / kFramesPerSecond;
+    if (mShown == count() - 1) mPlaying = false;
+}
+
+}  // namespace sculpt::ui
