@@ -11,6 +11,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <thread>
 
 namespace sculpt::test {
@@ -228,7 +230,13 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
                              " --state-dir " + shellQuoted(state) + " --autosave-seconds 0.5 --stay";
     runCommand(uiCommand(args) + " & echo started", dir.path().string());
     fs::path recovery;
-    for (int i = 0; i < 600 && recovery.empty(); ++i) {
+    const auto reported = [&] {  // a whole line: the report is written once its frame is drawn
+        std::ifstream in(dir / "first.jsonl");
+        const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return !text.empty() && text.back() == '\n';
+    };
+    // Until the autosave exists and the replay has reported (a loaded machine draws slowly).
+    for (int i = 0; i < 600 && (recovery.empty() || !reported()); ++i) {
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
         std::error_code ec;
         if (fs::exists(state / "recovery", ec)) {
@@ -350,7 +358,7 @@ TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFr
     events.untilJobEnds().report(r);
     for (int i = 0; i < 9; ++i) events.key("PageUp");
     events.report(r).key("PageDown").key("PageDown").key("PageDown").screenshot(dir / "frame3.png");
-    events.key("Space").wait(2.0).report(r);  // plays to the last frame at 8 frames a second
+    events.key("Space").untilJobEnds().report(r);  // plays to the last frame at 8 frames a second
     events.key("E", {"shift"}).key("Enter").key("K").report(r).key("Z", {"ctrl"}).report(r);
     const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;

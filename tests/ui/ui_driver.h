@@ -32,7 +32,8 @@ public:
     UiEvents& resize(int width, int height);
     UiEvents& quit();
     UiEvents& wait(double seconds);
-    /// The replay holds until the running job (a filter) has ended.
+    /// The replay holds until the running job (a filter, a morph) has ended, or a morph's
+    /// frames have played to the end.
     UiEvents& untilJobEnds();
     void write(const std::filesystem::path& path) const;
 

@@ -298,11 +298,9 @@ void SculptApp::pollJob()
     }
     mHoverValid = false;
     mLastInput = mWindow.time();  // show the notice
-    if (mWaitingSince >= 0.0) {   // the replay resumes, its later events as far apart as recorded
-        mPlayStart += mWindow.time() - mWaitingSince;
-        mWaitingSince = -1.0;
-    }
 }
+
+bool SculptApp::holdsReplay() const { return mJob || (mMorph && mMorph->playing()); }
 
 void SculptApp::recover(bool accept)
 {

@@ -37,7 +37,7 @@ void SculptApp::handle(const InputEvent& event)
     case EventType::Key: routeKey(event); break;
     case EventType::Text: break;
     case EventType::WaitForJob:
-        if (mJob) mWaitingSince = mWindow.time();
+        if (holdsReplay()) mWaitingSince = mWindow.time();
         break;
     default: routeMouse(event); break;
     }

@@ -307,7 +307,11 @@ int SculptApp::run()
     mPlayStart = mWindow.time();
     bool replayDone = false;
     while (!mQuit) {
-        const bool waiting = mWaitingSince >= 0.0;  // for a job (wait event): frames go on, events hold
+        if (mWaitingSince >= 0.0 && !holdsReplay()) {  // the replay resumes, later events as far apart as recorded
+            mPlayStart += mWindow.time() - mWaitingSince;
+            mWaitingSince = -1.0;
+        }
+        const bool waiting = mWaitingSince >= 0.0;  // for a job or playback (wait event): frames go on
         const bool replaying = mPlayer && (!mPlayer->finished() || waiting);
         if (replaying) {
             for (const InputEvent& event :

@@ -152,8 +152,10 @@ private:
     void keepMorphFrame();
     /// Lands a finished job's result as one undo step (or reports why there is none).
     void pollJob();
-    /// True (with a notice) if a job runs, so an edit must wait.
+    /// True (with a notice) if a job runs or a morph's frames are on show, so an edit must wait.
     bool busy();
+    /// What a replay's wait event waits for: a job, or a morph playing.
+    bool holdsReplay() const;
 
     AppWindow& mWindow;
     AppOptions mOptions;

@@ -21,14 +21,15 @@ void MorphFrames::togglePlay(double now)
 {
     mPlaying = !mPlaying;
     if (mPlaying && mShown == count() - 1) show(0);
-    mNextFrameAt = now + 1.0 / kFramesPerSecond;
+    mPlayStart = now;
+    mPlayFrom = mShown;
 }
 
 void MorphFrames::tick(double now)
 {
-    if (!mPlaying || now < mNextFrameAt) return;
-    show(mShown + 1);
-    mNextFrameAt = now + 1.0 / kFramesPerSecond;
+    if (!mPlaying) return;
+    // By the clock, not by frames drawn: a slow frame skips ahead instead of slowing the morph.
+    show(mPlayFrom + int((now - mPlayStart) * kFramesPerSecond));
     if (mShown == count() - 1) mPlaying = false;
 }
 

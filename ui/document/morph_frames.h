@@ -30,7 +30,7 @@ public:
     bool playing() const { return mPlaying; }
     /// Starts (from the first frame if at the last) or pauses playback, at time `now` (seconds).
     void togglePlay(double now);
-    /// Advances playback to time `now`; stops at the last frame.
+    /// Shows the frame due at time `now` while playing (frames may be skipped); stops at the last.
     void tick(double now);
 
 private:
@@ -38,7 +38,8 @@ private:
     int mShown = -1;
     std::unique_ptr<IncrementalMesher> mMesher;
     bool mPlaying = false;
-    double mNextFrameAt = 0.0;
+    double mPlayStart = 0.0;  // when playback began, and from which frame
+    int mPlayFrom = 0;
 };
 
 }  // namespace sculpt::ui

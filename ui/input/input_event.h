@@ -22,7 +22,7 @@ enum class EventType {
     Screenshot,   ///< path: the composed frame as PNG, after this event's frame
     Report,       ///< path: the state (checksum, pick, uploads, ...) appended as a JSON line
     Quit,         ///< as closing the window
-    WaitForJob,   ///< the replay holds until the running job (a filter) has ended
+    WaitForJob,   ///< the replay holds until the running job has ended (or a morph's playback)
 };
 
 /// GLFW's modifier bits (GLFW_MOD_SHIFT, ...), repeated so this header needs no GLFW.

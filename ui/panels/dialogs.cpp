@@ -24,6 +24,31 @@ bool beginDialog(const char* title)
 
 bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
 
+/// The prompt's path field (focused when the prompt opens); true when Enter was pressed in it.
+bool pathField(Dialogs& d, const char* id)
+{
+    char buffer[4096];
+    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
+    if (d.focusField) ImGui::SetKeyboardFocusHere();
+    d.focusField = false;
+    ImGui::SetNextItemWidth(480.f);
+    const bool entered = ImGui::InputText(id, buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+    d.path = buffer;
+    return entered;
+}
+
+/// "`okLabel` (Enter)" and "Cancel (Esc)" closing the dialog's window: confirms the prompt when
+/// chosen (and `confirmable`), or closes it.
+void okOrCancel(SculptApp& app, const char* okLabel, bool ok, bool confirmable = true)
+{
+    ok = ImGui::Button((std::string(okLabel) + " (Enter)").c_str()) || ok;
+    ImGui::SameLine();
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (ok && confirmable) app.confirmPrompt();
+    else if (cancel) app.dialogs().prompt = Dialogs::Prompt::None;
+}
+
 void errorDialog(SculptApp& app)
 {
     beginDialog("Error");
@@ -69,10 +94,7 @@ void newDialog(SculptApp& app)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Sphere radius, box half side or torus major radius (world units)");
     ImGui::InputDouble("voxel size", &d.newShape.voxelSize, 0.05, 0.5, "%.3g");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Smaller is finer and costs more memory");
-    if (ImGui::Button("Create (Enter)") || pressed(GLFW_KEY_ENTER)) app.confirmPrompt();
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE)) d.prompt = Dialogs::Prompt::None;
-    ImGui::End();
+    okOrCancel(app, "Create", pressed(GLFW_KEY_ENTER));
 }
 
 void pathDialog(SculptApp& app, const char* title, const char* hint)
@@ -80,19 +102,8 @@ void pathDialog(SculptApp& app, const char* title, const char* hint)
     Dialogs& d = app.dialogs();
     beginDialog(title);
     ImGui::TextDisabled("%s", hint);
-    char buffer[4096];
-    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
-    if (d.focusField) ImGui::SetKeyboardFocusHere();
-    d.focusField = false;
-    ImGui::SetNextItemWidth(480.f);
-    const bool entered = ImGui::InputText("##path", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
-    d.path = buffer;
-    const bool ok = ImGui::Button("OK (Enter)") || entered;
-    ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
-    ImGui::End();
-    if (ok && !d.path.empty()) app.confirmPrompt();
-    else if (cancel) d.prompt = Dialogs::Prompt::None;
+    const bool entered = pathField(d, "##path");
+    okOrCancel(app, "OK", entered, !d.path.empty());
 }
 
 void filterDialog(SculptApp& app)
@@ -114,12 +125,7 @@ void filterDialog(SculptApp& app)
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("World units along the normal: > 0 grows, < 0 shrinks");
     }
     ImGui::TextDisabled("Runs as a job: the view stays live, Esc cancels, Ctrl+Z undoes it");
-    const bool run = ImGui::Button("Run (Enter)") || pressed(GLFW_KEY_ENTER);
-    ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
-    ImGui::End();
-    if (run) app.confirmPrompt();
-    else if (cancel) d.prompt = Dialogs::Prompt::None;
+    okOrCancel(app, "Run", pressed(GLFW_KEY_ENTER));
 }
 
 void morphDialog(SculptApp& app)
@@ -128,25 +134,14 @@ void morphDialog(SculptApp& app)
     MorphOptions& m = d.morph;
     beginDialog("Morph To");
     ImGui::TextDisabled("The target: a .vdb document, a scan or a mesh (path, then Enter)");
-    char buffer[4096];
-    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
-    if (d.focusField) ImGui::SetKeyboardFocusHere();
-    d.focusField = false;
-    ImGui::SetNextItemWidth(480.f);
-    const bool entered = ImGui::InputText("##target", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
-    d.path = buffer;
+    const bool entered = pathField(d, "##target");
     ImGui::InputInt("frames", &m.frames, 1, 5);
     m.frames = std::clamp(m.frames, 2, 1000);
     ImGui::Checkbox("keep volume", &m.keepVolume);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame volumes on the straight line between the two shapes'");
     ImGui::Checkbox("align", &m.align);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("First move the model's centroid onto the target's");
-    const bool run = ImGui::Button("Run (Enter)") || entered;
-    ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
-    ImGui::End();
-    if (run && !d.path.empty()) app.confirmPrompt();
-    else if (cancel) d.prompt = Dialogs::Prompt::None;
+    okOrCancel(app, "Run", entered, !d.path.empty());
 }
 
 }  // namespace
