@@ -1,5 +1,5 @@
 #pragma once
-/// @file level_set_operations.h
+/// @file surface_flows.h
 /// @brief Whole-shape operations built on LevelSetEvolution: smooth and offset.
 
 #include "core/base/progress.h"
