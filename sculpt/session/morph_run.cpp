@@ -1,8 +1,11 @@
 #include "sculpt/session/morph_run.h"
 
+#include "core/base/memory_budget.h"
 #include "core/io/vdb_file.h"
 #include "sculpt/session/frame_files.h"
 #include "sculpt/session/shape_import.h"
+
+#include <algorithm>
 
 namespace sculpt {
 
@@ -11,6 +14,11 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
 {
     MorphRun run;
     const FieldImage target = loadShape(targetPath, source.voxelSize(), run.warnings);
+    // Every frame is kept: about the larger shape's grid each (plus the morph's own copies).
+    const double frameBytes = double(std::max(source.grid().memUsage(), target.grid().memUsage()));
+    requireMemory(1.5 * frameBytes * (options.frames + 4),
+                  "keeping " + std::to_string(options.frames) +
+                      " morph frames in memory (fewer frames, or `sculpt morph`)");
     run.summary = morph(
         source, target, options,
         [&](const MorphFrame& frame) { run.frames.emplace_back(frame.field.grid().deepCopy(), source.units()); },

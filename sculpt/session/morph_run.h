@@ -21,7 +21,8 @@ struct MorphRun {
 
 /// Morphs `source` into the shape in `targetPath` (a .vdb document, a scan or a mesh, read at the
 /// source's voxel size as `sculpt morph` does). Memory: every frame.
-/// @throws InputError naming the file or option at fault; Cancelled if progress says stop.
+/// @throws InputError naming the file or option at fault, or if the frames would not fit in the
+///         memory available; Cancelled if progress says stop.
 MorphRun morphInto(const FieldImage& source, const std::filesystem::path& targetPath, const MorphOptions& options,
                    const Progress& progress = {});
 
