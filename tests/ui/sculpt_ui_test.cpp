@@ -407,6 +407,28 @@ TEST(SculptUi, AMorphCancelledHalfWayLeavesTheDocumentAsItWas)
     EXPECT_EQ(reports[2]["undo"], 0);
 }
 
+TEST(SculptUi, TheScalesViewDrawsDiscsWhereTheSurfaceIsWithFarFewerPrimitives)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.screenshot(dir / "plain.png").key("V").screenshot(dir / "scales.png").report(r);
+    events.key("V").screenshot(dir / "back.png");
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 1u);
+    const double scales = reports[0]["scales"].get<double>(), triangles = reports[0]["triangles"].get<double>();
+    // A scale per 3-voxel cell the clay ball's surface passes through (area 31,416, cells of 1.5):
+    // a surface of area A meets about 1.5 A / c^2 cubic cells of side c, here 20,944.
+    const double expected = 1.5 * 31416.0 / (1.5 * 1.5);
+    EXPECT_NEAR(scales, expected, 0.25 * expected);
+    EXPECT_LT(6.0 * scales, 0.4 * triangles);  // hexagons: a third of the mesh's triangles
+    const auto plain = readPng(dir / "plain.png"), scaled = readPng(dir / "scales.png");
+    EXPECT_GT(differingShare(plain, scaled), 0.01);                      // a different picture
+    EXPECT_LT(differingShare(plain, readPng(dir / "back.png")), 0.001);  // and back
+}
+
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 {
     TempDir dir;

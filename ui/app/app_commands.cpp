@@ -116,6 +116,10 @@ void SculptApp::execute(Command command)
     case Command::NextShading: mLook.setShading(Shading((int(mLook.shading()) + 1) % 4)); break;
     case Command::ToggleFlat: mLook.setFlat(!mLook.flat()); break;
     case Command::ToggleWireframe: mLook.setWireframe(!mLook.wireframe()); break;
+    case Command::ToggleScales:
+        mScales.setShown(!mScales.shown());
+        mDisplay.setHidden(mScales.shown());
+        break;
     case Command::ToggleTrackball: toggle(mCamera.trackball); break;
     case Command::ToggleHelp: toggle(mDialogs.help); break;
     }

@@ -91,6 +91,7 @@ void SculptApp::writeReport(const fs::path& path)
     r["error"] = mDialogs.error;
     r["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
+    r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["morph"] = mMorph ? nlohmann::json{{"frames", mMorph->count()},
                                          {"shown", mMorph->shown()},
                                          {"checksum", formatChecksum(gridChecksum(mMorph->shownField().grid()))},

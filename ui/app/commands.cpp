@@ -78,6 +78,7 @@ const std::vector<KeyBinding>& keyBindings()
         {GLFW_KEY_M, 0, Command::NextShading},
         {GLFW_KEY_L, 0, Command::ToggleFlat},
         {GLFW_KEY_W, 0, Command::ToggleWireframe},
+        {GLFW_KEY_V, 0, Command::ToggleScales},
         {GLFW_KEY_R, kShift, Command::ToggleTrackball},
         {GLFW_KEY_F1, 0, Command::ToggleHelp},
     };
@@ -139,6 +140,8 @@ const std::vector<CommandInfo>& allCommands()
         {Command::NextShading, "Next Matcap", "Clay, white, red wax, lit"},
         {Command::ToggleFlat, "Flat Shading", "Facets instead of smooth normals"},
         {Command::ToggleWireframe, "Wireframe", "Draw the triangles' edges"},
+        {Command::ToggleScales, "Scales",
+         "Small discs on the surface at its samples, turned to its normal: a quick view"},
         {Command::ToggleTrackball, "Trackball Orbit", "Free rotation instead of turntable"},
         {Command::ToggleHelp, "Help", "Keys and mouse"},
     };

@@ -58,6 +58,7 @@ enum class Command {
     NextShading,
     ToggleFlat,
     ToggleWireframe,
+    ToggleScales,
     ToggleTrackball,
     ToggleHelp,
 };

@@ -46,8 +46,9 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path)
 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
-      mDisplay(mViewport.renderer(), mLook), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
-      mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
+      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()), mCursor(mViewport.overlay()),
+      mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
+      mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     setDocument(openOrCreate(mOptions.document), true);
@@ -179,7 +180,9 @@ void SculptApp::frame()
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
     if (mMorph) mMorph->tick(now);
-    mDisplay.sync(mMorph ? mMorph->mesher() : *session.mesher(), session.field().voxelSize());
+    const IncrementalMesher& shown = mMorph ? mMorph->mesher() : *session.mesher();
+    mDisplay.sync(shown, session.field().voxelSize());
+    mScales.sync(shown, session.field().voxelSize());
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();

@@ -16,6 +16,7 @@
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
 #include "ui/view/model_display.h"
+#include "ui/view/scales_display.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/symmetry_planes.h"
 #include "ui/view/viewport.h"
@@ -100,6 +101,7 @@ public:
     RecentFiles& recent() { return mRecent; }
     const StatusFigures& status() const { return mStatus; }
     bool strokeActive() const { return mStroke.active(); }
+    bool scalesShown() const { return mScales.shown(); }
     /// The whole-model job running, or nullptr.
     const BackgroundJob* job() const { return mJob.get(); }
     /// Asks the running job to stop; the document stays as it was.
@@ -162,6 +164,7 @@ private:
     Viewport mViewport;
     SurfaceLook mLook;
     ModelDisplay mDisplay;
+    ScalesDisplay mScales;
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;

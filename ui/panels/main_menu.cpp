@@ -65,6 +65,8 @@ void drawMainMenu(SculptApp& app)
             app.execute(Command::ToggleFlat);
         if (ImGui::MenuItem("Wireframe", shortcutText(Command::ToggleWireframe).c_str(), app.look().wireframe()))
             app.execute(Command::ToggleWireframe);
+        if (ImGui::MenuItem("Scales", shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
+            app.execute(Command::ToggleScales);
         if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
             app.execute(Command::ToggleTrackball);
         ImGui::Separator();

@@ -123,7 +123,7 @@ void ModelDisplay::upload(const openvdb::Coord& origin, const BlockMesh& mesh, d
 {
     remove(origin);
     Block block{actorOf(mesh, mLook), clusterBlockMesh(mesh, kCoarseCellVoxels * voxelSize), bytesOf(mesh)};
-    block.full->SetVisibility(!mCoarse);
+    block.full->SetVisibility(!mCoarse && !mHidden);
     mRenderer->AddActor(block.full);
     mMeshBytes += block.bytes;
     mLastBytes += block.bytes;
@@ -145,7 +145,7 @@ void ModelDisplay::rebuildChunk(const openvdb::Coord& origin, Chunk& chunk)
     if (chunk.actor) mRenderer->RemoveActor(chunk.actor);
     mCoarseTriangles -= chunk.triangles;
     chunk.actor = actorOf(joined, mLook);
-    chunk.actor->SetVisibility(mCoarse);
+    chunk.actor->SetVisibility(mCoarse && !mHidden);
     chunk.triangles = joined.triangles.size();
     mCoarseTriangles += chunk.triangles;
     mRenderer->AddActor(chunk.actor);
@@ -193,8 +193,16 @@ void ModelDisplay::setCoarse(bool coarse)
     if (coarse == mCoarse) return;
     mCoarse = coarse;
     if (coarse) rebuildDirtyChunks();
-    for (auto& [origin, block] : mBlocks) block.full->SetVisibility(!coarse);
-    for (auto& [origin, chunk] : mChunks) chunk.actor->SetVisibility(coarse);
+    setHidden(mHidden);
+}
+
+void ModelDisplay::setHidden(bool hidden)
+{
+    mHidden = hidden;
+    for (auto& [origin, block] : mBlocks) block.full->SetVisibility(!mCoarse && !hidden);
+    for (auto& [origin, chunk] : mChunks) {
+        if (chunk.actor) chunk.actor->SetVisibility(mCoarse && !hidden);  // built when first shown
+    }
 }
 
 BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld)

@@ -35,6 +35,8 @@ public:
     /// Shows the coarse twins (true) or the full blocks.
     void setCoarse(bool coarse);
     bool coarse() const { return mCoarse; }
+    /// Hides every actor (another view of the model, the scales, is shown instead).
+    void setHidden(bool hidden);
 
     /// Of the last sync: blocks uploaded, blocks dropped, and the bytes handed to VTK.
     std::size_t lastUploads() const { return mLastUploads; }
@@ -62,6 +64,7 @@ private:
     const IncrementalMesher* mSource = nullptr;
     std::uint64_t mVersion = 0;
     bool mCoarse = false;
+    bool mHidden = false;
     std::size_t mLastUploads = 0, mLastRemovals = 0, mLastBytes = 0, mCoarseTriangles = 0, mMeshBytes = 0;
 };
 
