@@ -39,6 +39,9 @@ public:
     ///         non-linear transform, or a background narrower than one voxel.
     explicit FieldImage(openvdb::FloatGrid::Ptr grid, std::string units = kDefaultUnits);
 
+    /// A field of its own: the grid copied (a FieldImage copied shares its grid), the same units.
+    FieldImage deepCopy() const { return FieldImage(mGrid->deepCopy(), mUnits); }
+
     /// Edge length of a voxel, in world units.
     double voxelSize() const { return mVoxelSize; }
     /// Half width of the band, in voxels (background / voxel size).

@@ -6,7 +6,6 @@
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
-#include "core/motion/shape_distance.h"
 #include "core/motion/wide_distance.h"
 
 #include <openvdb/tools/GridTransformer.h>
@@ -49,7 +48,7 @@ bool insideBoth(const openvdb::FloatGrid& a, const openvdb::FloatGrid& b)
 FieldImage resampleInto(const FieldImage& source, const FieldImage& target, const openvdb::Vec3d& shift)
 {
     if (shift == openvdb::Vec3d(0.0) && source.grid().transform() == target.grid().transform()) {
-        return FieldImage(source.grid().deepCopy(), source.units());
+        return source.deepCopy();
     }
     auto moved = source.grid().deepCopy();
     moved->transform().postTranslate(shift);
@@ -99,8 +98,8 @@ struct MorphTarget {
     }
 };
 
-/// Watches the two-sided distance to the target: converged when it is within tolerance
-/// (withinTolerance); stalled when 40 steps brought no 1% fall of its mean
+/// Watches the two-sided distance to the target: converged when morphConverged says so; stalled
+/// when 40 steps brought no 1% fall of its mean
 /// (thin parts and sharp edges stay a fraction of a voxel off). The mean keeps falling while
 /// any part still travels, far or near.
 class ConvergenceWatch {
@@ -139,9 +138,11 @@ public:
         openvdb::FloatGrid::ConstPtr grid;
     };
 
-    explicit Checkpoints(const openvdb::FloatGrid& grid)
-        : mCapacity(
-              std::min<std::uint64_t>(16, availableMemoryBytes() / (4 * std::max<std::uint64_t>(grid.memUsage(), 1))))
+    /// Keeps nothing unless `wanted` (with volume control the second pass cannot use them).
+    Checkpoints(const openvdb::FloatGrid& grid, bool wanted)
+        : mCapacity(wanted ? std::min<std::uint64_t>(16, availableMemoryBytes() /
+                                                             (4 * std::max<std::uint64_t>(grid.memUsage(), 1)))
+                           : 0)
     {}
 
     void offer(const openvdb::FloatGrid& grid, double time, int step)
@@ -186,7 +187,7 @@ FirstPass convergenceTime(const FieldImage& start, const MorphTarget& target, co
     FieldImage field(start.grid().deepCopy());
     LevelSetEvolution evolution(field, targetTerms(target.shape));
     ConvergenceWatch watch(tolerance);
-    FirstPass pass{0.0, 0, Checkpoints(field.grid())};
+    FirstPass pass{0.0, 0, Checkpoints(field.grid(), !o.keepVolume)};
     const double d0 = std::max(target.distanceFrom(field).maxWorld, 2.0 * tolerance);
     while (evolution.stepCount() < o.maxSteps && !watch.done(field, target, evolution.stepCount())) {
         evolution.step();
@@ -259,7 +260,7 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     emit(0);
     for (int frame = 1; frame < o.frames; ++frame) {
         const double frameTime = duration * frame / (o.frames - 1);
-        const Checkpoints::State* state = o.keepVolume ? nullptr : first.states.latestAtOrBefore(frameTime);
+        const Checkpoints::State* state = first.states.latestAtOrBefore(frameTime);
         if (state && state->time > now()) resumeFrom(*state);
         while (now() < frameTime && secondPassSteps() < o.maxSteps) {
             const double dt = std::min(frameTime - now(), evolution->stableTimeStep());

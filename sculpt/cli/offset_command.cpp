@@ -19,7 +19,7 @@ struct OffsetOptions {
 void runOffset(const OffsetOptions& o)
 {
     const FieldImage field = editDocument(o.input, o.output, "offsetting", [&](FieldImage& f, const Progress& p) {
-        f = applyFilter(f, {ModelFilter::Kind::Offset, 0, false, o.distance}, o.input, p);
+        f = applyFilter(std::move(f), {ModelFilter::Kind::Offset, 0, false, o.distance}, o.input, p);
     });
     std::cout << "wrote " << o.output << ": surface moved " << o.distance << " " << field.units()
               << " along its normal\n";

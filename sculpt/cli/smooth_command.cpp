@@ -24,7 +24,7 @@ void runSmooth(const SmoothOptions& o)
     double before = 0.0;
     const FieldImage field = editDocument(o.input, o.output, "smoothing", [&](FieldImage& f, const Progress& p) {
         before = measureField(f).volume;
-        f = applyFilter(f, {ModelFilter::Kind::Smooth, o.iterations, o.keepVolume, 0.0}, o.input, p);
+        f = applyFilter(std::move(f), {ModelFilter::Kind::Smooth, o.iterations, o.keepVolume, 0.0}, o.input, p);
     });
     std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume " << before << " -> "
               << measureField(field).volume << " " << field.units() << "^3\n";

@@ -17,20 +17,18 @@ std::string filterLabel(const ModelFilter& filter)
     return "smooth " + std::to_string(filter.iterations) + (filter.keepVolume ? " (keep volume)" : "");
 }
 
-FieldImage applyFilter(const FieldImage& field, const ModelFilter& filter, const std::string& source,
-                       const Progress& progress)
+FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::string& source, const Progress& progress)
 {
     if (filter.kind == ModelFilter::Kind::Offset && !std::isfinite(filter.distanceWorld)) {
         throw InputError("offset distance must be finite");
     }
-    FieldImage result(field.grid().deepCopy(), field.units());
     if (filter.kind == ModelFilter::Kind::Smooth) {
-        smooth(result, filter.iterations, filter.keepVolume, progress);
+        smooth(field, filter.iterations, filter.keepVolume, progress);
     } else {
-        offset(result, filter.distanceWorld, progress);
+        offset(field, filter.distanceWorld, progress);
     }
-    refuseEmptyResult(result, source, filterLabel(filter));
-    return result;
+    refuseEmptyResult(field, source, filterLabel(filter));
+    return field;
 }
 
 void refuseEmptyResult(const FieldImage& field, const std::string& source, const std::string& operation)

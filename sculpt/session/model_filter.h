@@ -22,10 +22,10 @@ struct ModelFilter {
 /// "smooth 10 (keep volume)", "offset +1.5": what the history shows.
 std::string filterLabel(const ModelFilter& filter);
 
-/// The filtered copy of `field`; `field` is untouched.
+/// `field` filtered. Taken by value: pass a deepCopy() to keep yours untouched.
 /// @throws InputError (a negative iteration count, a non-finite distance, or nothing of the
 ///         model left, naming `source`); Cancelled if progress says stop.
-FieldImage applyFilter(const FieldImage& field, const ModelFilter& filter, const std::string& source,
+FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::string& source,
                        const Progress& progress = {});
 
 /// @throws InputError naming `source` if `field` encloses less than a voxel after `operation`.

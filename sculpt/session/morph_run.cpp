@@ -20,8 +20,7 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
                   "keeping " + std::to_string(options.frames) +
                       " morph frames in memory (fewer frames, or `sculpt morph`)");
     run.summary = morph(
-        source, target, options,
-        [&](const MorphFrame& frame) { run.frames.emplace_back(frame.field.grid().deepCopy(), source.units()); },
+        source, target, options, [&](const MorphFrame& frame) { run.frames.push_back(frame.field.deepCopy()); },
         progress);
     return run;
 }

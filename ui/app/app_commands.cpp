@@ -229,11 +229,10 @@ void SculptApp::startFilter(const ModelFilter& filter)
 {
     if (busy()) return;
     // The job works on its own copy: the document stays as it is until the result lands.
-    auto copy = std::make_shared<FieldImage>(mDocument->session().field().grid().deepCopy(),
-                                             mDocument->session().field().units());
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string source = mDocument->path().empty() ? std::string("the model") : mDocument->path().string();
     mJob = std::make_unique<BackgroundJob>(filterLabel(filter), [copy, filter, source](const Progress& p) {
-        return applyFilter(*copy, filter, source, p);
+        return applyFilter(std::move(*copy), filter, source, p);
     });
     mDialogs.notice = mJob->label() + "...";
 }
@@ -241,8 +240,7 @@ void SculptApp::startFilter(const ModelFilter& filter)
 void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 {
     if (busy()) return;
-    auto copy = std::make_shared<FieldImage>(mDocument->session().field().grid().deepCopy(),
-                                             mDocument->session().field().units());
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     auto run = std::make_shared<MorphRun>();
     mMorphRunning = run;
     mJob = std::make_unique<BackgroundJob>("morph to " + target.filename().string(),
@@ -256,9 +254,7 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 void SculptApp::keepMorphFrame()
 {
     try {
-        const FieldImage& frame = mMorph->shownField();
-        mDocument->replaceField(FieldImage(frame.grid().deepCopy(), frame.units()),
-                                "morph frame " + std::to_string(mMorph->shown()));
+        mDocument->replaceField(mMorph->shownField().deepCopy(), "morph frame " + std::to_string(mMorph->shown()));
         mDialogs.notice = "kept morph frame " + std::to_string(mMorph->shown()) + " (Ctrl+Z undoes it)";
         closeMorph();
     } catch (const InputError& e) {
