@@ -11,15 +11,16 @@ namespace sculpt {
 
 namespace {
 
-constexpr EnumNames<BrushTool, 9> kToolNames{{{BrushTool::Add, "add"},
-                                              {BrushTool::Carve, "carve"},
-                                              {BrushTool::Inflate, "inflate"},
-                                              {BrushTool::Deflate, "deflate"},
-                                              {BrushTool::Smooth, "smooth"},
-                                              {BrushTool::Flatten, "flatten"},
-                                              {BrushTool::Grab, "grab"},
-                                              {BrushTool::Pinch, "pinch"},
-                                              {BrushTool::Primitive, "primitive"}}};
+constexpr EnumNames<BrushTool, 10> kToolNames{{{BrushTool::Add, "add"},
+                                               {BrushTool::Carve, "carve"},
+                                               {BrushTool::Inflate, "inflate"},
+                                               {BrushTool::Deflate, "deflate"},
+                                               {BrushTool::Smooth, "smooth"},
+                                               {BrushTool::Flatten, "flatten"},
+                                               {BrushTool::Grab, "grab"},
+                                               {BrushTool::Pinch, "pinch"},
+                                               {BrushTool::Follow, "follow"},
+                                               {BrushTool::Primitive, "primitive"}}};
 
 }  // namespace
 
@@ -36,6 +37,7 @@ void BrushSettings::validate() const
         throw InputError("field 'strength' must be in (0, 1] (got " + formatNumber(strength) + ")");
     }
     if (tool == BrushTool::Primitive && !primitive) throw InputError("the primitive tool needs field 'primitives'");
+    if (tool == BrushTool::Follow && !target) throw InputError("the follow tool needs a target shape (field 'target')");
 }
 
 DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal)
@@ -56,6 +58,7 @@ DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const Brus
     case BrushTool::Flatten: return flatten(field, brush, stamp, journal);
     case BrushTool::Grab: return grab(field, brush, stamp, journal);
     case BrushTool::Pinch: return pinch(field, brush, stamp, journal);
+    case BrushTool::Follow: return follow(field, brush, stamp, journal);
     case BrushTool::Primitive: return stampPrimitives(field, *brush.primitive, stamp, journal);
     }
     return {};

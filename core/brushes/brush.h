@@ -18,6 +18,9 @@
 ///   grab          the surface under the brush follows the drag from the previous stamp, by s w of it;
 ///   pinch         the surface moves towards the stroke line (through the stamp, along the stroke;
 ///                 along the view direction for a lone stamp) by 0.5 s p w of its distance to it;
+///   follow        the surface moves a fraction s p w of its signed distance to a target surface,
+///                 read at its closest point: the target term of the level-set motion, only
+///                 where the brush goes (a rough import snaps to a clean template under it);
 ///   primitive     the primitive set, moved to the stamp, combined by its own operation.
 /// Motions larger than a voxel are split into sub-steps of at most one voxel, each redistanced,
 /// so the band stays a distance field. Everything is deterministic, whatever the thread count.
@@ -35,9 +38,9 @@ namespace sculpt {
 class LeafJournal;
 enum class CsgOperation;
 
-enum class BrushTool { Add, Carve, Inflate, Deflate, Smooth, Flatten, Grab, Pinch, Primitive };
+enum class BrushTool { Add, Carve, Inflate, Deflate, Smooth, Flatten, Grab, Pinch, Follow, Primitive };
 
-/// "add", "carve", ... "primitive". @throws InputError for other names, listing the valid ones.
+/// "add", "carve", ... "follow", "primitive". @throws InputError for other names, listing the valid ones.
 BrushTool brushToolFromName(const std::string& name);
 const char* brushToolName(BrushTool tool);
 
@@ -54,9 +57,10 @@ struct BrushSettings {
     Falloff falloff = Falloff::Smooth;
     bool keepVolume = false;                          ///< smooth only
     std::shared_ptr<const PrimitiveStamp> primitive;  ///< primitive only; positioned at the origin
+    std::shared_ptr<const FieldImage> target;         ///< follow only; any voxel size, same world
 
     /// @throws InputError naming the field: radius not positive and finite, strength not in
-    ///         (0, 1], a primitive tool without primitives.
+    ///         (0, 1], a primitive tool without primitives, a follow tool without a target.
     void validate() const;
 };
 

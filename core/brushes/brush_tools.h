@@ -23,6 +23,8 @@ DirtyRegion flatten(FieldImage& field, const BrushSettings& brush, const BrushSt
 DirtyRegion grab(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal);
 /// pinch.cpp
 DirtyRegion pinch(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal);
+/// follow.cpp
+DirtyRegion follow(FieldImage& field, const BrushSettings& brush, const BrushStamp& stamp, LeafJournal* journal);
 /// primitive_stamp.cpp
 DirtyRegion stampPrimitives(FieldImage& field, const PrimitiveStamp& primitive, const BrushStamp& stamp,
                             LeafJournal* journal);

@@ -81,19 +81,8 @@ DirtyRegion flatten(FieldImage& field, const BrushSettings& brush, const BrushSt
     const auto fit = fitPlane(patch.field().grid(), ball);
     if (!fit) return {};  // no surface under the brush
     const auto& [plane, farthest] = *fit;
-    const double fraction = brush.strength * stamp.pressure;
-    const int n = substepsFor(fraction * farthest, field.voxelSize());
-    const auto& xform = patch.field().grid().transform();
-    for (int i = 0; i < n; ++i) {
-        // Step i takes the share of what is left that ends, after n steps, at 1 - fraction.
-        const double before = 1.0 - fraction * i / n, after = 1.0 - fraction * (i + 1) / n;
-        const double share = 1.0 - after / before;
-        patch.remapActive(region, [&](const openvdb::Coord& ijk, const LocalPatch::ConstAccessor& acc) {
-            const Vec3d foot = closestSurfacePointAt(acc, ijk, xform);
-            return acc.getValue(ijk) + share * ball.weightAt(foot) * plane.distance(foot);
-        });
-        patch.redistance();
-    }
+    patch.approach(ball, brush.strength * stamp.pressure, farthest,
+                   [&plane = plane](const Vec3d& foot) { return plane.distance(foot); });
     return patch.commit(field, journal);
 }
 

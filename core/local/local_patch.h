@@ -85,6 +85,15 @@ public:
     /// field), in sub-steps of at most a voxel, each redistanced.
     void offsetSurface(const FalloffBall& ball, double amountWorld);
 
+    /// Moves the surface inside `ball` a fraction (times the falloff) of its signed distance to
+    /// another surface, read at each voxel's closest surface point (> 0: the other surface is
+    /// inside, so the surface moves in), in sub-steps of at most a voxel, each redistanced.
+    /// `farthest` bounds |distance| under the ball (it sets the sub-steps); the distance is read
+    /// afresh at every sub-step, so a curved target is followed, not just its first tangent.
+    /// distance: (const Vec3d& world) -> double, called from several threads.
+    template <typename DistanceFn>
+    void approach(const FalloffBall& ball, double fraction, double farthest, const DistanceFn& distance);
+
     /// Removes the specks the edit left in the region (removeSpecks), then writes the copy's
     /// voxels inside the region back to `target` (value and active state), saving each leaf in
     /// `journal` before it first changes; marks and returns the changed leaves.
@@ -158,6 +167,24 @@ void LocalPatch::advect(const Capsule& region, const DisplacementFn& displacemen
         const openvdb::Vec3d world = xform.indexToWorld(ijk);
         return openvdb::tools::BoxSampler::sample(acc, xform.worldToIndex(world - displacement(world)));
     });
+}
+
+template <typename DistanceFn>
+void LocalPatch::approach(const FalloffBall& ball, double fraction, double farthest, const DistanceFn& distance)
+{
+    const auto& xform = mField.grid().transform();
+    const Capsule region = Capsule::ball(ball.centreWorld, ball.radiusWorld);
+    const int n = substepsFor(fraction * farthest, mField.voxelSize());
+    for (int i = 0; i < n; ++i) {
+        // Step i takes the share of what is left that ends, after n steps, at 1 - fraction.
+        const double before = 1.0 - fraction * i / n, after = 1.0 - fraction * (i + 1) / n;
+        const double share = 1.0 - after / before;
+        remapActive(region, [&](const openvdb::Coord& ijk, const ConstAccessor& acc) {
+            const openvdb::Vec3d foot = closestSurfacePointAt(acc, ijk, xform);
+            return acc.getValue(ijk) + share * ball.weightAt(foot) * distance(foot);
+        });
+        redistance();
+    }
 }
 
 }  // namespace sculpt

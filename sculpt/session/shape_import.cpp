@@ -68,13 +68,14 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
     return field;
 }
 
-FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings)
+FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings,
+                     const Progress& progress)
 {
     if (lowerExtension(input) == ".vdb") return readFieldImage(input);
     ImportOptions options;
     options.voxelSize = voxelSize;
     ImportReport report;
-    FieldImage field = importShape(input, options, report);
+    FieldImage field = importShape(input, options, report, progress);
     warnings.insert(warnings.end(), report.warnings.begin(), report.warnings.end());
     return field;
 }

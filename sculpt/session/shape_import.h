@@ -43,6 +43,6 @@ FieldImage importShape(const std::filesystem::path& input, const ImportOptions& 
 /// A document (.vdb) as is, or anything importShape reads with its defaults (and the given voxel
 /// size, so two shapes can share a lattice); warnings go to `warnings`.
 FieldImage loadShape(const std::filesystem::path& input, std::optional<double> voxelSize,
-                     std::vector<std::string>& warnings);
+                     std::vector<std::string>& warnings, const Progress& progress = {});
 
 }  // namespace sculpt

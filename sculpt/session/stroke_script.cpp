@@ -4,8 +4,10 @@
 #include "core/base/json_fields.h"
 #include "core/field/csg_combine.h"
 #include "core/primitives/scene_file.h"
+#include "sculpt/session/shape_import.h"
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace sculpt {
@@ -17,6 +19,12 @@ using namespace json_fields;
 
 constexpr const char* kFormat = "sculpt-strokes";
 constexpr int kVersion = 1;
+
+/// What parsing resolves paths against, and the targets read so far (strokes share them).
+struct ParseContext {
+    std::filesystem::path baseDir;
+    std::map<std::string, std::shared_ptr<const FieldImage>> targets;
+};
 
 std::string describeEvent(size_t index, const json& event)
 {
@@ -70,10 +78,28 @@ std::shared_ptr<const PrimitiveStamp> parsePrimitives(const json& j, const std::
     return std::make_shared<const PrimitiveStamp>(PrimitiveStamp{scene.primitives, scene.operation});
 }
 
-Stroke parseStroke(const json& j, const std::string& where, const std::filesystem::path& baseDir)
+/// A follow stroke's target, read once per script.
+std::shared_ptr<const FieldImage> parseTarget(const json& j, const std::string& where, ParseContext& context)
+{
+    if (!j.is_string()) throw InputError(where + ": field 'target' must be a file name");
+    auto& target = context.targets[j.get<std::string>()];
+    if (!target) {
+        std::vector<std::string> warnings;  // a target's import warnings do not stop a replay
+        try {
+            target =
+                std::make_shared<const FieldImage>(loadShape(context.baseDir / j.get<std::string>(), {}, warnings));
+        } catch (const InputError& e) {
+            throw InputError(where + ": field 'target': " + e.what(), e.remedy());
+        }
+    }
+    return target;
+}
+
+Stroke parseStroke(const json& j, const std::string& where, ParseContext& context)
 {
     onlyFields(j,
-               {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives"},
+               {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives",
+                "target"},
                where);
     Stroke stroke;
     BrushSettings& brush = stroke.brush;
@@ -89,7 +115,8 @@ Stroke parseStroke(const json& j, const std::string& where, const std::filesyste
     stroke.spacing = numberOr(j, "spacing", stroke.spacing, where);
     if (j.contains("symmetry")) stroke.symmetry = parseSymmetry(j["symmetry"], where);
     if (brush.tool == BrushTool::Primitive)
-        brush.primitive = parsePrimitives(field(j, "primitives", where), where, baseDir);
+        brush.primitive = parsePrimitives(field(j, "primitives", where), where, context.baseDir);
+    if (brush.tool == BrushTool::Follow) brush.target = parseTarget(field(j, "target", where), where, context);
     const json& samples = field(j, "samples", where);
     if (!samples.is_array()) throw InputError(where + ": field 'samples' must be an array");
     for (size_t i = 0; i < samples.size(); ++i) {
@@ -103,7 +130,7 @@ Stroke parseStroke(const json& j, const std::string& where, const std::filesyste
     return stroke;
 }
 
-ScriptEvent parseEvent(const json& j, const std::string& where, const std::filesystem::path& baseDir)
+ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& context)
 {
     if (!j.is_object()) throw InputError(where + " must be an object");
     if (j.contains("action")) {
@@ -114,8 +141,9 @@ ScriptEvent parseEvent(const json& j, const std::string& where, const std::files
         throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\" or \"redo\")");
     }
     field(j, "tool", where);
-    ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, baseDir), {}};
-    if (j.contains("primitives") && j["primitives"].is_object()) event.primitivesScene = j["primitives"].dump();
+    ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, context), {}};
+    if (j.contains("primitives") && j["primitives"].is_object()) event.sources.primitivesScene = j["primitives"].dump();
+    if (event.stroke.brush.tool == BrushTool::Follow) event.sources.targetPath = j["target"].get<std::string>();
     return event;
 }
 
@@ -135,7 +163,8 @@ json strokeJson(const ScriptEvent& event)
     if (stroke.symmetry.y) symmetry.push_back("y");
     if (stroke.symmetry.z) symmetry.push_back("z");
     if (!symmetry.empty()) j["symmetry"] = symmetry;
-    if (stroke.brush.tool == BrushTool::Primitive) j["primitives"] = json::parse(event.primitivesScene);
+    if (stroke.brush.tool == BrushTool::Primitive) j["primitives"] = json::parse(event.sources.primitivesScene);
+    if (stroke.brush.tool == BrushTool::Follow) j["target"] = event.sources.targetPath;
     json samples = json::array();
     for (const StrokeSample& s : stroke.samples) {
         samples.push_back(
@@ -176,8 +205,9 @@ StrokeScript parseStrokeScript(const std::string& text, const std::string& sourc
     const json& events = field(root, "events", source);
     if (!events.is_array()) throw InputError(source + ": field 'events' must be an array");
     StrokeScript script;
+    ParseContext context{baseDir, {}};
     for (size_t i = 0; i < events.size(); ++i) {
-        script.events.push_back(parseEvent(events[i], source + ": " + describeEvent(i, events[i]), baseDir));
+        script.events.push_back(parseEvent(events[i], source + ": " + describeEvent(i, events[i]), context));
     }
     return script;
 }

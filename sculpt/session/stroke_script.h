@@ -7,8 +7,11 @@
 ///        {"tool": "add", "radius": 4, "strength": 1, "falloff": "smooth", "spacing": 0.25,
 ///         "symmetry": ["x"], "samples": [{"position": [1, 2, 3], "pressure": 0.8,
 ///                                        "view": [0, 0, -1]}, [4, 5, 6]]},
+///        {"tool": "follow", "radius": 4, "target": "template.vdb", "samples": [[1, 2, 3]]},
 ///        {"action": "undo"}, {"action": "redo"}]}
-/// A sample is an object or just its position. Schema: data/strokes.schema.json; format: README.
+/// A sample is an object or just its position. A follow stroke's target is a document, scan or
+/// mesh (relative to the script), read at its own resolution (loadShape with no voxel size), as
+/// the window reads it. Schema: data/strokes.schema.json; format: README.
 
 #include "core/base/progress.h"
 #include "sculpt/session/sculpt_session.h"
@@ -19,20 +22,25 @@
 
 namespace sculpt {
 
+/// Where a stroke's extra inputs came from, as a script writes them.
+struct StrokeSources {
+    std::string primitivesScene;  ///< a primitive stroke's scene as JSON text, written inline
+    std::string targetPath;       ///< a follow stroke's target file, as the script names it
+};
+
 struct ScriptEvent {
     enum class Kind { Stroke, Undo, Redo };
     Kind kind = Kind::Stroke;
     Stroke stroke;  ///< Kind::Stroke only
-    /// A primitive stroke's scene as JSON text, written inline by writeStrokeScript.
-    std::string primitivesScene;
+    StrokeSources sources;
 };
 
 struct StrokeScript {
     std::vector<ScriptEvent> events;
 };
 
-/// Parses a script; `source` names it in messages and `baseDir` resolves relative scene paths of
-/// primitive strokes.
+/// Parses a script, reading the scenes and targets it names; `source` names it in messages and
+/// `baseDir` resolves relative paths of primitive scenes and follow targets.
 /// @throws InputError naming the source, the event ("events[3] ('add' stroke)") and the field.
 StrokeScript parseStrokeScript(const std::string& text, const std::string& source,
                                const std::filesystem::path& baseDir);

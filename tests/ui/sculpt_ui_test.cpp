@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <vtkImageData.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -427,6 +428,98 @@ TEST(SculptUi, TheScalesViewDrawsDiscsWhereTheSurfaceIsWithFarFewerPrimitives)
     const auto plain = readPng(dir / "plain.png"), scaled = readPng(dir / "scales.png");
     EXPECT_GT(differingShare(plain, scaled), 0.01);                      // a different picture
     EXPECT_LT(differingShare(plain, readPng(dir / "back.png")), 0.005);  // and back (the status text varies)
+}
+
+/// Distance from `p` to the polyline through `points`.
+double distanceToPolyline(const openvdb::Vec3d& p, const std::vector<openvdb::Vec3d>& points)
+{
+    double best = (p - points.front()).length();
+    for (std::size_t i = 1; i < points.size(); ++i) {
+        const openvdb::Vec3d a = points[i - 1], ab = points[i] - a;
+        const double t = ab.lengthSqr() > 0.0 ? std::clamp((p - a).dot(ab) / ab.lengthSqr(), 0.0, 1.0) : 0.0;
+        best = std::min(best, (p - (a + ab * t)).length());
+    }
+    return best;
+}
+
+TEST(SculptUi, TheFollowBrushPullsTheSurfaceUnderItOntoTheTargetAndNothingElse)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path()).exitCode, 0);                         // radius 50
+    ASSERT_EQ(runSculpt("new --shape box --radius 47 -o box.vdb", dir.path()).exitCode, 0);  // 3 inside it
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.screenshot(dir / "plain.png").key("T", {"ctrl"}).text("box.vdb").key("Enter").untilJobEnds();
+    events.report(r).screenshot(dir / "ghost.png").key("H").screenshot(dir / "hidden.png").key("H");
+    events.key("O").drag(600, 400, 690, 410, 30).drag(690, 380, 600, 390, 30).report(r);
+    events.key("Z", {"ctrl"}).key("Z", {"ctrl"}).report(r);
+    const CommandResult run =
+        play(dir, events, (dir / "ball.vdb").string(),
+             "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "undone.vdb"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_EQ(reports[0]["target"], "box.vdb") << reports[0]["error"];
+    EXPECT_GT(reports[0]["ghost_triangles"].get<int>(), 1000);
+    const auto plain = readPng(dir / "plain.png"), ghost = readPng(dir / "ghost.png");
+    EXPECT_GT(differingShare(plain, ghost), 0.05);                         // the ghost is drawn over the ball
+    EXPECT_LT(differingShare(plain, readPng(dir / "hidden.png")), 0.005);  // H hides it
+    EXPECT_EQ(reports[1]["undo"], 2);
+    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);  // undo restores the grid bit for bit
+    EXPECT_EQ(checksumOfFile(dir / "undone.vdb"), reports[0]["checksum"]);
+
+    // The two strokes again, by `sculpt apply` of the log the window wrote (it names box.vdb),
+    // without its undos.
+    std::ifstream logFile(dir / "strokes.json");
+    nlohmann::json log = nlohmann::json::parse(logFile);
+    auto& logged = log["events"];
+    logged.erase(std::remove_if(logged.begin(), logged.end(), [](const auto& e) { return e.contains("action"); }),
+                 logged.end());
+    std::ofstream(dir / "strokes_only.json") << log.dump();
+    const CommandResult apply = runSculpt("apply ball.vdb strokes_only.json -o followed.vdb", dir.path());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    const FieldImage before = readFieldImage(dir / "ball.vdb"), after = readFieldImage(dir / "followed.vdb");
+    const FieldImage box = readFieldImage(dir / "box.vdb");
+    std::vector<openvdb::Vec3d> path;
+    double radius = 0.0;
+    for (const auto& event : log["events"]) {
+        if (!event.contains("tool")) continue;
+        EXPECT_EQ(event["tool"], "follow");
+        radius = event["radius"];
+        for (const auto& sample : event["samples"]) {
+            path.emplace_back(sample["position"][0], sample["position"][1], sample["position"][2]);
+        }
+    }
+    ASSERT_GT(path.size(), 10u);
+    // Every voxel that changed lies under the brush; near the surface under it, the distance
+    // to the box fell.
+    const auto& xform = before.grid().transform();
+    const auto a = before.grid().getConstAccessor(), b = after.grid().getConstAccessor();
+    const auto boxAcc = box.grid().getConstAccessor();
+    std::size_t changed = 0, outside = 0;
+    double distanceBefore = 0.0, distanceAfter = 0.0;
+    int nearBefore = 0, nearAfter = 0;
+    for (auto leaf = after.grid().tree().cbeginLeaf(); leaf; ++leaf) {
+        for (auto it = leaf->cbeginValueAll(); it; ++it) {
+            const openvdb::Coord ijk = it.getCoord();
+            const openvdb::Vec3d p = xform.indexToWorld(ijk);
+            const double reach = distanceToPolyline(p, path);
+            if (a.getValue(ijk) != b.getValue(ijk) || a.isValueOn(ijk) != b.isValueOn(ijk)) {
+                ++changed;
+                if (reach > radius + 1e-6) ++outside;
+            }
+            if (reach > 0.5 * radius) continue;
+            const double boxPhi = std::abs(boxAcc.getValue(box.grid().transform().worldToIndexCellCentered(p)));
+            if (std::abs(a.getValue(ijk)) < 0.5) distanceBefore += boxPhi, ++nearBefore;
+            if (std::abs(b.getValue(ijk)) < 0.5) distanceAfter += boxPhi, ++nearAfter;
+        }
+    }
+    EXPECT_GT(changed, 1000u);
+    EXPECT_EQ(outside, 0u) << "of " << changed << " changed voxels";
+    ASSERT_GT(nearBefore, 100);
+    ASSERT_GT(nearAfter, 100);
+    EXPECT_LT(distanceAfter / nearAfter, 0.6 * distanceBefore / nearBefore)
+        << "mean distance to the box under the brush: " << distanceBefore / nearBefore << " before";
 }
 
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)

@@ -1,6 +1,7 @@
 #include "core/base/errors.h"
 #include "core/io/vdb_file.h"
 #include "sculpt/session/morph_run.h"
+#include "sculpt/session/shape_import.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
 
@@ -29,6 +30,10 @@ void SculptApp::execute(Command command)
     case Command::ToolFlatten: tool(BrushTool::Flatten); break;
     case Command::ToolGrab: tool(BrushTool::Grab); break;
     case Command::ToolPinch: tool(BrushTool::Pinch); break;
+    case Command::ToolFollow:
+        tool(BrushTool::Follow);
+        if (!mBrush.target.shape) mDialogs.notice = "the follow brush needs a target: File > Load Target (Ctrl+T)";
+        break;
     case Command::ToolPrimitive: tool(BrushTool::Primitive); break;
     case Command::RadiusDrag: mDrag = Drag::Radius, mDragStartX = mMouseX, mDragStartValue = mBrush.radius; break;
     case Command::StrengthDrag: mDrag = Drag::Strength, mDragStartX = mMouseX, mDragStartValue = mBrush.strength; break;
@@ -62,7 +67,13 @@ void SculptApp::execute(Command command)
         break;
     case Command::MorphTo:
         if (busy()) break;
-        mDialogs.prompt = Dialogs::Prompt::Morph, mDialogs.path.clear(), mDialogs.focusField = true;
+        mDialogs.prompt = Dialogs::Prompt::Morph, mDialogs.path = mBrush.target.path.string(),
+        mDialogs.focusField = true;
+        break;
+    case Command::LoadTarget:
+        if (busy()) break;
+        mDialogs.prompt = Dialogs::Prompt::Target, mDialogs.path = mBrush.target.path.string(),
+        mDialogs.focusField = true;
         break;
     case Command::MorphPlay:
         if (mMorph) mMorph->togglePlay(mWindow.time());
@@ -120,6 +131,7 @@ void SculptApp::execute(Command command)
         mScales.setShown(!mScales.shown());
         mDisplay.setHidden(mScales.shown());
         break;
+    case Command::ToggleGhost: mGhost.setShown(!mGhost.shown()); break;
     case Command::ToggleTrackball: toggle(mCamera.trackball); break;
     case Command::ToggleHelp: toggle(mDialogs.help); break;
     }
@@ -204,6 +216,7 @@ void SculptApp::confirmPrompt()
         case Dialogs::Prompt::SmoothModel:
         case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
         case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph); break;
+        case Dialogs::Prompt::Target: startLoadTarget(path); break;
         case Dialogs::Prompt::MorphExport:
             writeFrames(mMorph->run().frames, path);
             mDialogs.notice = "wrote " + std::to_string(mMorph->count()) + " frames to " + path.string();
@@ -225,16 +238,26 @@ bool SculptApp::busy()
     return mJob || mMorph;
 }
 
+void SculptApp::startJob(std::string label, BackgroundJob::Work work, JobLanding land)
+{
+    mJob = std::make_unique<BackgroundJob>(std::move(label), std::move(work));
+    mLandJob = std::move(land);
+    mDialogs.notice = mJob->label() + "...";
+}
+
 void SculptApp::startFilter(const ModelFilter& filter)
 {
     if (busy()) return;
     // The job works on its own copy: the document stays as it is until the result lands.
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string source = mDocument->path().empty() ? std::string("the model") : mDocument->path().string();
-    mJob = std::make_unique<BackgroundJob>(filterLabel(filter), [copy, filter, source](const Progress& p) {
-        return applyFilter(std::move(*copy), filter, source, p);
-    });
-    mDialogs.notice = mJob->label() + "...";
+    const std::string label = filterLabel(filter);
+    startJob(
+        label, [copy, filter, source](const Progress& p) { return applyFilter(std::move(*copy), filter, source, p); },
+        [this, label](FieldImage result) {
+            mDocument->replaceField(std::move(result), label);
+            mDialogs.notice = label + " done (Ctrl+Z undoes it)";
+        });
 }
 
 void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
@@ -242,13 +265,36 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
     if (busy()) return;
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     auto run = std::make_shared<MorphRun>();
-    mMorphRunning = run;
-    mJob = std::make_unique<BackgroundJob>("morph to " + target.filename().string(),
-                                           [copy, run, target, options](const Progress& p) {
-                                               *run = morphInto(*copy, target, options, p);
-                                               return run->frames.back();
-                                           });
-    mDialogs.notice = mJob->label() + "...";
+    const std::string label = "morph to " + target.filename().string();
+    startJob(
+        label,
+        [copy, run, target, options](const Progress& p) {
+            *run = morphInto(*copy, target, options, p);
+            return run->frames.back();
+        },
+        [this, run, label](FieldImage) {
+            mMorph.emplace(std::move(*run));
+            const MorphSummary& s = mMorph->run().summary;
+            mDialogs.notice = label + ": " + std::to_string(mMorph->count()) + " frames, " +
+                              (s.converged ? "converged" : "NOT converged") + " (Space plays, K keeps a frame)";
+        });
+}
+
+void SculptApp::startLoadTarget(const fs::path& path)
+{
+    if (busy()) return;
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    startJob(
+        "load target " + path.filename().string(),
+        [path, warnings](const Progress& p) { return loadShape(path, std::nullopt, *warnings, p); },
+        [this, path, warnings](FieldImage shape) {
+            mBrush.target = {path, std::make_shared<const FieldImage>(std::move(shape))};
+            mGhost.set(mBrush.target.shape.get());
+            mGhost.setShown(true);
+            mDialogs.notice =
+                "target " + path.filename().string() + " loaded: O is the follow brush, H hides the ghost";
+            if (!warnings->empty()) mDialogs.notice += " (" + warnings->front() + ")";
+        });
 }
 
 void SculptApp::keepMorphFrame()
@@ -277,16 +323,12 @@ void SculptApp::pollJob()
 {
     if (!mJob || !mJob->finished()) return;
     const std::unique_ptr<BackgroundJob> job = std::move(mJob);
-    const std::shared_ptr<MorphRun> morph = std::move(mMorphRunning);
+    const JobLanding land = std::move(mLandJob);
     if (std::optional<FieldImage> result = job->takeResult()) {
-        if (morph) {
-            mMorph.emplace(std::move(*morph));
-            const MorphSummary& s = mMorph->run().summary;
-            mDialogs.notice = job->label() + ": " + std::to_string(mMorph->count()) + " frames, " +
-                              (s.converged ? "converged" : "NOT converged") + " (Space plays, K keeps a frame)";
-        } else {
-            mDocument->replaceField(std::move(*result), job->label());
-            mDialogs.notice = job->label() + " done (Ctrl+Z undoes it)";
+        try {
+            land(std::move(*result));
+        } catch (const InputError& e) {
+            showError(e.what());
         }
         mLastJob = "finished";
     } else if (job->cancelled()) {

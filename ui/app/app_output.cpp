@@ -31,6 +31,7 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::OffsetModel: return "offset-model";
     case Dialogs::Prompt::Morph: return "morph";
     case Dialogs::Prompt::MorphExport: return "morph-export";
+    case Dialogs::Prompt::Target: return "target";
     default: return "none";
     }
 }
@@ -92,6 +93,8 @@ void SculptApp::writeReport(const fs::path& path)
     r["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
+    r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
+    r["target"] = mBrush.target.path.string();
     r["morph"] = mMorph ? nlohmann::json{{"frames", mMorph->count()},
                                          {"shown", mMorph->shown()},
                                          {"checksum", formatChecksum(gridChecksum(mMorph->shownField().grid()))},

@@ -17,6 +17,7 @@ enum class Command {
     ToolFlatten,
     ToolGrab,
     ToolPinch,
+    ToolFollow,
     ToolPrimitive,
     RadiusDrag,
     StrengthDrag,
@@ -33,6 +34,7 @@ enum class Command {
     SaveAs,
     ExportMesh,
     SaveStrokes,
+    LoadTarget,
     Quit,
     SmoothModel,
     OffsetModel,
@@ -59,6 +61,7 @@ enum class Command {
     ToggleFlat,
     ToggleWireframe,
     ToggleScales,
+    ToggleGhost,
     ToggleTrackball,
     ToggleHelp,
 };

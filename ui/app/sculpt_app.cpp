@@ -46,9 +46,9 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path)
 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
-      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()), mCursor(mViewport.overlay()),
-      mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
-      mRecent(mOptions.stateDir)
+      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()), mGhost(mViewport.renderer()),
+      mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport),
+      mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     setDocument(openOrCreate(mOptions.document), true);
@@ -255,7 +255,7 @@ void SculptApp::replayStrokes()
         else {
             Stroke settings = event.stroke;
             settings.samples.clear();
-            mDocument->beginStroke(settings, event.primitivesScene);
+            mDocument->beginStroke(settings, event.sources);
             for (const StrokeSample& sample : event.stroke.samples) mDocument->extendStroke(sample);
             mDocument->endStroke();
         }

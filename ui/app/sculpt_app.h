@@ -15,6 +15,7 @@
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
+#include "ui/view/ghost_display.h"
 #include "ui/view/model_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/surface_look.h"
@@ -66,7 +67,8 @@ struct Dialogs {
         SmoothModel,
         OffsetModel,
         Morph,
-        MorphExport
+        MorphExport,
+        Target
     };
     Prompt prompt = Prompt::None;
     std::string path;  ///< the prompt's text field
@@ -102,6 +104,7 @@ public:
     const StatusFigures& status() const { return mStatus; }
     bool strokeActive() const { return mStroke.active(); }
     bool scalesShown() const { return mScales.shown(); }
+    bool ghostShown() const { return mGhost.shown(); }
     /// The whole-model job running, or nullptr.
     const BackgroundJob* job() const { return mJob.get(); }
     /// Asks the running job to stop; the document stays as it was.
@@ -147,8 +150,14 @@ private:
     void frameModel();
     std::optional<SurfaceHit> pickAt(double x, double y);
     void replayStrokes();
+    /// What lands a finished job's result (the document's new field, the frames, a target).
+    using JobLanding = std::function<void(FieldImage result)>;
+    /// Runs `work` as the background job; `land` takes its result on the UI thread.
+    void startJob(std::string label, BackgroundJob::Work work, JobLanding land);
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
+    /// Reads the file at `path` as the follow brush's target (and the ghost), as a job.
+    void startLoadTarget(const std::filesystem::path& path);
     /// Starts a morph of a copy of the model into the file at `target` as a background job.
     void startMorph(const std::filesystem::path& target, const MorphOptions& options);
     void keepMorphFrame();
@@ -165,6 +174,7 @@ private:
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
+    GhostDisplay mGhost;
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;
@@ -179,7 +189,7 @@ private:
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     std::unique_ptr<BackgroundJob> mJob;
-    std::shared_ptr<MorphRun> mMorphRunning;  // what a running morph job fills
+    JobLanding mLandJob;
     std::optional<MorphFrames> mMorph;
     std::string mLastJob;         // how the last job ended: "finished", "cancelled", "failed"
     double mWaitingSince = -1.0;  // a replay waiting for the job (wait event): since when

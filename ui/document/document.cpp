@@ -79,10 +79,10 @@ std::string Document::title() const
     return name + (modified() ? " *" : "");
 }
 
-void Document::beginStroke(const Stroke& settings, std::string primitivesScene)
+void Document::beginStroke(const Stroke& settings, StrokeSources sources)
 {
     mSession.beginStroke(settings);
-    mPendingScene = std::move(primitivesScene);
+    mPendingSources = std::move(sources);
 }
 
 SculptSession::StrokeReport Document::extendStroke(const StrokeSample& sample) { return mSession.extendStroke(sample); }
@@ -93,7 +93,7 @@ void Document::endStroke()
     ++mRevision;
     if (done.report.leavesChanged == 0) return;  // the history ignores a stroke that changed nothing
     recordStep(strokeLabel(done.stroke, done.report.stamps));
-    mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingScene)});
+    mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingSources)});
 }
 
 void Document::replaceField(FieldImage result, const std::string& label)

@@ -51,8 +51,9 @@ public:
     /// Changes on every edit, undo and redo: what autosave watches.
     std::uint64_t revision() const { return mRevision; }
 
-    /// Live strokes (see SculptSession); `primitivesScene` is a primitive stroke's scene JSON.
-    void beginStroke(const Stroke& settings, std::string primitivesScene = {});
+    /// Live strokes (see SculptSession); `sources` is what the stroke log writes of its primitive
+    /// scene or follow target.
+    void beginStroke(const Stroke& settings, StrokeSources sources = {});
     SculptSession::StrokeReport extendStroke(const StrokeSample& sample);
     void endStroke();
     bool undo();
@@ -71,7 +72,7 @@ private:
     SculptSession mSession;
     std::filesystem::path mPath;
     StrokeScript mLog;
-    std::string mPendingScene;
+    StrokeSources mPendingSources;
     std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold
     std::vector<std::string> mUndoLabels, mRedoLabels;
     std::vector<std::uint64_t> mUndoStates, mRedoStates;

@@ -133,7 +133,7 @@ void morphDialog(SculptApp& app)
     Dialogs& d = app.dialogs();
     MorphOptions& m = d.morph;
     beginDialog("Morph To");
-    ImGui::TextDisabled("The target: a .vdb document, a scan or a mesh (path, then Enter)");
+    ImGui::TextDisabled("The target: a .vdb document, a scan or a mesh (path, then Enter; the loaded target if any)");
     const bool entered = pathField(d, "##target");
     ImGui::InputInt("frames", &m.frames, 1, 5);
     m.frames = std::clamp(m.frames, 2, 1000);
@@ -204,6 +204,9 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::OffsetModel: return filterDialog(app);
     case Dialogs::Prompt::Morph: return morphDialog(app);
     case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
+    case Dialogs::Prompt::Target:
+        return pathDialog(app, "Load Target",
+                          "A document, scan or mesh for the follow brush (O) and the morph, shown as a ghost (H)");
     case Dialogs::Prompt::None: return;
     }
 }

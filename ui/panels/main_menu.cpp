@@ -40,6 +40,8 @@ void drawMainMenu(SculptApp& app)
         item(Command::ExportMesh);
         item(Command::SaveStrokes);
         ImGui::Separator();
+        item(Command::LoadTarget, !app.job());
+        ImGui::Separator();
         item(Command::Quit);
         ImGui::EndMenu();
     }
@@ -67,6 +69,9 @@ void drawMainMenu(SculptApp& app)
             app.execute(Command::ToggleWireframe);
         if (ImGui::MenuItem("Scales", shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
             app.execute(Command::ToggleScales);
+        if (ImGui::MenuItem("Target Ghost", shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
+                            bool(app.brush().target.shape)))
+            app.execute(Command::ToggleGhost);
         if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
             app.execute(Command::ToggleTrackball);
         ImGui::Separator();

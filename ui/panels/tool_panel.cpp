@@ -13,15 +13,11 @@ struct ToolButton {
 };
 
 constexpr ToolButton kTools[] = {
-    {BrushTool::Add, Command::ToolAdd},
-    {BrushTool::Carve, Command::ToolCarve},
-    {BrushTool::Inflate, Command::ToolInflate},
-    {BrushTool::Deflate, Command::ToolDeflate},
-    {BrushTool::Smooth, Command::ToolSmooth},
-    {BrushTool::Flatten, Command::ToolFlatten},
-    {BrushTool::Grab, Command::ToolGrab},
-    {BrushTool::Pinch, Command::ToolPinch},
-    {BrushTool::Primitive, Command::ToolPrimitive},
+    {BrushTool::Add, Command::ToolAdd},         {BrushTool::Carve, Command::ToolCarve},
+    {BrushTool::Inflate, Command::ToolInflate}, {BrushTool::Deflate, Command::ToolDeflate},
+    {BrushTool::Smooth, Command::ToolSmooth},   {BrushTool::Flatten, Command::ToolFlatten},
+    {BrushTool::Grab, Command::ToolGrab},       {BrushTool::Pinch, Command::ToolPinch},
+    {BrushTool::Follow, Command::ToolFollow},   {BrushTool::Primitive, Command::ToolPrimitive},
 };
 
 constexpr const char* kFalloffs[] = {"smooth", "sphere", "sharp", "constant"};
@@ -35,7 +31,7 @@ void toolPalette(SculptApp& app)
         if (ImGui::Button(commandInfo(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
         commandTooltip(int(kTools[i].command));
-        if (i % 3 != 2) ImGui::SameLine();
+        if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
     }
 }
 
@@ -72,6 +68,10 @@ void drawToolPanel(SculptApp& app)
     ImGui::Checkbox("pressure from speed", &b.pressureFromSpeed);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A mouse has no pressure: faster strokes press lighter");
     if (b.tool == BrushTool::Smooth) ImGui::Checkbox("keep volume", &b.keepVolume);
+    if (b.tool == BrushTool::Follow) {
+        if (b.target.shape) ImGui::Text("target: %s", b.target.path.filename().string().c_str());
+        else ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "no target: Ctrl+T loads one");
+    }
     ImGui::TextDisabled("Ctrl inverts, Shift smooths");
     ImGui::End();
 }

@@ -34,6 +34,15 @@ std::string primitiveScene(const BrushOptions& options, int mods)
     return scene.dump();
 }
 
+StrokeSources strokeSources(const BrushOptions& options, int mods)
+{
+    StrokeSources sources;
+    const BrushTool tool = effectiveTool(options.tool, mods);
+    if (tool == BrushTool::Primitive) sources.primitivesScene = primitiveScene(options, mods);
+    if (tool == BrushTool::Follow) sources.targetPath = std::filesystem::absolute(options.target.path).string();
+    return sources;
+}
+
 Stroke strokeSettings(const BrushOptions& options, int mods)
 {
     Stroke stroke;
@@ -44,6 +53,7 @@ Stroke strokeSettings(const BrushOptions& options, int mods)
     stroke.brush.keepVolume = options.keepVolume && stroke.brush.tool == BrushTool::Smooth;
     stroke.spacing = options.spacing;
     stroke.symmetry = options.symmetry;
+    if (stroke.brush.tool == BrushTool::Follow) stroke.brush.target = options.target.shape;
     if (stroke.brush.tool == BrushTool::Primitive) {
         const Scene scene = parseScene(primitiveScene(options, mods), "primitive stamp");
         stroke.brush.primitive =

@@ -3,9 +3,18 @@
 /// @brief The brush as the tool palette sets it, and what the held modifiers make of it.
 
 #include "core/brushes/brush.h"
-#include "sculpt/session/stroke.h"
+#include "sculpt/session/stroke_script.h"
+
+#include <filesystem>
+#include <memory>
 
 namespace sculpt::ui {
+
+/// The shape the follow brush goes towards (and a morph's default target), as loaded from a file.
+struct FollowTarget {
+    std::filesystem::path path;
+    std::shared_ptr<const FieldImage> shape;  ///< null: none loaded
+};
 
 struct BrushOptions {
     BrushTool tool = BrushTool::Add;
@@ -16,6 +25,7 @@ struct BrushOptions {
     Symmetry symmetry;
     bool keepVolume = false;        ///< smooth
     bool pressureFromSpeed = true;  ///< a mouse has no pressure: faster strokes press lighter
+    FollowTarget target;            ///< follow
 };
 
 /// The tool a stroke uses: Shift smooths while held; Ctrl inverts add/carve, inflate/deflate
@@ -24,6 +34,10 @@ BrushTool effectiveTool(BrushTool tool, int mods);
 
 /// The stroke settings (no samples) for these options under these modifiers.
 Stroke strokeSettings(const BrushOptions& options, int mods);
+
+/// What a stroke script records of the stroke's extra inputs: the primitive's scene, the
+/// follow target's file.
+StrokeSources strokeSources(const BrushOptions& options, int mods);
 
 /// The scene JSON of the primitive stamp: one soft blob about the brush's size; a difference
 /// when Ctrl is held.

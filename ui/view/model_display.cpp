@@ -1,19 +1,14 @@
 #include "ui/view/model_display.h"
 
+#include "ui/view/block_polydata.h"
 #include "ui/view/surface_look.h"
 
 #include <vtkActor.h>
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkIdTypeArray.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 
 #include <cmath>
-#include <cstring>
 #include <unordered_map>
 
 namespace sculpt::ui {
@@ -22,48 +17,6 @@ namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
 constexpr int kChunkBlocks = 4;  // per axis
-
-/// `part` appended to `whole`, its indices shifted.
-void append(BlockMesh& whole, const BlockMesh& part)
-{
-    const auto base = std::uint32_t(whole.positions.size());
-    whole.positions.insert(whole.positions.end(), part.positions.begin(), part.positions.end());
-    whole.normals.insert(whole.normals.end(), part.normals.begin(), part.normals.end());
-    for (const auto& t : part.triangles) whole.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-}
-
-vtkSmartPointer<vtkFloatArray> floatTriples(const std::vector<std::array<float, 3>>& values)
-{
-    auto array = vtkSmartPointer<vtkFloatArray>::New();
-    array->SetNumberOfComponents(3);
-    array->SetNumberOfTuples(vtkIdType(values.size()));
-    if (!values.empty()) std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(values[0]));
-    return array;
-}
-
-vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh)
-{
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetData(floatTriples(mesh.positions));
-    auto normals = floatTriples(mesh.normals);
-    normals->SetName("Normals");
-    auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-    auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-    offsets->SetNumberOfValues(vtkIdType(mesh.triangles.size() + 1));
-    connectivity->SetNumberOfValues(vtkIdType(mesh.triangles.size() * 3));
-    for (vtkIdType t = 0; t < vtkIdType(mesh.triangles.size()); ++t) {
-        offsets->SetValue(t, 3 * t);
-        for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * t + k, mesh.triangles[size_t(t)][size_t(k)]);
-    }
-    offsets->SetValue(vtkIdType(mesh.triangles.size()), vtkIdType(3 * mesh.triangles.size()));
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->SetData(offsets, connectivity);
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points);
-    poly->GetPointData()->SetNormals(normals);
-    poly->SetPolys(cells);
-    return poly;
-}
 
 vtkSmartPointer<vtkActor> actorOf(const BlockMesh& mesh, const SurfaceLook& look)
 {

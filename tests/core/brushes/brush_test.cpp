@@ -234,6 +234,40 @@ TEST(Brush, FlattenBringsTheSurfaceUnderTheBrushOntoTheFittedPlane)
     EXPECT_LT(R - mean, 2.5);  // the plane cuts the cap near its base-to-top middle, not deeper
 }
 
+/// Mean |distance to `target`| of the mesh vertices of `field` within `radius` of `centre`.
+double meanDistanceNear(const FieldImage& field, const FieldImage& target, const Vec3d& centre, double radius)
+{
+    const auto acc = target.grid().getConstAccessor();
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& p : meshLevelSet(field).positions) {
+        const Vec3d q(p[0], p[1], p[2]);
+        if ((q - centre).length() > radius) continue;
+        sum += std::abs(openvdb::tools::BoxSampler::sample(acc, target.grid().transform().worldToIndex(q)));
+        ++count;
+    }
+    EXPECT_GT(count, 20);
+    return sum / std::max(count, 1);
+}
+
+TEST(Brush, FollowMovesTheSurfaceUnderTheBrushOntoTheTargetAndNothingBeyond)
+{
+    // A ball of radius 20 over a box of half side 17.5 (its own voxel size): the ball's cap
+    // bulges 2.5 out of the box's +x face, beyond the box's band (1.5).
+    const double R = 20.0, r = 7.0;
+    const FieldImage original = makeSphere(R, 0.5);
+    FieldImage field = makeSphere(R, 0.5);
+    BrushSettings settings = brush(BrushTool::Follow, r);
+    settings.target = std::make_shared<const FieldImage>(makeBox(17.5, 0.7));
+    const Vec3d centre(R, 0, 0);
+    const double before = meanDistanceNear(field, *settings.target, centre, 0.5 * r);
+    for (int i = 0; i < 6; ++i) applyStamp(field, settings, stampAt(centre), nullptr);
+    EXPECT_GT(before, 1.5);
+    EXPECT_LT(meanDistanceNear(field, *settings.target, centre, 0.5 * r), 0.25);
+    EXPECT_NEAR(crossingAlong(field, Vec3d(0.0), Vec3d(1, 0, 0), 2 * R), 17.5, 0.25);
+    expectUntouchedBeyond(original, field, centre, r);
+}
+
 TEST(Brush, GrabMovesTheGrabbedMaterialAlongTheDrag)
 {
     const double R = 20.0;
@@ -348,14 +382,16 @@ TEST(Brush, TwoHundredRandomAddAndCarveStampsWithHardFalloffsKeepOneShell)
 TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
 {
     for (const BrushTool tool : {BrushTool::Add, BrushTool::Carve, BrushTool::Inflate, BrushTool::Smooth,
-                                 BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch}) {
+                                 BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch, BrushTool::Follow}) {
         FieldImage field = makeSphere(12.0, 0.5);
         const FieldImage original(field.grid().deepCopy());
         LeafJournal journal;
         for (int i = 0; i < 4; ++i) {
             const Vec3d at(12.0 * std::cos(0.3 * i), 12.0 * std::sin(0.3 * i), 0.0);
             const Vec3d previous(12.0 * std::cos(0.3 * (i - 1)), 12.0 * std::sin(0.3 * (i - 1)), 0.0);
-            applyStamp(field, brush(tool, 4.0, 0.7), stampAt(at, i ? previous : at), &journal);
+            BrushSettings settings = brush(tool, 4.0, 0.7);
+            settings.target = std::make_shared<const FieldImage>(makeBox(10.0, 0.5));
+            applyStamp(field, settings, stampAt(at, i ? previous : at), &journal);
         }
         const FieldImage edited(field.grid().deepCopy());
         journal.swap(field);
@@ -380,6 +416,7 @@ TEST(Brush, RejectsBadSettingsNamingTheField)
     expectError(brush(BrushTool::Add, -1.0), stampAt(Vec3d(10, 0, 0)), "'radius'");
     expectError(brush(BrushTool::Add, 2.0, 1.5), stampAt(Vec3d(10, 0, 0)), "'strength'");
     expectError(brush(BrushTool::Primitive, 2.0), stampAt(Vec3d(10, 0, 0)), "'primitives'");
+    expectError(brush(BrushTool::Follow, 2.0), stampAt(Vec3d(10, 0, 0)), "'target'");
     expectError(brush(BrushTool::Add, 2.0), stampAt(Vec3d(std::nan(""), 0, 0)), "not finite");
     EXPECT_THROW(brushToolFromName("sponge"), InputError);
     EXPECT_THROW(falloffFromName("linear"), InputError);

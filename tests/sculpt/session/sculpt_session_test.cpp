@@ -3,11 +3,13 @@
 #include "core/base/errors.h"
 #include "core/field/csg_combine.h"
 #include "core/field/grid_checksum.h"
+#include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
+#include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -335,15 +337,22 @@ TEST(StrokeScript, AWrittenScriptReadsBackAndReplaysBitForBit)
                                              "inline", ".")
                                .events[0]
                                .stroke.brush.primitive;
-    script.events.push_back({ScriptEvent::Kind::Stroke, blob, scene});
+    script.events.push_back({ScriptEvent::Kind::Stroke, blob, {scene, ""}});
+    // A follow stroke names its target file: the replay reads it again.
+    const test::TempDir dir;
+    writeFieldImage(makeBox(17.0, 0.7), dir / "box.vdb");
+    Stroke follow = strokeOf(BrushTool::Follow, 5.0, {Vec3d(20, 0, 0), Vec3d(19, 5, 0)});
+    follow.brush.target = std::make_shared<const FieldImage>(readFieldImage(dir / "box.vdb"));
+    script.events.push_back({ScriptEvent::Kind::Stroke, follow, {"", "box.vdb"}});
 
-    const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
+    const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", dir.path());
     ASSERT_EQ(back.events.size(), script.events.size());
     EXPECT_EQ(back.events[0].stroke.samples[1].positionWorld, add.samples[1].positionWorld);
     EXPECT_EQ(back.events[0].stroke.samples[1].pressure, 0.37);
     EXPECT_TRUE(back.events[0].stroke.symmetry.x);
     EXPECT_TRUE(back.events[1].stroke.brush.keepVolume);
     EXPECT_EQ(back.events[2].kind, ScriptEvent::Kind::Undo);
+    EXPECT_EQ(back.events[4].sources.targetPath, "box.vdb");
     SculptSession a(makeSphere(20.0, 0.5)), b(makeSphere(20.0, 0.5));
     replayScript(a, script, "original");
     replayScript(b, back, "written");
@@ -355,7 +364,7 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
     const std::string ok = R"("samples": [[1, 2, 3]])";
     EXPECT_EQ(parseError(R"([{"action": "undo"}, {"tool": "sponge", "radius": 1, )" + ok + "}]"),
               "s.json: events[1] ('sponge' stroke): unknown tool \"sponge\" (expected add, carve, inflate, "
-              "deflate, smooth, flatten, grab, pinch or primitive)");
+              "deflate, smooth, flatten, grab, pinch, follow or primitive)");
     EXPECT_EQ(parseError(R"([{"tool": "add", )" + ok + "}]"),
               "s.json: events[0] ('add' stroke): missing field 'radius'");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 0, )" + ok + "}]"),
@@ -375,6 +384,10 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
               "s.json: events[0]: field 'action' is \"again\" (expected \"undo\" or \"redo\")");
     EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
               "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
+    EXPECT_EQ(parseError(R"([{"tool": "follow", "radius": 1, )" + ok + "}]"),
+              "s.json: events[0] ('follow' stroke): missing field 'target'");
+    EXPECT_EQ(parseError(R"([{"tool": "follow", "radius": 1, "target": "missing.vdb", )" + ok + "}]").substr(0, 84),
+              "s.json: events[0] ('follow' stroke): field 'target': ./missing.vdb: no such file");
     EXPECT_NE(parseError("[{").find("malformed JSON"), std::string::npos);
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "strenght": 1, )" + ok + "}]").substr(0, 68),
               "s.json: events[0] ('add' stroke): unknown field 'strenght' (expected");

@@ -1,0 +1,19 @@
+#pragma once
+/// @file block_polydata.h
+/// @brief Mesher blocks as VTK geometry: what every display of a surface uploads.
+
+#include "core/mesh/block_mesh.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkPolyData;
+
+namespace sculpt::ui {
+
+/// `part` appended to `whole`, its indices shifted (keys and ownership are not kept).
+void append(BlockMesh& whole, const BlockMesh& part);
+
+/// The mesh's points, normals and triangles, copied into VTK arrays.
+vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh);
+
+}  // namespace sculpt::ui
