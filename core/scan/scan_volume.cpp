@@ -173,19 +173,27 @@ ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
     return ScanVolume(impl);
 }
 
+std::vector<double> ScanVolume::histogram(int bins) const
+{
+    const auto [lo, hi] = range();
+    std::vector<double> counts(size_t(std::max(bins, 1)), 0.0);
+    const double scale = hi > lo ? bins / (hi - lo) : 0.0;
+    const openvdb::Coord d = dims();
+    std::vector<float> slice(size_t(d.x()) * size_t(d.y()));
+    for (int k = 0; k < d.z(); ++k) {
+        readSlice(k, slice.data());
+        for (float v : slice) counts[size_t(std::clamp(int((v - lo) * scale), 0, bins - 1))] += 1.0;
+    }
+    return counts;
+}
+
 double ScanVolume::otsuThreshold() const
 {
     const auto [lo, hi] = range();
     if (!(hi > lo))
         throw InputError(source() + ": every sample is " + formatNumber(lo) + ": there is no surface to find");
     constexpr int kBins = 256;
-    std::array<double, kBins> histogram{};
-    const openvdb::Coord d = dims();
-    std::vector<float> slice(size_t(d.x()) * size_t(d.y()));
-    for (int k = 0; k < d.z(); ++k) {
-        readSlice(k, slice.data());
-        for (float v : slice) histogram[size_t(std::clamp(int((v - lo) / (hi - lo) * kBins), 0, kBins - 1))] += 1.0;
-    }
+    const std::vector<double> histogram = this->histogram(kBins);
     double total = 0.0, sumAll = 0.0;
     for (int i = 0; i < kBins; ++i) {
         total += histogram[size_t(i)];

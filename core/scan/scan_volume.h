@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace sculpt {
 
@@ -49,6 +50,8 @@ public:
     /// axis with spacing s < h, a Gaussian of sigma sqrt(h^2 - s^2) / 2 (world units). Nothing
     /// (nullopt) if no axis is finer than h by enough to matter.
     std::optional<ScanVolume> antiAliased(double voxelSizeWorld) const;
+    /// Sample counts in `bins` equal bins spanning range().
+    std::vector<double> histogram(int bins) const;
     /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.
     double otsuThreshold() const;
 

@@ -522,6 +522,41 @@ TEST(SculptUi, TheFollowBrushPullsTheSurfaceUnderItOntoTheTargetAndNothingElse)
         << "mean distance to the box under the brush: " << distanceBefore / nearBefore << " before";
 }
 
+TEST(SculptUi, TheImportPanelPreviewsTheIsoValueLiveAndAppliesTheGridTheCommandLineImports)
+{
+    const char* mri = "/usr/share/mricron/templates/ch2bet.nii.gz";
+    if (!fs::exists(mri)) GTEST_SKIP() << mri << " missing: apt-get install mricron-data";
+    TempDir dir;
+    ASSERT_EQ(runSculpt(std::string("import ") + mri + " --largest-component -o cli.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds();
+    events.report(r).screenshot(dir / "otsu.png");
+    for (int i = 0; i < 8; ++i) events.key("PageUp");
+    events.wait(0.3).report(r).screenshot(dir / "higher.png");
+    events.key("Escape").report(r);  // cancelled: nothing changed
+    events.key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds().key("Enter").untilJobEnds().report(r);
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 5u);
+    const std::string original = reports[0]["checksum"];
+    ASSERT_TRUE(reports[1].contains("import")) << reports[1]["error"];
+    EXPECT_EQ(reports[1]["import"]["iso"], reports[1]["import"]["otsu"]);  // Otsu's by default
+    EXPECT_GT(reports[1]["import"]["preview_triangles"].get<int>(), 10000);
+    EXPECT_EQ(reports[1]["checksum"], original);
+    // Eight steps up by 1% of the range; the preview follows, the document does not.
+    EXPECT_GT(reports[2]["import"]["iso"].get<double>(), reports[1]["import"]["iso"].get<double>());
+    EXPECT_EQ(reports[2]["checksum"], original);
+    EXPECT_FALSE(reports[2]["preview_latencies_ms"].empty());
+    EXPECT_GT(differingShare(readPng(dir / "otsu.png"), readPng(dir / "higher.png")), 0.01);
+    EXPECT_FALSE(reports[3].contains("import"));
+    EXPECT_EQ(reports[3]["checksum"], original);
+    EXPECT_EQ(reports[4]["last_job"], "finished") << reports[4]["error"];
+    EXPECT_EQ(reports[4]["checksum"], checksumOfFile(dir / "cli.vdb"));  // Otsu, largest piece, 1 mm
+    EXPECT_EQ(reports[4]["shells"], 1);
+}
+
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 {
     TempDir dir;

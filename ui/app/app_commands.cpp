@@ -1,10 +1,14 @@
 #include "core/base/errors.h"
+#include "core/base/text_format.h"
+#include "core/field/csg_combine.h"
 #include "core/io/vdb_file.h"
 #include "sculpt/session/morph_run.h"
 #include "sculpt/session/shape_import.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
 
+#include <algorithm>
+#include <chrono>
 #include <iostream>
 
 namespace sculpt::ui {
@@ -14,6 +18,14 @@ namespace fs = std::filesystem;
 namespace {
 
 void toggle(bool& flag) { flag = !flag; }
+
+constexpr double kIsoStep = 0.01;  // of the samples' range, per PageUp/PageDown
+
+void stepImportIso(ImportDraft& draft, int direction)
+{
+    const auto [lo, hi] = draft.file().range(draft.options);
+    draft.options.iso = std::clamp(draft.iso() + direction * kIsoStep * (hi - lo), lo, hi);
+}
 
 }  // namespace
 
@@ -78,12 +90,16 @@ void SculptApp::execute(Command command)
     case Command::MorphPlay:
         if (mMorph) mMorph->togglePlay(mWindow.time());
         break;
-    case Command::MorphPrevious:
-        if (mMorph) mMorph->show(mMorph->shown() - 1);
+    case Command::StepUp:
+    case Command::StepDown:
+        if (mMorph) mMorph->show(mMorph->shown() + (command == Command::StepUp ? -1 : 1));
+        else if (mImport && mImport->file().isScan()) stepImportIso(*mImport, command == Command::StepUp ? 1 : -1);
         break;
-    case Command::MorphNext:
-        if (mMorph) mMorph->show(mMorph->shown() + 1);
+    case Command::Import:
+        if (busy()) break;
+        mDialogs.prompt = Dialogs::Prompt::Import, mDialogs.path.clear(), mDialogs.focusField = true;
         break;
+    case Command::ApplyImport: applyImport(); break;
     case Command::MorphKeep:
         if (mMorph) keepMorphFrame();
         break;
@@ -127,10 +143,7 @@ void SculptApp::execute(Command command)
     case Command::NextShading: mLook.setShading(Shading((int(mLook.shading()) + 1) % 4)); break;
     case Command::ToggleFlat: mLook.setFlat(!mLook.flat()); break;
     case Command::ToggleWireframe: mLook.setWireframe(!mLook.wireframe()); break;
-    case Command::ToggleScales:
-        mScales.setShown(!mScales.shown());
-        mDisplay.setHidden(mScales.shown());
-        break;
+    case Command::ToggleScales: mScales.setShown(!mScales.shown()); break;
     case Command::ToggleGhost: mGhost.setShown(!mGhost.shown()); break;
     case Command::ToggleTrackball: toggle(mCamera.trackball); break;
     case Command::ToggleHelp: toggle(mDialogs.help); break;
@@ -159,6 +172,7 @@ void SculptApp::answerUnsaved(bool save, bool discard)
         if (mDocument->modified()) return;  // the save failed: the error is shown
     }
     if (*then == Command::Quit) mQuit = true;
+    else if (*then == Command::ApplyImport) applyImport();
     else if (*then == Command::New) mDialogs.prompt = Dialogs::Prompt::New;
     else if (*then == Command::Open)
         mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
@@ -217,6 +231,7 @@ void SculptApp::confirmPrompt()
         case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
         case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph); break;
         case Dialogs::Prompt::Target: startLoadTarget(path); break;
+        case Dialogs::Prompt::Import: startImportRead(path); break;
         case Dialogs::Prompt::MorphExport:
             writeFrames(mMorph->run().frames, path);
             mDialogs.notice = "wrote " + std::to_string(mMorph->count()) + " frames to " + path.string();
@@ -235,7 +250,8 @@ bool SculptApp::busy()
 {
     if (mJob) mDialogs.notice = "wait for " + mJob->label() + " to finish, or press Esc to cancel it";
     else if (mMorph) mDialogs.notice = "the morph's frames are on show: keep one (K) or close them (Esc) first";
-    return mJob || mMorph;
+    else if (mImport) mDialogs.notice = "an import is open: apply it (Enter) or cancel it (Esc) first";
+    return mJob || mMorph || mImport;
 }
 
 void SculptApp::startJob(std::string label, BackgroundJob::Work work, JobLanding land)
@@ -295,6 +311,82 @@ void SculptApp::startLoadTarget(const fs::path& path)
                 "target " + path.filename().string() + " loaded: O is the follow brush, H hides the ghost";
             if (!warnings->empty()) mDialogs.notice += " (" + warnings->front() + ")";
         });
+}
+
+void SculptApp::startImportRead(const fs::path& path)
+{
+    if (busy()) return;
+    auto file = std::make_shared<std::shared_ptr<ImportPreview>>();
+    auto firstMs = std::make_shared<double>(0.0);
+    // Sensible defaults for a printable model: the largest piece only, at the file's resolution.
+    ImportOptions defaults;
+    defaults.largestComponent = true;
+    startJob(
+        "read " + path.filename().string(),
+        [path, file, firstMs, defaults](const Progress&) {
+            *file = std::make_shared<ImportPreview>(path);
+            const auto start = std::chrono::steady_clock::now();
+            FieldImage first = (*file)->surface(defaults);
+            *firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            return first;
+        },
+        [this, file, firstMs, defaults](FieldImage first) {
+            mImport.emplace(*file, std::move(first), *firstMs, defaults);
+            mPreview.set(mImport->preview());
+            const openvdb::CoordBBox box = mImport->preview()->grid().evalActiveVoxelBoundingBox();
+            const auto& xform = mImport->preview()->grid().transform();
+            const openvdb::Vec3d lo = xform.indexToWorld(box.min()), hi = xform.indexToWorld(box.max());
+            mCamera.frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
+            mDialogs.notice = "import " + (*file)->path().filename().string() + ": Enter applies, Esc cancels";
+        });
+}
+
+void SculptApp::syncImportPreview()
+{
+    if (mImport && mImport->refresh()) {
+        mPreview.set(mImport->preview());
+        if (mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
+    }
+    mDisplay.setHidden(mScales.shown() || (mImport && mImport->result == ImportDraft::Result::NewDocument));
+}
+
+void SculptApp::applyImport()
+{
+    if (!mImport || mJob) return;
+    ImportDraft& draft = *mImport;
+    const bool replaces = draft.result == ImportDraft::Result::NewDocument;
+    if (replaces && !guardUnsaved(Command::ApplyImport)) return;
+    ImportOptions options = draft.options;
+    if (!replaces) options.voxelSize = mDocument->session().field().voxelSize();  // the document's lattice
+    const fs::path path = draft.file().path();
+    const ImportDraft::Result result = draft.result;
+    auto base = replaces ? nullptr : std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
+    auto report = std::make_shared<ImportReport>();
+    const std::string label = std::string("import ") + (replaces ? "" : importResultName(result) + std::string(" ")) +
+                              path.filename().string();
+    closeImport();
+    startJob(
+        label,
+        [path, options, result, base, report](const Progress& p) {
+            FieldImage shape = importShape(path, options, *report, p);
+            if (!base) return shape;
+            combine(*base, shape, result == ImportDraft::Result::Union ? CsgOperation::Union : CsgOperation::Difference);
+            return std::move(*base);
+        },
+        [this, replaces, label, report](FieldImage field) {
+            if (replaces) setDocument(std::make_unique<Document>(std::move(field)), true);
+            else mDocument->replaceField(std::move(field), label);
+            mDialogs.notice = label + " done: iso-value " + formatNumber(report->iso) + ", voxel size " +
+                              formatNumber(report->voxelSize) + (replaces ? "" : " (Ctrl+Z undoes it)");
+            if (!report->warnings.empty()) mDialogs.notice += "; " + report->warnings.front();
+        });
+}
+
+void SculptApp::closeImport()
+{
+    mImport.reset();
+    mPreview.set(nullptr);
+    mHoverValid = false;
 }
 
 void SculptApp::keepMorphFrame()

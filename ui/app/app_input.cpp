@@ -29,6 +29,7 @@ void SculptApp::handle(const InputEvent& event)
     if (event.type == EventType::Key) trackModifiers(event);
     feedImGui(event, mHeldMods);
     mLastInput = mWindow.time();
+    mLastEventArrival = arrival(event);
     switch (event.type) {
     case EventType::Resize: mViewport.resize(event.width, event.height); break;
     case EventType::Quit: execute(Command::Quit); break;
@@ -165,6 +166,8 @@ void SculptApp::routeKey(const InputEvent& event)
     }
     if (mJob && event.key == GLFW_KEY_ESCAPE) return cancelJob();
     if (mMorph && event.key == GLFW_KEY_ESCAPE) return closeMorph();
+    if (mImport && event.key == GLFW_KEY_ESCAPE) return closeImport();
+    if (mImport && (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER)) return applyImport();
     Command command;
     if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
 }

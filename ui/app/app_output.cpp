@@ -32,6 +32,7 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::Morph: return "morph";
     case Dialogs::Prompt::MorphExport: return "morph-export";
     case Dialogs::Prompt::Target: return "target";
+    case Dialogs::Prompt::Import: return "import";
     default: return "none";
     }
 }
@@ -95,6 +96,16 @@ void SculptApp::writeReport(const fs::path& path)
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
     r["target"] = mBrush.target.path.string();
+    if (mImport) {
+        r["import"] = {{"file", mImport->file().path().string()},
+                       {"iso", mImport->file().isScan() ? mImport->iso() : 0.0},
+                       {"otsu", mImport->file().isScan() ? mImport->file().otsuThreshold(mImport->options) : 0.0},
+                       {"result", importResultName(mImport->result)},
+                       {"preview_voxel_size", mImport->file().previewVoxelSize()},
+                       {"preview_ms", mImport->previewMs()},
+                       {"problem", mImport->problem()},
+                       {"preview_triangles", mPreview.triangleCount()}};
+    }
     r["morph"] = mMorph ? nlohmann::json{{"frames", mMorph->count()},
                                          {"shown", mMorph->shown()},
                                          {"checksum", formatChecksum(gridChecksum(mMorph->shownField().grid()))},
@@ -105,6 +116,7 @@ void SculptApp::writeReport(const fs::path& path)
     r["frame_ms"] = mStatus.frameMs;
     r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
     r["latencies_ms"] = mMeasures.latencyMs;
+    r["preview_latencies_ms"] = mMeasures.previewLatencyMs;
     r["stamps"] = mMeasures.stamps;
     r["coarse"] = mDisplay.coarse();
     mMeasures = Measures();

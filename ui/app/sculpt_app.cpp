@@ -46,7 +46,8 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path)
 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
-      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()), mGhost(mViewport.renderer()),
+      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()),
+      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPreview(mViewport.renderer(), ShapeStyle::preview()),
       mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport),
       mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
@@ -183,6 +184,7 @@ void SculptApp::frame()
     const IncrementalMesher& shown = mMorph ? mMorph->mesher() : *session.mesher();
     mDisplay.sync(shown, session.field().voxelSize());
     mScales.sync(shown, session.field().voxelSize());
+    syncImportPreview();
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
@@ -212,6 +214,10 @@ void SculptApp::frame()
     const double end = mWindow.time();
     mStatus.frameMs = 1000.0 * (end - now);
     mMeasures.frameMs.push_back(mStatus.frameMs);
+    if (mPreviewPendingSince >= 0.0) {
+        mMeasures.previewLatencyMs.push_back(1000.0 * (end - mPreviewPendingSince));
+        mPreviewPendingSince = -1.0;
+    }
     if (mMeasures.pendingSince >= 0.0) {
         mMeasures.latencyMs.push_back(1000.0 * (end - mMeasures.pendingSince));
         mMeasures.pendingSince = -1.0;
@@ -229,6 +235,7 @@ void SculptApp::drawPanels()
     drawDialogs(*this);
     drawJobPanel(*this);
     drawMorphPanel(*this);
+    drawImportPanel(*this);
     if (mDialogs.help) drawHelpPanel(*this);
     if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.

@@ -8,6 +8,7 @@
 #include "ui/app/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
+#include "ui/document/import_draft.h"
 #include "ui/document/morph_frames.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
@@ -15,7 +16,7 @@
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
-#include "ui/view/ghost_display.h"
+#include "ui/view/shape_display.h"
 #include "ui/view/model_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/surface_look.h"
@@ -68,7 +69,8 @@ struct Dialogs {
         OffsetModel,
         Morph,
         MorphExport,
-        Target
+        Target,
+        Import
     };
     Prompt prompt = Prompt::None;
     std::string path;  ///< the prompt's text field
@@ -113,6 +115,12 @@ public:
     MorphFrames* morphFrames() { return mMorph ? &*mMorph : nullptr; }
     /// Back to the document from the morph's frames.
     void closeMorph();
+    /// The scan or mesh on the Import panel, or nullptr.
+    ImportDraft* importDraft() { return mImport ? &*mImport : nullptr; }
+    /// Imports with the panel's settings as a job; the result becomes the document or joins it.
+    void applyImport();
+    /// Closes the Import panel; the document stays as it was.
+    void closeImport();
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -158,6 +166,10 @@ private:
     void startFilter(const ModelFilter& filter);
     /// Reads the file at `path` as the follow brush's target (and the ghost), as a job.
     void startLoadTarget(const std::filesystem::path& path);
+    /// Reads the scan or mesh at `path` for the Import panel, as a job.
+    void startImportRead(const std::filesystem::path& path);
+    /// The import's preview on screen, the document hidden when the import would replace it.
+    void syncImportPreview();
     /// Starts a morph of a copy of the model into the file at `target` as a background job.
     void startMorph(const std::filesystem::path& target, const MorphOptions& options);
     void keepMorphFrame();
@@ -174,7 +186,8 @@ private:
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
-    GhostDisplay mGhost;
+    ShapeDisplay mGhost;    // the follow target
+    ShapeDisplay mPreview;  // an import's
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;
@@ -191,6 +204,9 @@ private:
     std::unique_ptr<BackgroundJob> mJob;
     JobLanding mLandJob;
     std::optional<MorphFrames> mMorph;
+    std::optional<ImportDraft> mImport;
+    double mLastEventArrival = 0.0;  // when the latest input was due (its replay time, if replayed)
+    double mPreviewPendingSince = -1.0;  // the import's options changed then, the preview not yet on screen
     std::string mLastJob;         // how the last job ended: "finished", "cancelled", "failed"
     double mWaitingSince = -1.0;  // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
@@ -217,7 +233,7 @@ private:
     std::uint64_t mReportVersion = 0;
     /// Figures for reports, since the previous one: frame times, event-to-screen latencies, stamps.
     struct Measures {
-        std::vector<double> frameMs, latencyMs;
+        std::vector<double> frameMs, latencyMs, previewLatencyMs;
         std::size_t stamps = 0;
         double pendingSince = -1.0;  // a stamp not yet on screen: when its event arrived
     };

@@ -161,9 +161,9 @@ void drawMorphPanel(SculptApp& app)
         commandTooltip(int(command));
         ImGui::SameLine();
     };
-    button("<", Command::MorphPrevious);
+    button("<", Command::StepUp);
     button(frames->playing() ? "Pause" : "Play", Command::MorphPlay);
-    button(">", Command::MorphNext);
+    button(">", Command::StepDown);
     button("Keep frame", Command::MorphKeep);
     button("Export frames...", Command::MorphExport);
     if (ImGui::Button("Close (Esc)")) app.closeMorph();
@@ -204,6 +204,8 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::OffsetModel: return filterDialog(app);
     case Dialogs::Prompt::Morph: return morphDialog(app);
     case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
+    case Dialogs::Prompt::Import:
+        return pathDialog(app, "Import", "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory) or a mesh (.obj, .ply, .stl, .off)");
     case Dialogs::Prompt::Target:
         return pathDialog(app, "Load Target",
                           "A document, scan or mesh for the follow brush (O) and the morph, shown as a ghost (H)");

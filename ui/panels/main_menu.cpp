@@ -34,6 +34,7 @@ void drawMainMenu(SculptApp& app)
             }
             ImGui::EndMenu();
         }
+        item(Command::Import, !app.job());
         ImGui::Separator();
         item(Command::Save);
         item(Command::SaveAs);

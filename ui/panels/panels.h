@@ -17,6 +17,9 @@ void drawHelpPanel(SculptApp& app);
 void drawJobPanel(SculptApp& app);
 /// A finished morph's frames: slider, play/pause, step, keep, export, close.
 void drawMorphPanel(SculptApp& app);
+/// The scan or mesh being imported: what it holds, the iso-value over its histogram, crop,
+/// smoothing, cleanup, voxel size and what the result becomes; Apply or Cancel.
+void drawImportPanel(SculptApp& app);
 
 /// A menu item running `command`, its keys shown beside it.
 void commandMenuItem(SculptApp& app, int command, bool enabled = true);

@@ -7,6 +7,7 @@
 #include "core/mesh/field_measures.h"
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
+#include "sculpt/session/import_preview.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
 #include "tests/support/temp_dir.h"
@@ -14,7 +15,9 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <random>
 
 namespace sculpt {
@@ -417,6 +420,59 @@ TEST(StrokeScript, ReplayNamesTheEventThatCannotBeApplied)
                       "s.json: events[0] ('add' stroke): field 'radius' (300) is larger than the model"),
                   std::string::npos)
             << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+const char* kMri = "/usr/share/mricron/templates/ch2bet.nii.gz";
+
+TEST(ImportPreview, AScanPreviewIsTheImportCoarselyAndFollowsTheIsoValue)
+{
+    if (!std::filesystem::exists(kMri)) GTEST_SKIP() << kMri << " missing: apt-get install mricron-data";
+    ImportPreview preview(kMri);
+    ASSERT_TRUE(preview.isScan());
+    const openvdb::Coord d = preview.scan().dims();
+    EXPECT_EQ(preview.defaultVoxelSize(), 1.0);
+    EXPECT_NEAR(preview.previewVoxelSize(), (std::max({d.x(), d.y(), d.z()}) - 1) / 96.0, 1e-9);
+    ImportOptions options;
+    options.largestComponent = true;
+    const std::vector<double>& histogram = preview.histogram(options);
+    double samples = 0.0;
+    for (double count : histogram) samples += count;
+    EXPECT_EQ(samples, double(d.x()) * d.y() * d.z());
+    ImportReport report;
+    const FieldImage full = importShape(kMri, options, report);
+    EXPECT_EQ(preview.otsuThreshold(options), report.iso);  // what the import chose
+    const double fullVolume = measureField(full).volume;
+    const FieldImage coarse = preview.surface(options);
+    EXPECT_DOUBLE_EQ(coarse.voxelSize(), preview.previewVoxelSize());
+    EXPECT_NEAR(measureField(coarse).volume, fullVolume, 0.03 * fullVolume);
+    // A higher iso-value keeps less of the brain; the preview follows.
+    options.iso = report.iso + 0.5 * (preview.range(options).second - report.iso);
+    EXPECT_LT(measureField(preview.surface(options)).volume, 0.9 * fullVolume);
+    // A crop halves the scan along x: its histogram, range and surface are the crop's.
+    options.crop = openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(d.x() / 2, d.y() - 1, d.z() - 1));
+    options.iso.reset();
+    double cropped = 0.0;
+    for (double count : preview.histogram(options)) cropped += count;
+    EXPECT_EQ(cropped, double(d.x() / 2 + 1) * d.y() * d.z());
+    EXPECT_LT(measureField(preview.surface(options)).volume, 0.6 * fullVolume);
+}
+
+TEST(ImportPreview, RefusesWhatTheImportRefusesNamingTheFile)
+{
+    const test::TempDir dir;
+    std::ofstream(dir / "empty.nii") << "not a scan";
+    try {
+        ImportPreview preview(dir / "empty.nii");
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("empty.nii"), std::string::npos) << e.what();
     }
 }
 

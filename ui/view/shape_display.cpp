@@ -1,4 +1,4 @@
-#include "ui/view/ghost_display.h"
+#include "ui/view/shape_display.h"
 
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/block_polydata.h"
@@ -12,21 +12,14 @@
 
 namespace sculpt::ui {
 
-namespace {
+ShapeDisplay::ShapeDisplay(vtkRenderer* renderer, ShapeStyle style) : mRenderer(renderer), mStyle(style) {}
 
-constexpr double kClusterVoxels = 2.0;
-constexpr double kOpacity = 0.3;
-
-}  // namespace
-
-GhostDisplay::GhostDisplay(vtkRenderer* renderer) : mRenderer(renderer) {}
-
-GhostDisplay::~GhostDisplay()
+ShapeDisplay::~ShapeDisplay()
 {
     if (mActor) mRenderer->RemoveActor(mActor);
 }
 
-void GhostDisplay::set(const FieldImage* shape)
+void ShapeDisplay::set(const FieldImage* shape)
 {
     if (mActor) mRenderer->RemoveActor(mActor);
     mActor = nullptr;
@@ -40,24 +33,25 @@ void GhostDisplay::set(const FieldImage* shape)
     whole.positions.assign(welded.positions.begin(), welded.positions.end());
     whole.normals.assign(welded.normals.begin(), welded.normals.end());
     whole.triangles.assign(welded.triangles.begin(), welded.triangles.end());
-    const BlockMesh ghost = clusterBlockMesh(whole, kClusterVoxels * shape->voxelSize());
-    mTriangles = ghost.triangles.size();
+    const BlockMesh shown =
+        mStyle.clusterVoxels > 0.0 ? clusterBlockMesh(whole, mStyle.clusterVoxels * shape->voxelSize()) : whole;
+    mTriangles = shown.triangles.size();
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(polyDataOf(ghost));
+    mapper->SetInputData(polyDataOf(shown));
     mapper->ScalarVisibilityOff();
     mActor = vtkSmartPointer<vtkActor>::New();
     mActor->SetMapper(mapper);
     vtkProperty* look = mActor->GetProperty();
-    look->SetColor(0.45, 0.7, 1.0);
-    look->SetOpacity(kOpacity);
+    look->SetColor(mStyle.red, mStyle.green, mStyle.blue);
+    look->SetOpacity(mStyle.opacity);
     look->SetSpecular(0.0);
-    look->BackfaceCullingOn();
+    look->SetBackfaceCulling(mStyle.opacity < 1.0);
     mActor->SetPickable(false);
     mActor->SetVisibility(mShown);
     mRenderer->AddActor(mActor);
 }
 
-void GhostDisplay::setShown(bool shown)
+void ShapeDisplay::setShown(bool shown)
 {
     mShown = shown;
     if (mActor) mActor->SetVisibility(shown);

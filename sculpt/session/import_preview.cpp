@@ -1,0 +1,85 @@
+#include "sculpt/session/import_preview.h"
+
+#include "core/scan/largest_component.h"
+#include "core/scan/scan_readers.h"
+#include "core/scan/scan_to_level_set.h"
+
+#include <algorithm>
+
+namespace sculpt {
+
+namespace {
+
+/// Longest side of the box the scan's samples span in the world.
+double worldExtent(const ScanVolume& scan)
+{
+    const openvdb::Coord d = scan.dims();
+    openvdb::BBoxd box;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d ijk(corner & 1 ? d.x() - 1 : 0, corner & 2 ? d.y() - 1 : 0, corner & 4 ? d.z() - 1 : 0);
+        box.expand(scan.worldFromIndex().transform(ijk));
+    }
+    return box.extents()[box.maxExtent()];
+}
+
+}  // namespace
+
+ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
+{
+    if (isMeshPath(path)) {
+        mMesh = readMesh(path);
+        mMeshReport = inspectMesh(*mMesh);
+        mDefaultVoxelSize = voxelSizeFor(*mMesh);
+        mPreviewVoxelSize = voxelSizeFor(*mMesh, kPreviewVoxelsAcross);
+        return;
+    }
+    mScan = readScan(path);
+    mDefaultVoxelSize = nativeVoxelSize(*mScan);
+    mPreviewVoxelSize = std::max(mDefaultVoxelSize, worldExtent(*mScan) / kPreviewVoxelsAcross);
+}
+
+void ImportPreview::prepare(const ImportOptions& options)
+{
+    if (mPrepared.kept && mPrepared.crop == options.crop && mPrepared.smoothSigma == options.smoothSigma) return;
+    Prepared next;
+    next.crop = options.crop;
+    next.smoothSigma = options.smoothSigma;
+    next.kept = options.crop ? mScan->cropped(*options.crop) : *mScan;
+    if (options.smoothSigma > 0.0) next.kept = next.kept->smoothed(options.smoothSigma);
+    next.histogram = next.kept->histogram(kHistogramBins);
+    next.otsu = next.kept->otsuThreshold();
+    next.filtered = next.kept->antiAliased(mPreviewVoxelSize);
+    if (!next.filtered) next.filtered = next.kept;
+    mPrepared = std::move(next);
+}
+
+const std::vector<double>& ImportPreview::histogram(const ImportOptions& options)
+{
+    prepare(options);
+    return mPrepared.histogram;
+}
+
+double ImportPreview::otsuThreshold(const ImportOptions& options)
+{
+    prepare(options);
+    return mPrepared.otsu;
+}
+
+std::pair<double, double> ImportPreview::range(const ImportOptions& options)
+{
+    prepare(options);
+    return mPrepared.kept->range();
+}
+
+FieldImage ImportPreview::surface(const ImportOptions& options)
+{
+    FieldImage field = [&] {
+        if (mMesh) return meshToField(*mMesh, mPreviewVoxelSize);
+        prepare(options);
+        return scanToLevelSet(*mPrepared.filtered, options.iso.value_or(mPrepared.otsu), mPreviewVoxelSize);
+    }();
+    if (options.largestComponent) keepLargestComponent(field);
+    return field;
+}
+
+}  // namespace sculpt

@@ -1,0 +1,170 @@
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr float kPanelWidth = 340.f;
+constexpr int kShownBins = 64;  // of the 256 counted: integer-valued scans leave every other bin empty
+
+void scanFacts(const ScanVolume& scan)
+{
+    const openvdb::Coord d = scan.dims();
+    ImGui::Text("%d x %d x %d samples", d.x(), d.y(), d.z());
+    ImGui::Text("spacing %.4g x %.4g x %.4g", scan.spacing(0), scan.spacing(1), scan.spacing(2));
+    const openvdb::Mat4d& m = scan.worldFromIndex();
+    bool aligned = true;  // the index axes along the world's, each scaled by its spacing
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) aligned &= r == c ? m(c, r) > 0.0 : m(c, r) == 0.0;
+    if (aligned) ImGui::Text("axis-aligned, origin %.4g, %.4g, %.4g", m(3, 0), m(3, 1), m(3, 2));
+    else ImGui::Text("oblique, origin %.4g, %.4g, %.4g", m(3, 0), m(3, 1), m(3, 2));
+    const auto [lo, hi] = scan.range();
+    ImGui::Text("values %.4g .. %.4g", lo, hi);
+}
+
+/// The histogram (log counts: the background's bin dwarfs tissue's) with Otsu's threshold (red)
+/// and the iso-value (white) marked.
+void histogramPlot(ImportDraft& draft)
+{
+    const std::vector<double>& counts = draft.file().histogram(draft.options);
+    std::vector<double> merged(kShownBins, 0.0);
+    for (std::size_t i = 0; i < counts.size(); ++i) merged[i * kShownBins / counts.size()] += counts[i];
+    std::vector<float> heights(merged.size());
+    std::transform(merged.begin(), merged.end(), heights.begin(), [](double c) { return float(std::log1p(c)); });
+    const ImVec2 size(kPanelWidth - 20.f, 70.f);
+    ImGui::PlotHistogram("##histogram", heights.data(), int(heights.size()), 0, nullptr, 0.f, FLT_MAX, size);
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    const auto [first, last] = draft.file().range(draft.options);
+    const auto mark = [&](double value, ImU32 colour) {
+        const float x = lo.x + float((value - first) / (last - first)) * (hi.x - lo.x);
+        ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), colour, 2.f);
+    };
+    mark(draft.file().otsuThreshold(draft.options), IM_COL32(255, 90, 80, 255));
+    mark(draft.iso(), IM_COL32(255, 255, 255, 255));
+}
+
+void isoControls(ImportDraft& draft)
+{
+    const auto [lo, hi] = draft.file().range(draft.options);
+    float iso = float(draft.iso());
+    ImGui::SetNextItemWidth(200.f);
+    if (ImGui::SliderFloat("iso-value", &iso, float(lo), float(hi), "%.4g")) draft.options.iso = iso;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Inside is where samples exceed it (PageUp/PageDown step it)");
+    ImGui::SameLine();
+    if (ImGui::Button(draft.options.iso ? "Otsu" : "Otsu *")) draft.options.iso.reset();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Otsu's threshold (red): the value splitting the histogram best in two");
+}
+
+void cropControls(ImportDraft& draft)
+{
+    const openvdb::Coord d = draft.file().scan().dims();
+    bool crop = draft.options.crop.has_value();
+    if (ImGui::Checkbox("crop", &crop)) {
+        if (crop) draft.options.crop = openvdb::CoordBBox(openvdb::Coord(0), d - openvdb::Coord(1));
+        else draft.options.crop.reset();
+    }
+    if (!draft.options.crop) return;
+    openvdb::CoordBBox& box = *draft.options.crop;
+    int from[3] = {box.min().x(), box.min().y(), box.min().z()}, to[3] = {box.max().x(), box.max().y(), box.max().z()};
+    ImGui::SetNextItemWidth(200.f);
+    const bool a = ImGui::InputInt3("from", from);
+    ImGui::SetNextItemWidth(200.f);
+    const bool b = ImGui::InputInt3("to", to);
+    if (!a && !b) return;
+    for (int k = 0; k < 3; ++k) {
+        from[k] = std::clamp(from[k], 0, d[k] - 1);
+        to[k] = std::clamp(to[k], from[k], d[k] - 1);
+    }
+    box = openvdb::CoordBBox(openvdb::Coord(from[0], from[1], from[2]), openvdb::Coord(to[0], to[1], to[2]));
+}
+
+void scanControls(ImportDraft& draft)
+{
+    scanFacts(draft.file().scan());
+    histogramPlot(draft);
+    isoControls(draft);
+    cropControls(draft);
+    float sigma = float(draft.options.smoothSigma);
+    ImGui::SetNextItemWidth(120.f);
+    if (ImGui::InputFloat("smoothing sigma", &sigma, 0.f, 0.f, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue))
+        draft.options.smoothSigma = std::max(0.f, sigma);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gaussian pre-smoothing of noisy scans, world units (0: none)");
+}
+
+void meshFacts(const ImportDraft& draft)
+{
+    const MeshImportReport& mesh = draft.file().meshReport();
+    ImGui::Text("%zu triangles", mesh.triangles);
+    if (!mesh.closed()) {
+        ImGui::PushTextWrapPos(kPanelWidth - 10.f);
+        ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f),
+                           "not closed: %zu open edges, %zu non-manifold; inside and outside are guessed where it is "
+                           "open",
+                           mesh.boundaryEdges, mesh.nonManifoldEdges);
+        ImGui::PopTextWrapPos();
+    }
+}
+
+void resultControls(SculptApp& app, ImportDraft& draft)
+{
+    ImGui::Checkbox("largest piece only", &draft.options.largestComponent);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drop islands and fill closed cavities: one printable solid");
+    int result = int(draft.result);
+    ImGui::RadioButton("new document", &result, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("union", &result, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("difference", &result, 2);
+    draft.result = ImportDraft::Result(result);
+    const double documentVoxel = app.document().session().field().voxelSize();
+    if (draft.result != ImportDraft::Result::NewDocument) {
+        ImGui::Text("voxel size %.4g (the document's)", documentVoxel);
+        return;
+    }
+    float voxel = float(draft.options.voxelSize.value_or(draft.file().defaultVoxelSize()));
+    ImGui::SetNextItemWidth(120.f);
+    if (ImGui::InputFloat("voxel size", &voxel, 0.f, 0.f, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) && voxel > 0.f)
+        draft.options.voxelSize = voxel;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Of the document made; default: the scan's smallest spacing, or a mesh's longest side / 256");
+}
+
+}  // namespace
+
+void drawImportPanel(SculptApp& app)
+{
+    ImportDraft* draft = app.importDraft();
+    if (!draft) return;
+    // Under the brush palette: the history stays in view on the right.
+    ImGui::SetNextWindowPos(ImVec2(8.f, 312.f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.f), ImGuiCond_Always);
+    ImGui::Begin("Import", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::TextUnformatted(draft->file().path().filename().string().c_str());
+    if (draft->file().isScan()) scanControls(*draft);
+    else meshFacts(*draft);
+    resultControls(app, *draft);
+    ImGui::Separator();
+    if (!draft->problem().empty()) {
+        ImGui::PushTextWrapPos(kPanelWidth - 10.f);
+        ImGui::TextColored(ImVec4(1.f, 0.5f, 0.4f, 1.f), "%s", draft->problem().c_str());
+        ImGui::PopTextWrapPos();
+    } else {
+        ImGui::TextDisabled("preview at voxel size %.3g, made in %.0f ms", draft->file().previewVoxelSize(),
+                            draft->previewMs());
+    }
+    if (ImGui::Button("Apply (Enter)")) app.applyImport();
+    commandTooltip(int(Command::ApplyImport));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel (Esc)")) app.closeImport();
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui

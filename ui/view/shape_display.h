@@ -1,0 +1,46 @@
+#pragma once
+/// @file shape_display.h
+/// @brief A whole shape other than the document, meshed once when it is set and drawn as one
+///        actor: the target as a translucent ghost (what the follow brush and a morph go
+///        towards), an import's preview.
+///
+/// The ghost's vertices are clustered to 2-voxel cells (a ghost needs the shape, not the detail,
+/// and translucency costs pixels on Mesa); it shows front faces only, so it reads as one shell.
+
+#include "core/field/field_image.h"
+
+#include <vtkSmartPointer.h>
+
+class vtkActor;
+class vtkRenderer;
+
+namespace sculpt::ui {
+
+struct ShapeStyle {
+    double red = 1.0, green = 1.0, blue = 1.0;
+    double opacity = 1.0;
+    double clusterVoxels = 0.0;  ///< 0: full detail
+    static ShapeStyle ghost() { return {0.45, 0.7, 1.0, 0.3, 2.0}; }
+    static ShapeStyle preview() { return {0.93, 0.89, 0.8, 1.0, 0.0}; }  // bone
+};
+
+class ShapeDisplay {
+public:
+    ShapeDisplay(vtkRenderer* renderer, ShapeStyle style);
+    ~ShapeDisplay();
+
+    /// Meshes `shape` and shows it (if shown); null removes it.
+    void set(const FieldImage* shape);
+    void setShown(bool shown);
+    bool shown() const { return mShown; }
+    std::size_t triangleCount() const { return mTriangles; }
+
+private:
+    vtkRenderer* mRenderer;
+    ShapeStyle mStyle;
+    vtkSmartPointer<vtkActor> mActor;
+    bool mShown = true;
+    std::size_t mTriangles = 0;
+};
+
+}  // namespace sculpt::ui
