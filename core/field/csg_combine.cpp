@@ -52,6 +52,8 @@ DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& s
 
 CsgOperation csgFromName(const std::string& name) { return enumFromName(kOperationNames, name, "operation"); }
 
+const char* csgName(CsgOperation operation) { return enumName(kOperationNames, operation); }
+
 DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation operation)
 {
     if (sculpt.grid().transform() != shape.grid().transform()) {

@@ -13,6 +13,7 @@ enum class CsgOperation { Union, Difference, Intersection, Replace };
 
 /// "union", "difference", "intersection", "replace". @throws InputError for other names.
 CsgOperation csgFromName(const std::string& name);
+const char* csgName(CsgOperation operation);
 
 /// sculpt = sculpt op shape, both on the same voxels. Union (min) and difference
 /// (max(phi, -phi_shape)) visit only the leaves the shape covers; intersection and replace change

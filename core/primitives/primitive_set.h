@@ -38,6 +38,8 @@ public:
     double field(const openvdb::Vec3d& p, const std::vector<int>& nearby) const;
 
     double iso() const { return mIso; }
+    /// Blends through the neighbours graph (else sums every primitive).
+    bool usesGraph() const { return mUseGraph; }
     const std::vector<Primitive>& primitives() const { return mPrimitives; }
     /// World box of primitive i's influence: its skeleton grown by its radius.
     openvdb::BBoxd influence(int i) const;

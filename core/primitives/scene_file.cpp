@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -126,6 +127,73 @@ Scene parseScene(const std::string& text, const std::string& source)
         if (!(*scene.voxelSize > 0.0)) throw InputError(source + ": 'voxel_size' must be positive");
     }
     return scene;
+}
+
+namespace {
+
+json vec3Json(const openvdb::Vec3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json skeletonJson(const Skeleton& s)
+{
+    switch (s.type) {
+    case SkeletonType::Point: return {{"type", "point"}, {"position", vec3Json(s.points[0])}};
+    case SkeletonType::Segment:
+        return {{"type", "segment"}, {"from", vec3Json(s.points[0])}, {"to", vec3Json(s.points[1])}};
+    case SkeletonType::Triangle:
+        return {{"type", "triangle"},
+                {"points", json::array({vec3Json(s.points[0]), vec3Json(s.points[1]), vec3Json(s.points[2])})}};
+    case SkeletonType::Box: {
+        json j = {{"type", "box"}, {"center", vec3Json(s.points[0])}, {"half_extents", vec3Json(s.halfExtents)}};
+        if (!s.worldFromBox.eq(openvdb::Mat3d::identity())) {
+            // rotationFromDegrees builds Rz Ry Rx: OpenVDB's XYZ order.
+            const openvdb::Vec3d radians = openvdb::math::eulerAngles(s.worldFromBox, openvdb::math::XYZ_ROTATION);
+            j["rotation_degrees"] = vec3Json(radians * (180.0 / M_PI));
+        }
+        return j;
+    }
+    }
+    return {};
+}
+
+/// Each primitive's name, made up ("p3") where a graph needs one and it has none.
+std::vector<std::string> namesFor(const PrimitiveSet& set)
+{
+    std::vector<std::string> names;
+    for (const Primitive& p : set.primitives()) names.push_back(p.name);
+    if (!set.usesGraph()) return names;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (!names[i].empty()) continue;
+        std::string name = "p" + std::to_string(i);
+        while (std::find(names.begin(), names.end(), name) != names.end()) name += "_";
+        names[i] = name;
+    }
+    return names;
+}
+
+}  // namespace
+
+std::string writeScene(const Scene& scene)
+{
+    const PrimitiveSet& set = scene.primitives;
+    const std::vector<std::string> names = namesFor(set);
+    json primitives = json::array();
+    for (std::size_t i = 0; i < set.primitives().size(); ++i) {
+        const Primitive& p = set.primitives()[i];
+        json j = {{"kernel", kernelName(p.kernel.type)},
+                  {"radius", p.kernel.radius},
+                  {"strength", p.kernel.strength},
+                  {"skeleton", skeletonJson(p.skeleton)}};
+        if (!names[i].empty()) j["name"] = names[i];
+        if (set.usesGraph()) {
+            json neighbours = json::array();
+            for (int n : p.neighbours) neighbours.push_back(names[std::size_t(n)]);
+            j["neighbours"] = std::move(neighbours);
+        }
+        primitives.push_back(std::move(j));
+    }
+    json root = {{"iso", set.iso()}, {"operation", csgName(scene.operation)}, {"primitives", std::move(primitives)}};
+    if (scene.voxelSize) root["voxel_size"] = *scene.voxelSize;
+    return root.dump(1) + "\n";
 }
 
 Scene readScene(const std::filesystem::path& path)

@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace sculpt {
 
@@ -30,5 +31,10 @@ Scene parseScene(const std::string& text, const std::string& source);
 
 /// Reads and parses a scene file. @throws InputError as parseScene, or if unreadable.
 Scene readScene(const std::filesystem::path& path);
+
+/// The scene as JSON text that parseScene reads back to the same primitives, numbers exactly
+/// (box rotations to within rounding). Unnamed primitives a neighbours graph refers to are
+/// named "p<index>".
+std::string writeScene(const Scene& scene);
 
 }  // namespace sculpt

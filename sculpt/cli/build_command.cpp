@@ -1,15 +1,12 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
-#include "core/field/csg_combine.h"
 #include "core/io/vdb_file.h"
-#include "core/local/speck_removal.h"
-#include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
-#include "sculpt/session/model_filter.h"
+#include "sculpt/session/scene_bake.h"
 
 #include <CLI/CLI.hpp>
 
@@ -30,18 +27,9 @@ void runBuild(const BuildOptions& o)
     AtomicFile::checkTarget(o.output);
     checkMeshOutput(o.mesh);
     const Scene scene = readScene(o.scene);
-    FieldImage result = [&] {
-        if (!o.base.empty()) {
-            FieldImage base = readFieldImage(o.base);
-            const FieldImage shape = rasterizePrimitives(scene.primitives, base.grid().transform());
-            combine(base, shape, scene.operation);
-            return base;
-        }
-        const double h = o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5);
-        return rasterizePrimitives(scene.primitives, *openvdb::math::Transform::createLinearTransform(h));
-    }();
-    removeSpecks(result);
-    refuseEmptyResult(result, o.scene, o.base.empty() ? "the scene" : "combining the scene into " + o.base);
+    const FieldImage result =
+        o.base.empty() ? bakeScene(scene, o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5), o.scene)
+                       : bakeScene(readFieldImage(o.base), scene, o.scene, o.base);
     writeFieldImage(result, o.output);
     std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
               << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()

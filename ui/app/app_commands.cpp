@@ -370,7 +370,8 @@ void SculptApp::applyImport()
         [path, options, result, base, report](const Progress& p) {
             FieldImage shape = importShape(path, options, *report, p);
             if (!base) return shape;
-            combine(*base, shape, result == ImportDraft::Result::Union ? CsgOperation::Union : CsgOperation::Difference);
+            combine(*base, shape,
+                    result == ImportDraft::Result::Union ? CsgOperation::Union : CsgOperation::Difference);
             return std::move(*base);
         },
         [this, replaces, label, report](FieldImage field) {

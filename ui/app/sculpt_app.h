@@ -16,9 +16,9 @@
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
-#include "ui/view/shape_display.h"
 #include "ui/view/model_display.h"
 #include "ui/view/scales_display.h"
+#include "ui/view/shape_display.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/symmetry_planes.h"
 #include "ui/view/viewport.h"
@@ -205,10 +205,10 @@ private:
     JobLanding mLandJob;
     std::optional<MorphFrames> mMorph;
     std::optional<ImportDraft> mImport;
-    double mLastEventArrival = 0.0;  // when the latest input was due (its replay time, if replayed)
+    double mLastEventArrival = 0.0;      // when the latest input was due (its replay time, if replayed)
     double mPreviewPendingSince = -1.0;  // the import's options changed then, the preview not yet on screen
-    std::string mLastJob;         // how the last job ended: "finished", "cancelled", "failed"
-    double mWaitingSince = -1.0;  // a replay waiting for the job (wait event): since when
+    std::string mLastJob;                // how the last job ended: "finished", "cancelled", "failed"
+    double mWaitingSince = -1.0;         // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
 
     // Pointer state.

@@ -205,7 +205,8 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::Morph: return morphDialog(app);
     case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
     case Dialogs::Prompt::Import:
-        return pathDialog(app, "Import", "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory) or a mesh (.obj, .ply, .stl, .off)");
+        return pathDialog(app, "Import",
+                          "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory) or a mesh (.obj, .ply, .stl, .off)");
     case Dialogs::Prompt::Target:
         return pathDialog(app, "Load Target",
                           "A document, scan or mesh for the follow brush (O) and the morph, shown as a ghost (H)");

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/field/csg_combine.h"
+#include "core/field/grid_checksum.h"
 #include "core/mesh/field_measures.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sculpt {
@@ -194,6 +196,43 @@ TEST(SceneFile, ExampleScenesBuild)
         const Scene scene = readScene(std::string(SCULPT_DATA_DIR "/scenes/") + name + ".json");
         const FieldImage field = rasterizePrimitives(scene.primitives, *voxels(scene.voxelSize.value_or(0.5)));
         EXPECT_EQ(measureField(field).components, 1) << name;
+    }
+}
+
+TEST(SceneFile, AWrittenSceneReadsBackToTheSameGrid)
+{
+    // Every skeleton, a rotated box, the chain's neighbours graph with unnamed primitives.
+    const std::string rotated =
+        R"({"iso": 0.4, "operation": "difference", "voxel_size": 0.3, "primitives": [
+        {"kernel": "metaball", "radius": 3, "strength": 0.9, "skeleton": {"type": "segment", "from": [0, 0, 0], "to": [2, 1, 0]}},
+        {"kernel": "blobby-molecule", "radius": 2.5, "skeleton": {"type": "triangle", "points": [[0, 0, 1], [2, 0, 1], [0, 2, 1.5]]}},
+        {"name": "b", "kernel": "soft-object", "radius": 2, "skeleton": {"type": "box", "center": [1, 1, 1],
+         "half_extents": [1, 0.5, 0.25], "rotation_degrees": [30, -20, 75]}}]})";
+    std::vector<Scene> scenes{parseScene(rotated, "rotated")};
+    for (const char* name : {"snowman", "chain", "carved_box", "ear"}) {
+        scenes.push_back(readScene(std::string(SCULPT_DATA_DIR "/scenes/") + name + ".json"));
+    }
+    for (const Scene& scene : scenes) {
+        const Scene back = parseScene(writeScene(scene), "written");
+        EXPECT_EQ(back.operation, scene.operation);
+        EXPECT_EQ(back.voxelSize, scene.voxelSize);
+        EXPECT_EQ(back.primitives.usesGraph(), scene.primitives.usesGraph());
+        ASSERT_EQ(back.primitives.primitives().size(), scene.primitives.primitives().size());
+        for (std::size_t i = 0; i < back.primitives.primitives().size(); ++i) {
+            const Primitive &a = scene.primitives.primitives()[i], &b = back.primitives.primitives()[i];
+            EXPECT_TRUE(a.skeleton.worldFromBox.eq(b.skeleton.worldFromBox, 1e-12)) << i;
+            EXPECT_EQ(a.neighbours, b.neighbours) << i;
+        }
+        const auto xform = voxels(scene.voxelSize.value_or(0.5));
+        const FieldImage original = rasterizePrimitives(scene.primitives, *xform);
+        const FieldImage written = rasterizePrimitives(back.primitives, *xform);
+        const auto& list = scene.primitives.primitives();
+        if (std::all_of(list.begin(), list.end(),
+                        [](const Primitive& p) { return p.skeleton.worldFromBox.eq(openvdb::Mat3d::identity()); })) {
+            EXPECT_EQ(gridChecksum(written.grid()), gridChecksum(original.grid()));  // bit for bit
+        } else {
+            EXPECT_NEAR(measureField(written).volume, measureField(original).volume, 1e-6);
+        }
     }
 }
 
