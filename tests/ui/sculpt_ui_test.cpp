@@ -557,6 +557,47 @@ TEST(SculptUi, TheImportPanelPreviewsTheIsoValueLiveAndAppliesTheGridTheCommandL
     EXPECT_EQ(reports[4]["shells"], 1);
 }
 
+TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheSceneItSaves)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).screenshot(dir / "plain.png");
+    events.move(600, 380).key("A", {"shift"}).move(700, 420).key("A", {"shift"});
+    events.drag(700, 420, 660, 300, 10).screenshot(dir / "xray.png").report(r);  // the second one dragged up
+    events.key("Z", {"alt"}).screenshot(dir / "opaque.png").key("Z", {"alt"});
+    events.key("S", {"ctrl", "alt"}).text("scene.json").key("Enter");
+    events.key("Enter").untilJobEnds().report(r).key("Z", {"ctrl"}).report(r);
+    const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 4u);
+    ASSERT_TRUE(reports[1].contains("primitives")) << reports[1]["error"];
+    EXPECT_EQ(reports[1]["primitives"]["count"], 2);
+    EXPECT_GT(reports[1]["primitives"]["preview_triangles"].get<int>(), 1000);
+    EXPECT_TRUE(reports[1]["xray"].get<bool>());
+    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);  // nothing baked yet
+    const auto plain = readPng(dir / "plain.png"), xray = readPng(dir / "xray.png");
+    EXPECT_GT(differingShare(plain, xray), 0.1);                        // the see-through clay
+    EXPECT_GT(differingShare(xray, readPng(dir / "opaque.png")), 0.1);  // Alt+Z makes it opaque again
+
+    std::ifstream sceneFile(dir / "scene.json");
+    ASSERT_TRUE(sceneFile) << "the scene was not saved";
+    const nlohmann::json scene = nlohmann::json::parse(sceneFile);
+    ASSERT_EQ(scene["primitives"].size(), 2u);
+    EXPECT_GT(scene["primitives"][1]["skeleton"]["position"][1].get<double>(),
+              scene["primitives"][0]["skeleton"]["position"][1].get<double>() + 5.0);  // dragged up
+
+    const CommandResult build = runSculpt("build scene.json --into ball.vdb -o cli.vdb", dir.path());
+    ASSERT_EQ(build.exitCode, 0) << build.err;
+    EXPECT_EQ(reports[2]["last_job"], "finished") << reports[2]["error"];
+    EXPECT_EQ(reports[2]["checksum"], checksumOfFile(dir / "cli.vdb"));
+    EXPECT_GT(reports[2]["volume"].get<double>(), reports[0]["volume"].get<double>() + 100.0);
+    EXPECT_EQ(reports[2]["undo"], 1);
+    EXPECT_EQ(reports[3]["checksum"], reports[0]["checksum"]);
+}
+
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 {
     TempDir dir;

@@ -1,8 +1,10 @@
+#include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/field/csg_combine.h"
 #include "core/io/vdb_file.h"
 #include "sculpt/session/morph_run.h"
+#include "sculpt/session/scene_bake.h"
 #include "sculpt/session/shape_import.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
@@ -100,6 +102,21 @@ void SculptApp::execute(Command command)
         mDialogs.prompt = Dialogs::Prompt::Import, mDialogs.path.clear(), mDialogs.focusField = true;
         break;
     case Command::ApplyImport: applyImport(); break;
+    case Command::AddPrimitive: addPrimitive(SkeletonType::Point); break;
+    case Command::RemovePrimitive:
+        if (mPrimitives) mPrimitives->removeSelected();
+        break;
+    case Command::BakePrimitives: bakePrimitives(); break;
+    case Command::LoadScene:
+        if (mPrimitives || !busy())
+            mDialogs.prompt = Dialogs::Prompt::LoadScene, mDialogs.path.clear(), mDialogs.focusField = true;
+        break;
+    case Command::SaveScene:
+        if (mPrimitives)
+            mDialogs.prompt = Dialogs::Prompt::SaveScene, mDialogs.path = "scene.json", mDialogs.focusField = true;
+        else mDialogs.notice = "no primitives to save: Shift+A adds one";
+        break;
+    case Command::ToggleXRay: mLook.setXRay(!mLook.xray()); break;
     case Command::MorphKeep:
         if (mMorph) keepMorphFrame();
         break;
@@ -232,6 +249,18 @@ void SculptApp::confirmPrompt()
         case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph); break;
         case Dialogs::Prompt::Target: startLoadTarget(path); break;
         case Dialogs::Prompt::Import: startImportRead(path); break;
+        case Dialogs::Prompt::LoadScene: {
+            const Scene scene = readScene(path);  // an error leaves the panel as it was
+            if (!mPrimitives) mPrimitives.emplace(mDocument->session().field().grid().transform().copy());
+            mPrimitives->load(scene);
+            mLook.setXRay(true);
+            mDialogs.notice = "loaded " + path.string() + ": Enter bakes it into the model, Esc discards it";
+            break;
+        }
+        case Dialogs::Prompt::SaveScene:
+            writeFileAtomically(path, writeScene(mPrimitives->scene()));
+            mDialogs.notice = "saved the scene to " + path.string();
+            break;
         case Dialogs::Prompt::MorphExport:
             writeFrames(mMorph->run().frames, path);
             mDialogs.notice = "wrote " + std::to_string(mMorph->count()) + " frames to " + path.string();
@@ -251,7 +280,9 @@ bool SculptApp::busy()
     if (mJob) mDialogs.notice = "wait for " + mJob->label() + " to finish, or press Esc to cancel it";
     else if (mMorph) mDialogs.notice = "the morph's frames are on show: keep one (K) or close them (Esc) first";
     else if (mImport) mDialogs.notice = "an import is open: apply it (Enter) or cancel it (Esc) first";
-    return mJob || mMorph || mImport;
+    else if (mPrimitives)
+        mDialogs.notice = "primitives are being placed: bake them (Enter) or discard them (Esc) first";
+    return mJob || mMorph || mImport || mPrimitives;
 }
 
 void SculptApp::startJob(std::string label, BackgroundJob::Work work, JobLanding land)
@@ -381,6 +412,57 @@ void SculptApp::applyImport()
                               formatNumber(report->voxelSize) + (replaces ? "" : " (Ctrl+Z undoes it)");
             if (!report->warnings.empty()) mDialogs.notice += "; " + report->warnings.front();
         });
+}
+
+void SculptApp::addPrimitive(SkeletonType type)
+{
+    if (!mPrimitives && busy()) return;
+    if (!mPrimitives) {
+        mPrimitives.emplace(mDocument->session().field().grid().transform().copy());
+        mLook.setXRay(true);
+        mDialogs.notice = "click or drag on the surface to place it; Enter bakes, Esc discards";
+    }
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const glm::dvec3 at = hit ? hit->position : mCamera.focalPoint();
+    // A soft object crosses iso 0.5 near half its reach: twice the brush gives a blob its size.
+    mPrimitives->add(type, {at.x, at.y, at.z}, 2.0 * mBrush.radius);
+}
+
+void SculptApp::syncPrimitives()
+{
+    if (mPrimitives && mPrimitives->refresh()) mPrimitivePreview.set(mPrimitives->preview());
+    if (mPrimitives) mSkeletons.show(mPrimitives->primitives, mPrimitives->selected);
+}
+
+void SculptApp::bakePrimitives()
+{
+    if (!mPrimitives || mJob) return;
+    try {
+        // Through the scene file's text: the bake is then `sculpt build` of the scene Save writes.
+        const Scene scene = parseScene(writeScene(mPrimitives->scene()), "the scene");
+        auto base = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
+        const std::string label = "bake " + std::to_string(scene.primitives.primitives().size()) + " primitives";
+        closePrimitives();
+        startJob(
+            label,
+            [base, scene](const Progress&) { return bakeScene(std::move(*base), scene, "the scene", "the model"); },
+            [this, label](FieldImage result) {
+                mDocument->replaceField(std::move(result), label);
+                mDialogs.notice = label + " done (Ctrl+Z undoes it)";
+            });
+    } catch (const InputError& e) {
+        showError(e.what());
+    }
+}
+
+void SculptApp::closePrimitives()
+{
+    mPrimitives.reset();
+    mPrimitivePreview.set(nullptr);
+    mSkeletons.show({}, -1);
+    mLook.setXRay(false);
+    if (mDrag == Drag::Primitive) mDrag = Drag::None;
+    mHoverValid = false;
 }
 
 void SculptApp::closeImport()

@@ -33,6 +33,8 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::MorphExport: return "morph-export";
     case Dialogs::Prompt::Target: return "target";
     case Dialogs::Prompt::Import: return "import";
+    case Dialogs::Prompt::LoadScene: return "load-scene";
+    case Dialogs::Prompt::SaveScene: return "save-scene";
     default: return "none";
     }
 }
@@ -96,6 +98,13 @@ void SculptApp::writeReport(const fs::path& path)
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
     r["target"] = mBrush.target.path.string();
+    r["xray"] = mLook.xray();
+    if (mPrimitives) {
+        r["primitives"] = {{"count", mPrimitives->primitives.size()},
+                           {"selected", mPrimitives->selected},
+                           {"problem", mPrimitives->problem()},
+                           {"preview_triangles", mPrimitivePreview.triangleCount()}};
+    }
     if (mImport) {
         r["import"] = {{"file", mImport->file().path().string()},
                        {"iso", mImport->file().isScan() ? mImport->iso() : 0.0},

@@ -48,6 +48,7 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
       mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()),
       mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPreview(mViewport.renderer(), ShapeStyle::preview()),
+      mPrimitivePreview(mViewport.renderer(), ShapeStyle::primitives()), mSkeletons(mViewport.overlay()),
       mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport),
       mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
@@ -185,6 +186,7 @@ void SculptApp::frame()
     mDisplay.sync(shown, session.field().voxelSize());
     mScales.sync(shown, session.field().voxelSize());
     syncImportPreview();
+    syncPrimitives();
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
@@ -236,6 +238,7 @@ void SculptApp::drawPanels()
     drawJobPanel(*this);
     drawMorphPanel(*this);
     drawImportPanel(*this);
+    drawPrimitivesPanel(*this);
     if (mDialogs.help) drawHelpPanel(*this);
     if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.

@@ -10,6 +10,7 @@
 #include "ui/document/document.h"
 #include "ui/document/import_draft.h"
 #include "ui/document/morph_frames.h"
+#include "ui/document/primitive_draft.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
 #include "ui/jobs/background_job.h"
@@ -19,6 +20,7 @@
 #include "ui/view/model_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/shape_display.h"
+#include "ui/view/skeleton_display.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/symmetry_planes.h"
 #include "ui/view/viewport.h"
@@ -70,7 +72,9 @@ struct Dialogs {
         Morph,
         MorphExport,
         Target,
-        Import
+        Import,
+        LoadScene,
+        SaveScene
     };
     Prompt prompt = Prompt::None;
     std::string path;  ///< the prompt's text field
@@ -121,6 +125,15 @@ public:
     void applyImport();
     /// Closes the Import panel; the document stays as it was.
     void closeImport();
+    /// The primitives being placed (Primitives panel), or nullptr.
+    PrimitiveDraft* primitiveDraft() { return mPrimitives ? &*mPrimitives : nullptr; }
+    /// Adds a primitive of `type` where the pointer is on the surface (else at the view's centre),
+    /// opening the Primitives panel.
+    void addPrimitive(SkeletonType type);
+    /// Bakes the panel's primitives into the model as a job (one undo step), closing the panel.
+    void bakePrimitives();
+    /// Closes the Primitives panel, its primitives discarded.
+    void closePrimitives();
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -170,6 +183,8 @@ private:
     void startImportRead(const std::filesystem::path& path);
     /// The import's preview on screen, the document hidden when the import would replace it.
     void syncImportPreview();
+    /// The primitives' skeletons and blended surface on screen, the clay see-through.
+    void syncPrimitives();
     /// Starts a morph of a copy of the model into the file at `target` as a background job.
     void startMorph(const std::filesystem::path& target, const MorphOptions& options);
     void keepMorphFrame();
@@ -188,6 +203,8 @@ private:
     ScalesDisplay mScales;
     ShapeDisplay mGhost;    // the follow target
     ShapeDisplay mPreview;  // an import's
+    ShapeDisplay mPrimitivePreview;
+    SkeletonDisplay mSkeletons;
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;
@@ -205,6 +222,7 @@ private:
     JobLanding mLandJob;
     std::optional<MorphFrames> mMorph;
     std::optional<ImportDraft> mImport;
+    std::optional<PrimitiveDraft> mPrimitives;
     double mLastEventArrival = 0.0;      // when the latest input was due (its replay time, if replayed)
     double mPreviewPendingSince = -1.0;  // the import's options changed then, the preview not yet on screen
     std::string mLastJob;                // how the last job ended: "finished", "cancelled", "failed"
@@ -217,7 +235,7 @@ private:
     int mHeldMods = 0;    // modifier keys held down
     int mStrokeMods = 0;  // the modifiers the current stroke began with
     std::string mTitle;
-    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength };
+    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Primitive };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     std::optional<SurfaceHit> mHover;

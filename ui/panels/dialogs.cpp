@@ -204,6 +204,9 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::OffsetModel: return filterDialog(app);
     case Dialogs::Prompt::Morph: return morphDialog(app);
     case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
+    case Dialogs::Prompt::LoadScene:
+        return pathDialog(app, "Load Scene", "A primitive scene (.json) to place and bake");
+    case Dialogs::Prompt::SaveScene: return pathDialog(app, "Save Scene", "A .json scene file for `sculpt build`");
     case Dialogs::Prompt::Import:
         return pathDialog(app, "Import",
                           "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory) or a mesh (.obj, .ply, .stl, .off)");

@@ -51,6 +51,15 @@ void drawMainMenu(SculptApp& app)
         item(Command::Redo, !app.job() && app.document().session().history().redoCount() > 0);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Primitives")) {
+        item(Command::AddPrimitive, !app.job());
+        item(Command::RemovePrimitive, app.primitiveDraft() != nullptr);
+        item(Command::BakePrimitives, app.primitiveDraft() != nullptr && !app.job());
+        ImGui::Separator();
+        item(Command::LoadScene, !app.job());
+        item(Command::SaveScene, app.primitiveDraft() != nullptr);
+        ImGui::EndMenu();
+    }
     if (ImGui::BeginMenu("Filters")) {
         item(Command::SmoothModel, !app.job());
         item(Command::OffsetModel, !app.job());
@@ -70,6 +79,8 @@ void drawMainMenu(SculptApp& app)
             app.execute(Command::ToggleWireframe);
         if (ImGui::MenuItem("Scales", shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
             app.execute(Command::ToggleScales);
+        if (ImGui::MenuItem("X-Ray", shortcutText(Command::ToggleXRay).c_str(), app.look().xray()))
+            app.execute(Command::ToggleXRay);
         if (ImGui::MenuItem("Target Ghost", shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
                             bool(app.brush().target.shape)))
             app.execute(Command::ToggleGhost);

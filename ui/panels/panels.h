@@ -20,6 +20,9 @@ void drawMorphPanel(SculptApp& app);
 /// The scan or mesh being imported: what it holds, the iso-value over its histogram, crop,
 /// smoothing, cleanup, voxel size and what the result becomes; Apply or Cancel.
 void drawImportPanel(SculptApp& app);
+/// The primitives being placed: their list, the selected one's skeleton and kernel, the scene's
+/// iso-value and operation; Bake, Load and Save.
+void drawPrimitivesPanel(SculptApp& app);
 
 /// A menu item running `command`, its keys shown beside it.
 void commandMenuItem(SculptApp& app, int command, bool enabled = true);

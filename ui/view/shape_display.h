@@ -21,7 +21,8 @@ struct ShapeStyle {
     double opacity = 1.0;
     double clusterVoxels = 0.0;  ///< 0: full detail
     static ShapeStyle ghost() { return {0.45, 0.7, 1.0, 0.3, 2.0}; }
-    static ShapeStyle preview() { return {0.93, 0.89, 0.8, 1.0, 0.0}; }  // bone
+    static ShapeStyle preview() { return {0.93, 0.89, 0.8, 1.0, 0.0}; }     // bone
+    static ShapeStyle primitives() { return {0.55, 0.9, 0.6, 0.55, 0.0}; }  // what a bake adds
 };
 
 class ShapeDisplay {

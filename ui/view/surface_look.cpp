@@ -38,7 +38,7 @@ std::string matcapImpl(bool wireframe)
     return std::string("//VTK::Light::Impl\n  if (matcapOn == 1) {\n"
                        "    vec3 matcap = matcapColour(normalVCVSOutput);\n") +
            (wireframe ? "    matcap = mix(matcap, vec3(0.08, 0.08, 0.1), emix);\n" : "") +
-           "    gl_FragData[0] = vec4(matcap, 1.0);\n  }\n";
+           "    gl_FragData[0] = vec4(matcap, opacity);\n  }\n";
 }
 
 struct Matcap {
@@ -93,6 +93,13 @@ void SurfaceLook::setFlat(bool flat)
     mFlat = flat;
     if (flat) mProperty->SetInterpolationToFlat();
     else mProperty->SetInterpolationToGouraud();
+}
+
+void SurfaceLook::setXRay(bool xray)
+{
+    constexpr double kXRayOpacity = 0.3;
+    mXRay = xray;
+    mProperty->SetOpacity(xray ? kXRayOpacity : 1.0);
 }
 
 void SurfaceLook::setWireframe(bool wireframe)

@@ -28,6 +28,9 @@ public:
     bool flat() const { return mFlat; }
     void setWireframe(bool wireframe);
     bool wireframe() const { return mWireframe; }
+    /// See-through clay (Blender's X-ray): what lies inside shows, the skeletons of primitives.
+    void setXRay(bool xray);
+    bool xray() const { return mXRay; }
 
     /// Gives an actor the shared look.
     void apply(vtkActor* actor) const;
@@ -38,6 +41,7 @@ private:
     Shading mShading = Shading::Clay;
     bool mFlat = false;
     bool mWireframe = false;
+    bool mXRay = false;
 };
 
 }  // namespace sculpt::ui
