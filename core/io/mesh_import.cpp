@@ -17,6 +17,7 @@
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -173,7 +174,26 @@ double voxelSizeFor(const TriangleMesh& mesh, double voxelsAcross)
     return longest > 0.0 ? longest / voxelsAcross : 1.0;
 }
 
-FieldImage meshToField(const TriangleMesh& mesh, double h)
+namespace {
+
+/// OpenVDB's interrupter asking our Progress: MeshToVolume checks it between its passes and
+/// inside its parallel loops (from several threads: hence the atomics).
+struct ProgressInterrupter : openvdb::util::NullInterrupter {
+    explicit ProgressInterrupter(const Progress& p) : progress(p) {}
+    bool wasInterrupted(int percent = -1) override
+    {
+        if (percent >= 0) fraction = percent / 100.0;
+        if (!stopped && progress && !progress(fraction)) stopped = true;
+        return stopped;
+    }
+    const Progress& progress;
+    std::atomic<double> fraction{0.0};
+    std::atomic<bool> stopped{false};
+};
+
+}  // namespace
+
+FieldImage meshToField(const TriangleMesh& mesh, double h, const Progress& progress)
 {
     if (!(h > 0.0) || !std::isfinite(h))
         throw InputError("voxel size must be a positive number (got " + formatNumber(h) + ")");
@@ -192,7 +212,10 @@ FieldImage meshToField(const TriangleMesh& mesh, double h)
     requireMemory(area / (h * h) * 2.0 * halfWidth * 8.0, "the mesh at voxel size " + formatNumber(h));
     auto xform = openvdb::math::Transform::createLinearTransform(h);
     std::vector<openvdb::Vec4I> quads;
-    auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, points, triangles, quads, float(halfWidth));
+    ProgressInterrupter interrupter(progress);
+    auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(interrupter, *xform, points, triangles, quads,
+                                                                   float(halfWidth));
+    if (interrupter.stopped) throw Cancelled();
     if (grid->activeVoxelCount() == 0)
         throw InputError("the mesh produced no surface at voxel size " + formatNumber(h));
     return FieldImage(grid);

@@ -10,6 +10,7 @@
 /// open so the caller can warn. Conversion: openvdb::tools::meshToLevelSet (exact distances to
 /// the triangles in the band).
 
+#include "core/base/progress.h"
 #include "core/field/field_image.h"
 #include "core/mesh/triangle_mesh.h"
 
@@ -37,7 +38,8 @@ MeshImportReport inspectMesh(const TriangleMesh& mesh);
 
 /// The mesh as a level set of the given voxel size.
 /// @throws InputError if the voxel size is not positive or the result would not fit in memory.
-FieldImage meshToField(const TriangleMesh& mesh, double voxelSizeWorld);
+/// Cancelled if `progress` says stop.
+FieldImage meshToField(const TriangleMesh& mesh, double voxelSizeWorld, const Progress& progress = {});
 
 /// A voxel size giving about `voxelsAcross` voxels along the mesh's longest side.
 double voxelSizeFor(const TriangleMesh& mesh, double voxelsAcross = 256.0);

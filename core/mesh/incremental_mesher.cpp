@@ -61,7 +61,7 @@ IncrementalMesher::IncrementalMesher(int blockVoxels) : mBlockVoxels(blockVoxels
     BlockMesher::validateBlockSize(blockVoxels);
 }
 
-void IncrementalMesher::rebuild(const FieldImage& field)
+void IncrementalMesher::rebuild(const FieldImage& field, const Progress& progress)
 {
     openvdb::CoordBBox box;
     field.grid().tree().evalLeafBoundingBox(box);
@@ -69,7 +69,7 @@ void IncrementalMesher::rebuild(const FieldImage& field)
     const auto origins = blocksWithLeaves(field.grid().tree(), mBlockVoxels);
     std::map<openvdb::Coord, BlockMesh> previous;
     previous.swap(mBlocks);
-    remesh(field, origins);
+    remesh(field, origins, progress);
     for (const auto& [origin, mesh] : previous) {
         if (!mBlocks.count(origin)) mRemoved[origin] = mVersion;
     }
@@ -85,17 +85,20 @@ std::size_t IncrementalMesher::update(const FieldImage& field, const DirtyRegion
     return origins.size();
 }
 
-void IncrementalMesher::remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins)
+void IncrementalMesher::remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins,
+                               const Progress& progress)
 {
     ++mVersion;
     std::vector<BlockMesh> meshes(origins.size());
     tbb::enumerable_thread_specific<BlockMesher> meshers(mBlockVoxels);
     const auto& grid = field.grid();
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size()), [&](const auto& r) {
-        BlockMesher& mesher = meshers.local();
-        for (size_t i = r.begin(); i < r.end(); ++i) {
-            meshes[i] = mesher.mesh(grid.tree(), grid.transform(), origins[i]);
-        }
+    inBatches(origins.size(), progress, 0.0, 1.0, [&](size_t begin, size_t end) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(begin, end), [&](const auto& r) {
+            BlockMesher& mesher = meshers.local();
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                meshes[i] = mesher.mesh(grid.tree(), grid.transform(), origins[i]);
+            }
+        });
     });
     for (size_t i = 0; i < origins.size(); ++i) {
         const openvdb::Coord& origin = origins[i];

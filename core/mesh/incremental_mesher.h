@@ -10,6 +10,7 @@
 /// tells a viewer which blocks to upload or discard. weldedMesh() joins the blocks into one
 /// closed mesh by their exact global edge keys (Ferley et al., "Practical volumetric sculpting").
 
+#include "core/base/progress.h"
 #include "core/field/dirty_region.h"
 #include "core/field/field_image.h"
 #include "core/mesh/block_mesh.h"
@@ -27,7 +28,8 @@ public:
     explicit IncrementalMesher(int blockVoxels = kDefaultBlockVoxels);
 
     /// Meshes the whole field, replacing every cached block. Cost: linear in the band.
-    void rebuild(const FieldImage& field);
+    /// Cancelled (by `progress`) leaves the mesher to be rebuilt again before use.
+    void rebuild(const FieldImage& field, const Progress& progress = {});
     /// Re-meshes the blocks whose cells or normals read a voxel of a dirty leaf.
     /// @return the number of blocks re-meshed. Cost: linear in the dirty region.
     std::size_t update(const FieldImage& field, const DirtyRegion& dirty);
@@ -53,7 +55,7 @@ public:
     TriangleMesh weldedMesh() const;
 
 private:
-    void remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins);
+    void remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins, const Progress& progress = {});
 
     int mBlockVoxels;
     std::uint64_t mVersion = 0;

@@ -112,7 +112,8 @@ LeafClass classifyLeaf(const PrimitiveSet& set, const std::vector<int>& nearby, 
 
 }  // namespace
 
-FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform, double halfWidthVoxels)
+FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform, double halfWidthVoxels,
+                               const Progress& progress)
 {
     const float background = float(xform.voxelSize()[0] * halfWidthVoxels);
     auto grid = makeLevelSetGrid(xform, background);
@@ -123,12 +124,14 @@ FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Tra
     std::vector<std::unique_ptr<LeafT>> leaves(work.size());
     std::vector<LeafClass> classes(work.size());
     const double margin = background + xform.voxelSize()[0];
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, work.size()), [&](const auto& r) {
-        for (size_t i = r.begin(); i < r.end(); ++i) {
-            classes[i] = classifyLeaf(set, *work[i].second, xform, work[i].first, margin);
-            if (classes[i] == LeafClass::Surface)
-                leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
-        }
+    inBatches(work.size(), progress, 0.0, 0.9, [&](size_t begin, size_t end) {
+        tbb::parallel_for(tbb::blocked_range<size_t>(begin, end), [&](const auto& r) {
+            for (size_t i = r.begin(); i < r.end(); ++i) {
+                classes[i] = classifyLeaf(set, *work[i].second, xform, work[i].first, margin);
+                if (classes[i] == LeafClass::Surface)
+                    leaves[i] = sampleLeaf(set, *work[i].second, xform, work[i].first, background);
+            }
+        });
     });
     for (size_t i = 0; i < work.size(); ++i) {
         if (leaves[i]) grid->tree().addLeaf(leaves[i].release());

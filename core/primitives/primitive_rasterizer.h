@@ -9,6 +9,7 @@
 /// to the surface to first order (exact for a linear field), and one first-order redistancing
 /// sweep of openvdb::tools::LevelSetTracker evens out what the kernels' curvature leaves.
 
+#include "core/base/progress.h"
 #include "core/field/field_image.h"
 #include "core/primitives/primitive_set.h"
 
@@ -18,6 +19,7 @@ namespace sculpt {
 /// Cost: one field evaluation (over nearby primitives) per voxel of the touched leaves.
 /// @throws InputError if the scene would not fit in memory.
 FieldImage rasterizePrimitives(const PrimitiveSet& set, const openvdb::math::Transform& xform,
-                               double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels);
+                               double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels,
+                               const Progress& progress = {});
 
 }  // namespace sculpt

@@ -52,13 +52,15 @@ void keepOnly(openvdb::FloatTree& tree, const openvdb::BoolTree& kept)
 
 }  // namespace
 
-LargestComponentReport keepLargestComponent(FieldImage& field)
+LargestComponentReport keepLargestComponent(FieldImage& field, const Progress& progress)
 {
     openvdb::FloatTree& tree = field.mutableGrid().tree();
     const auto inside = openvdb::tools::sdfInteriorMask(tree);
     LargestComponentReport report;
     if (inside->empty()) return report;
+    sculpt::report(progress, 0.3);
     const openvdb::BoolTree::Ptr solid = filledSolid(*inside, report.cavitiesFilled);
+    sculpt::report(progress, 0.6);
     MaskRegion largest;
     openvdb::Index64 largestVoxels = 0;
     forEachConnectedRegion(*solid, [&](const MaskRegion& piece) {
@@ -69,7 +71,8 @@ LargestComponentReport keepLargestComponent(FieldImage& field)
         }
         ++report.islandsDropped;
     });
-    --report.islandsDropped;  // the largest piece stays
+    --report.islandsDropped;        // the largest piece stays
+    sculpt::report(progress, 0.9);  // the last chance to stop: the field is unchanged so far
     if (report.islandsDropped == 0 && report.cavitiesFilled == 0) return report;
     keepOnly(tree, *largest.tree());
     field.markDirty(field.allLeaves());

@@ -7,6 +7,7 @@
 /// face-connected pieces are the components, and the largest by volume is kept: islands become
 /// outside, pockets inside. Works in place on the field: the only copies are bit masks.
 
+#include "core/base/progress.h"
 #include "core/field/field_image.h"
 
 #include <cstddef>
@@ -19,6 +20,6 @@ struct LargestComponentReport {
 };
 
 /// Keeps the solid piece with the most voxels, its cavities filled.
-LargestComponentReport keepLargestComponent(FieldImage& field);
+LargestComponentReport keepLargestComponent(FieldImage& field, const Progress& progress = {});
 
 }  // namespace sculpt

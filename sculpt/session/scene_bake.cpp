@@ -7,9 +7,11 @@
 
 namespace sculpt {
 
-FieldImage bakeScene(FieldImage base, const Scene& scene, const std::string& source, const std::string& baseName)
+FieldImage bakeScene(FieldImage base, const Scene& scene, const std::string& source, const std::string& baseName,
+                     const Progress& progress)
 {
-    const FieldImage shape = rasterizePrimitives(scene.primitives, base.grid().transform());
+    const FieldImage shape =
+        rasterizePrimitives(scene.primitives, base.grid().transform(), FieldImage::kDefaultHalfWidthVoxels, progress);
     combine(base, shape, scene.operation);
     removeSpecks(base);
     refuseEmptyResult(base, source, "combining the scene into " + baseName);

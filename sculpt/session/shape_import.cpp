@@ -14,7 +14,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report)
+FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report,
+                      const Progress& progress)
 {
     if (options.iso || options.crop || options.smoothSigma > 0.0 || options.raw) {
         throw InputError(input.string() +
@@ -30,7 +31,7 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     }
     report.kind = "mesh";
     report.voxelSize = options.voxelSize.value_or(voxelSizeFor(mesh));
-    return meshToField(mesh, report.voxelSize);
+    return meshToField(mesh, report.voxelSize, progress);
 }
 
 FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,
@@ -58,9 +59,11 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
     if (options.voxelSize && !(*options.voxelSize > 0.0)) {
         throw InputError("the voxel size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
     }
-    FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report)
-                                                         : importScan(input, options, report, progress);
-    if (options.largestComponent) report.pieces = keepLargestComponent(field);
+    // The conversion is most of the work; the cleanup the rest.
+    const Progress converting = scaledProgress(progress, 0.0, options.largestComponent ? 0.8 : 1.0);
+    FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report, converting)
+                                                         : importScan(input, options, report, converting);
+    if (options.largestComponent) report.pieces = keepLargestComponent(field, scaledProgress(progress, 0.8, 1.0));
     if (const std::size_t flipped = removeSpecks(field)) {
         report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +
                                   std::to_string(kMaxSpeckVoxels) + " voxels, too small to keep at this voxel size)");

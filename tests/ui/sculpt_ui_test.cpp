@@ -195,10 +195,11 @@ TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing
     std::ofstream(dir / "corrupt.vdb") << "not a vdb file at all";
     UiEvents events;
     events.drag(560, 380, 700, 380).key("S", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").report(r);
-    events.key("E", {"ctrl"}).key("A", {"ctrl"}).text((dir / "saved.stl").string()).key("Enter");
-    events.key("O", {"ctrl"}).text((dir / "corrupt.vdb").string()).key("Enter").report(r);
+    // Exporting and opening are jobs: the replay waits for each.
+    events.key("E", {"ctrl"}).key("A", {"ctrl"}).text((dir / "saved.stl").string()).key("Enter").untilJobEnds();
+    events.key("O", {"ctrl"}).text((dir / "corrupt.vdb").string()).key("Enter").untilJobEnds().report(r);
     events.key("Enter");  // dismisses the error
-    events.key("O", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").report(r);
+    events.key("O", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").untilJobEnds().report(r);
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto reports = readReports(r);

@@ -2,6 +2,7 @@
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/field/csg_combine.h"
+#include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "sculpt/session/morph_run.h"
 #include "sculpt/session/scene_bake.h"
@@ -230,16 +231,9 @@ void SculptApp::confirmPrompt()
             setDocument(std::make_unique<Document>(Document::create(mDialogs.newShape)), true);
             mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
             break;
-        case Dialogs::Prompt::Open:
-            setDocument(std::make_unique<Document>(Document::open(path)), true);  // the old one stays on failure
-            mRecent.add(path);
-            mDialogs.notice = "opened " + path.string();
-            break;
+        case Dialogs::Prompt::Open: startOpen(path); break;
         case Dialogs::Prompt::SaveAs: saveTo(path); break;
-        case Dialogs::Prompt::ExportMesh:
-            mDocument->exportMesh(path);
-            mDialogs.notice = "exported " + path.string();
-            break;
+        case Dialogs::Prompt::ExportMesh: startExport(path); break;
         case Dialogs::Prompt::SaveStrokes:
             mDocument->saveStrokes(path);
             mDialogs.notice = "saved strokes to " + path.string();
@@ -285,13 +279,6 @@ bool SculptApp::busy()
     return mJob || mMorph || mImport || mPrimitives;
 }
 
-void SculptApp::startJob(std::string label, BackgroundJob::Work work, JobLanding land)
-{
-    mJob = std::make_unique<BackgroundJob>(std::move(label), std::move(work));
-    mLandJob = std::move(land);
-    mDialogs.notice = mJob->label() + "...";
-}
-
 void SculptApp::startFilter(const ModelFilter& filter)
 {
     if (busy()) return;
@@ -299,7 +286,7 @@ void SculptApp::startFilter(const ModelFilter& filter)
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string source = mDocument->path().empty() ? std::string("the model") : mDocument->path().string();
     const std::string label = filterLabel(filter);
-    startJob(
+    startJob<FieldImage>(
         label, [copy, filter, source](const Progress& p) { return applyFilter(std::move(*copy), filter, source, p); },
         [this, label](FieldImage result) {
             mDocument->replaceField(std::move(result), label);
@@ -311,19 +298,45 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 {
     if (busy()) return;
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
-    auto run = std::make_shared<MorphRun>();
     const std::string label = "morph to " + target.filename().string();
-    startJob(
-        label,
-        [copy, run, target, options](const Progress& p) {
-            *run = morphInto(*copy, target, options, p);
-            return run->frames.back();
-        },
-        [this, run, label](FieldImage) {
-            mMorph.emplace(std::move(*run));
+    startJob<MorphRun>(
+        label, [copy, target, options](const Progress& p) { return morphInto(*copy, target, options, p); },
+        [this, label](MorphRun run) {
+            mMorph.emplace(std::move(run));
             const MorphSummary& s = mMorph->run().summary;
             mDialogs.notice = label + ": " + std::to_string(mMorph->count()) + " frames, " +
                               (s.converged ? "converged" : "NOT converged") + " (Space plays, K keeps a frame)";
+        });
+}
+
+void SculptApp::startOpen(const fs::path& path)
+{
+    if (busy()) return;
+    // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
+    startJob<std::unique_ptr<Document>>(
+        "open " + path.filename().string(),
+        [path](const Progress&) { return std::make_unique<Document>(readFieldImage(path), path); },
+        [this, path](std::unique_ptr<Document> document) {
+            setDocument(std::move(document), true);
+            mRecent.add(path);
+            mDialogs.notice = "opened " + path.string();
+        });
+}
+
+void SculptApp::startExport(const fs::path& path)
+{
+    if (busy()) return;
+    meshFormatOf(path);  // refuse an unknown extension before welding
+    // Welded here (the mesher is the UI's), written on the job's thread.
+    auto mesh = std::make_shared<TriangleMesh>(mDocument->session().mesher()->weldedMesh());
+    startJob<std::size_t>(
+        "export " + path.filename().string(),
+        [mesh, path](const Progress&) {
+            writeMesh(*mesh, path);
+            return mesh->triangles.size();
+        },
+        [this, path](std::size_t triangles) {
+            mDialogs.notice = "exported " + path.string() + " (" + std::to_string(triangles) + " triangles)";
         });
 }
 
@@ -331,7 +344,7 @@ void SculptApp::startLoadTarget(const fs::path& path)
 {
     if (busy()) return;
     auto warnings = std::make_shared<std::vector<std::string>>();
-    startJob(
+    startJob<FieldImage>(
         "load target " + path.filename().string(),
         [path, warnings](const Progress& p) { return loadShape(path, std::nullopt, *warnings, p); },
         [this, path, warnings](FieldImage shape) {
@@ -347,28 +360,27 @@ void SculptApp::startLoadTarget(const fs::path& path)
 void SculptApp::startImportRead(const fs::path& path)
 {
     if (busy()) return;
-    auto file = std::make_shared<std::shared_ptr<ImportPreview>>();
-    auto firstMs = std::make_shared<double>(0.0);
-    // Sensible defaults for a printable model: the largest piece only, at the file's resolution.
-    ImportOptions defaults;
-    defaults.largestComponent = true;
-    startJob(
+    startJob<ImportDraft>(
         "read " + path.filename().string(),
-        [path, file, firstMs, defaults](const Progress&) {
-            *file = std::make_shared<ImportPreview>(path);
+        [path](const Progress&) {
+            auto file = std::make_shared<ImportPreview>(path);
+            // Sensible defaults for a printable model: the largest piece only, at the file's resolution.
+            ImportOptions defaults;
+            defaults.largestComponent = true;
             const auto start = std::chrono::steady_clock::now();
-            FieldImage first = (*file)->surface(defaults);
-            *firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-            return first;
+            FieldImage first = file->surface(defaults);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            return ImportDraft(file, std::move(first), ms, defaults);
         },
-        [this, file, firstMs, defaults](FieldImage first) {
-            mImport.emplace(*file, std::move(first), *firstMs, defaults);
+        [this](ImportDraft draft) {
+            mImport.emplace(std::move(draft));
             mPreview.set(mImport->preview());
             const openvdb::CoordBBox box = mImport->preview()->grid().evalActiveVoxelBoundingBox();
             const auto& xform = mImport->preview()->grid().transform();
             const openvdb::Vec3d lo = xform.indexToWorld(box.min()), hi = xform.indexToWorld(box.max());
             mCamera.frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
-            mDialogs.notice = "import " + (*file)->path().filename().string() + ": Enter applies, Esc cancels";
+            mDialogs.notice = "import " + mImport->file().path().filename().string() + ": Enter applies, Esc cancels";
         });
 }
 
@@ -391,26 +403,39 @@ void SculptApp::applyImport()
     if (!replaces) options.voxelSize = mDocument->session().field().voxelSize();  // the document's lattice
     const fs::path path = draft.file().path();
     const ImportDraft::Result result = draft.result;
-    auto base = replaces ? nullptr : std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     auto report = std::make_shared<ImportReport>();
     const std::string label = std::string("import ") + (replaces ? "" : importResultName(result) + std::string(" ")) +
                               path.filename().string();
+    const auto done = [this, label, report, replaces] {
+        mDialogs.notice = label + " done: iso-value " + formatNumber(report->iso) + ", voxel size " +
+                          formatNumber(report->voxelSize) + (replaces ? "" : " (Ctrl+Z undoes it)");
+        if (!report->warnings.empty()) mDialogs.notice += "; " + report->warnings.front();
+    };
     closeImport();
-    startJob(
+    if (replaces) {  // the new document, its mesh too, made on the job's thread
+        startJob<std::unique_ptr<Document>>(
+            label,
+            [path, options, report](const Progress& p) {
+                return std::make_unique<Document>(importShape(path, options, *report, p));
+            },
+            [this, done](std::unique_ptr<Document> document) {
+                setDocument(std::move(document), true);
+                done();
+            });
+        return;
+    }
+    auto base = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
+    startJob<FieldImage>(
         label,
         [path, options, result, base, report](const Progress& p) {
-            FieldImage shape = importShape(path, options, *report, p);
-            if (!base) return shape;
+            const FieldImage shape = importShape(path, options, *report, p);
             combine(*base, shape,
                     result == ImportDraft::Result::Union ? CsgOperation::Union : CsgOperation::Difference);
             return std::move(*base);
         },
-        [this, replaces, label, report](FieldImage field) {
-            if (replaces) setDocument(std::make_unique<Document>(std::move(field)), true);
-            else mDocument->replaceField(std::move(field), label);
-            mDialogs.notice = label + " done: iso-value " + formatNumber(report->iso) + ", voxel size " +
-                              formatNumber(report->voxelSize) + (replaces ? "" : " (Ctrl+Z undoes it)");
-            if (!report->warnings.empty()) mDialogs.notice += "; " + report->warnings.front();
+        [this, label, done](FieldImage field) {
+            mDocument->replaceField(std::move(field), label);
+            done();
         });
 }
 
@@ -443,9 +468,11 @@ void SculptApp::bakePrimitives()
         auto base = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
         const std::string label = "bake " + std::to_string(scene.primitives.primitives().size()) + " primitives";
         closePrimitives();
-        startJob(
+        startJob<FieldImage>(
             label,
-            [base, scene](const Progress&) { return bakeScene(std::move(*base), scene, "the scene", "the model"); },
+            [base, scene](const Progress& p) {
+                return bakeScene(std::move(*base), scene, "the scene", "the model", p);
+            },
             [this, label](FieldImage result) {
                 mDocument->replaceField(std::move(result), label);
                 mDialogs.notice = label + " done (Ctrl+Z undoes it)";
@@ -498,10 +525,10 @@ void SculptApp::pollJob()
 {
     if (!mJob || !mJob->finished()) return;
     const std::unique_ptr<BackgroundJob> job = std::move(mJob);
-    const JobLanding land = std::move(mLandJob);
-    if (std::optional<FieldImage> result = job->takeResult()) {
+    const std::function<void()> land = std::move(mLandJob);
+    if (job->succeeded()) {
         try {
-            land(std::move(*result));
+            land();
         } catch (const InputError& e) {
             showError(e.what());
         }

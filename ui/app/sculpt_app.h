@@ -171,12 +171,16 @@ private:
     void frameModel();
     std::optional<SurfaceHit> pickAt(double x, double y);
     void replayStrokes();
-    /// What lands a finished job's result (the document's new field, the frames, a target).
-    using JobLanding = std::function<void(FieldImage result)>;
-    /// Runs `work` as the background job; `land` takes its result on the UI thread.
-    void startJob(std::string label, BackgroundJob::Work work, JobLanding land);
+    /// Runs `work` (Progress -> Result) as the background job; once it succeeded, `land`
+    /// (Result) takes its result on the UI thread: the document's new field, frames, a target.
+    template <typename Result, typename WorkFn, typename LandFn>
+    void startJob(std::string label, WorkFn work, LandFn land);
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
+    /// Opens the document at `path` as a job; the old one stays if it fails.
+    void startOpen(const std::filesystem::path& path);
+    /// Writes the surface as a mesh file as a job.
+    void startExport(const std::filesystem::path& path);
     /// Reads the file at `path` as the follow brush's target (and the ghost), as a job.
     void startLoadTarget(const std::filesystem::path& path);
     /// Reads the scan or mesh at `path` for the Import panel, as a job.
@@ -219,7 +223,7 @@ private:
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     std::unique_ptr<BackgroundJob> mJob;
-    JobLanding mLandJob;
+    std::function<void()> mLandJob;  // hands the finished job's result to its landing
     std::optional<MorphFrames> mMorph;
     std::optional<ImportDraft> mImport;
     std::optional<PrimitiveDraft> mPrimitives;
@@ -263,5 +267,16 @@ private:
     SurfaceStatistics::Topology mTopology;
     std::uint64_t mFramesDrawn = 0;
 };
+
+template <typename Result, typename WorkFn, typename LandFn>
+void SculptApp::startJob(std::string label, WorkFn work, LandFn land)
+{
+    // Written by the job's thread before it reports finished, read after: no lock needed.
+    auto result = std::make_shared<std::optional<Result>>();
+    mJob = std::make_unique<BackgroundJob>(
+        std::move(label), [result, work = std::move(work)](const Progress& p) { result->emplace(work(p)); });
+    mLandJob = [result, land = std::move(land)] { land(std::move(**result)); };
+    mDialogs.notice = mJob->label() + "...";
+}
 
 }  // namespace sculpt::ui

@@ -23,9 +23,8 @@ void BackgroundJob::run(const Work& work)
         return !mCancel.load();
     };
     try {
-        FieldImage result = work(progress);
-        const std::lock_guard<std::mutex> lock(mMutex);
-        mResult.emplace(std::move(result));
+        work(progress);
+        mSucceeded = true;
     } catch (const Cancelled&) {
         mWasCancelled = true;
     } catch (const InputError& e) {
@@ -37,14 +36,6 @@ void BackgroundJob::run(const Work& work)
     }
     mProgress = 1.0;
     mFinished = true;
-}
-
-std::optional<FieldImage> BackgroundJob::takeResult()
-{
-    const std::lock_guard<std::mutex> lock(mMutex);
-    std::optional<FieldImage> result = std::move(mResult);
-    mResult.reset();
-    return result;
 }
 
 std::string BackgroundJob::error() const

@@ -1,18 +1,17 @@
 #pragma once
 /// @file background_job.h
-/// @brief A long whole-model operation (a filter, a morph) run off the UI thread, so frames
-///        keep coming: it works on its own copy of the model, reports progress through the
-///        engine's Progress callback and stops at the next report after cancel(). The UI polls
-///        it every frame and lands the result as one undo step; a cancelled or failed job leaves
-///        the document exactly as it was.
+/// @brief A long operation (a filter, a morph, an import, opening or exporting) run off the UI
+///        thread, so frames keep coming: it works on its own copies, reports progress through
+///        the engine's Progress callback and stops at the next report after cancel(). The UI
+///        polls it every frame and, once it succeeded, takes what it made (the work keeps its
+///        result where the UI finds it); a cancelled or failed job leaves the document exactly as
+///        it was.
 
 #include "core/base/progress.h"
-#include "core/field/field_image.h"
 
 #include <atomic>
 #include <functional>
 #include <mutex>
-#include <optional>
 #include <string>
 #include <thread>
 
@@ -20,8 +19,8 @@ namespace sculpt::ui {
 
 class BackgroundJob {
 public:
-    /// The work: reads what it captured (its own copies), returns the new model.
-    using Work = std::function<FieldImage(const Progress& progress)>;
+    /// The work: reads what it captured (its own copies) and stores what it makes there too.
+    using Work = std::function<void(const Progress& progress)>;
 
     /// Starts `work` on a thread of its own. `label` names it ("smooth 10") in the UI.
     BackgroundJob(std::string label, Work work);
@@ -38,9 +37,9 @@ public:
     bool cancelRequested() const { return mCancel.load(); }
     bool finished() const { return mFinished.load(); }
 
-    /// Once finished: the result (nullopt if cancelled or failed), taken once.
-    std::optional<FieldImage> takeResult();
-    /// Once finished: why there is no result ("" if cancelled or there is one).
+    /// Once finished: whether the work ran to its end (neither cancelled nor failed).
+    bool succeeded() const { return mSucceeded.load(); }
+    /// Once finished: why it failed ("" if cancelled or it succeeded).
     std::string error() const;
     /// Once finished: whether it stopped because cancel() asked.
     bool cancelled() const { return mWasCancelled.load(); }
@@ -50,9 +49,8 @@ private:
 
     std::string mLabel;
     std::atomic<double> mProgress{0.0};
-    std::atomic<bool> mCancel{false}, mFinished{false}, mWasCancelled{false};
-    mutable std::mutex mMutex;  // guards the result and the error
-    std::optional<FieldImage> mResult;
+    std::atomic<bool> mCancel{false}, mFinished{false}, mWasCancelled{false}, mSucceeded{false};
+    mutable std::mutex mMutex;  // guards the error
     std::string mError;
     std::thread mThread;
 };

@@ -5,7 +5,9 @@
 #include "core/io/mesh_file.h"
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
+#include "tests/support/progress_log.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -94,6 +96,16 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
             EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
         }
     }
+}
+
+TEST(MeshImport, MeshToFieldReportsProgressAndStopsWhenAsked)
+{
+    const TriangleMesh mesh = meshLevelSet(makeSphere(20.0, 0.5));
+    test::ProgressLog log;
+    meshToField(mesh, 0.25, log.callback());
+    EXPECT_GE(log.fractions().size(), 2u);
+    test::ProgressLog stop(0);
+    EXPECT_THROW(meshToField(mesh, 0.25, stop.callback()), Cancelled);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
+#include "tests/support/progress_log.h"
 #include "tests/support/reference_mesher.h"
 
 #include <gtest/gtest.h>
@@ -215,6 +216,22 @@ TEST(IncrementalMesher, AgreesWithVtkFlyingEdges)
         EXPECT_NEAR(test::meshArea(ours), area, 0.005 * area);
         EXPECT_NEAR(test::meshVolume(ours), volume, 0.005 * volume);
     }
+}
+
+TEST(IncrementalMesher, ARebuildReportsProgressToTheEndAndStopsWhenAsked)
+{
+    const FieldImage field = makeSphere(30.0, 0.5);
+    test::ProgressLog log;
+    IncrementalMesher mesher;
+    mesher.rebuild(field, log.callback());
+    EXPECT_GE(log.fractions().size(), 10u);
+    EXPECT_TRUE(log.monotone());
+    EXPECT_EQ(log.fractions().back(), 1.0);
+    EXPECT_EQ(mesher.weldedMesh().triangles.size(), meshLevelSet(field).triangles.size());
+    test::ProgressLog stop(2);
+    IncrementalMesher stopped;
+    EXPECT_THROW(stopped.rebuild(field, stop.callback()), Cancelled);
+    EXPECT_EQ(stop.fractions().size(), 3u);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/primitive_rasterizer.h"
 #include "core/primitives/scene_file.h"
+#include "tests/support/progress_log.h"
 #include "tests/support/surface_stats.h"
 
 #include <gtest/gtest.h>
@@ -234,6 +235,18 @@ TEST(SceneFile, AWrittenSceneReadsBackToTheSameGrid)
             EXPECT_NEAR(measureField(written).volume, measureField(original).volume, 1e-6);
         }
     }
+}
+
+TEST(Rasterizer, ReportsProgressAndStopsWhenAsked)
+{
+    const Scene scene = readScene(SCULPT_DATA_DIR "/scenes/snowman.json");
+    test::ProgressLog log;
+    const FieldImage field = rasterizePrimitives(scene.primitives, *voxels(0.25), 3.0, log.callback());
+    EXPECT_GE(log.fractions().size(), 10u);
+    EXPECT_TRUE(log.monotone());
+    EXPECT_EQ(gridChecksum(field.grid()), gridChecksum(rasterizePrimitives(scene.primitives, *voxels(0.25)).grid()));
+    test::ProgressLog stop(0);
+    EXPECT_THROW(rasterizePrimitives(scene.primitives, *voxels(0.25), 3.0, stop.callback()), Cancelled);
 }
 
 }  // namespace

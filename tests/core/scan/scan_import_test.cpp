@@ -10,6 +10,7 @@
 #include "core/scan/scan_to_level_set.h"
 #include "tests/support/dicom_writer.h"
 #include "tests/support/mesh_checks.h"
+#include "tests/support/progress_log.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -233,7 +234,15 @@ TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
     FieldImage field = scanToLevelSet(readScan(dir / "pieces.mha"), 100.0, 1.0);
     EXPECT_EQ(test::meshTopology(meshLevelSet(field)).eulerCharacteristic(), 8) << "four sphere-like surfaces";
 
-    const LargestComponentReport report = keepLargestComponent(field);
+    // Asked to stop at its last report, it leaves the field as it was.
+    const std::uint64_t before = gridChecksum(field.grid());
+    test::ProgressLog stop(2);
+    EXPECT_THROW(keepLargestComponent(field, stop.callback()), Cancelled);
+    EXPECT_EQ(gridChecksum(field.grid()), before);
+    test::ProgressLog log;
+    const LargestComponentReport report = keepLargestComponent(field, log.callback());
+    EXPECT_EQ(log.fractions().size(), 3u);
+    EXPECT_TRUE(log.monotone());
     EXPECT_EQ(report.islandsDropped, 1u);
     EXPECT_EQ(report.cavitiesFilled, 1u) << "with the island in it";
     const TriangleMesh mesh = meshLevelSet(field);
