@@ -13,7 +13,8 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
                    const Progress& progress)
 {
     MorphRun run;
-    const FieldImage target = loadShape(targetPath, source.voxelSize(), run.warnings);
+    run.target = std::make_shared<const FieldImage>(loadShape(targetPath, source.voxelSize(), run.warnings));
+    const FieldImage& target = *run.target;
     // Every frame is kept: about the larger shape's grid each (plus the morph's own copies).
     const double frameBytes = double(std::max(source.grid().memUsage(), target.grid().memUsage()));
     requireMemory(1.5 * frameBytes * (options.frames + 4),

@@ -8,6 +8,7 @@
 #include "core/motion/morph.h"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,7 +17,8 @@ namespace sculpt {
 struct MorphRun {
     std::vector<FieldImage> frames;  ///< frame 0 is the (aligned) source, the last the result
     MorphSummary summary;
-    std::vector<std::string> warnings;  ///< from reading the target
+    std::vector<std::string> warnings;         ///< from reading the target
+    std::shared_ptr<const FieldImage> target;  ///< as read, at the source's voxel size
 };
 
 /// Morphs `source` into the shape in `targetPath` (a .vdb document, a scan or a mesh, read at the

@@ -373,7 +373,9 @@ TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFr
     EXPECT_EQ(reports[1]["morph"]["shown"], 9);
     EXPECT_TRUE(reports[1]["morph"]["converged"].get<bool>());
     EXPECT_EQ(reports[1]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
-    EXPECT_EQ(reports[1]["checksum"], original);  // frames on show, the document unchanged
+    EXPECT_EQ(reports[1]["checksum"], original);   // frames on show, the document unchanged
+    EXPECT_EQ(reports[1]["target"], "torus.vdb");  // the target, shown as a ghost over the frames
+    EXPECT_GT(reports[1]["ghost_triangles"].get<int>(), 500);
     EXPECT_EQ(reports[2]["morph"]["shown"], 0);
     EXPECT_EQ(reports[2]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0000.vdb"));
     EXPECT_GT(differingShare(readPng(dir / "ball.png"), readPng(dir / "frame3.png")), 0.005);

@@ -301,7 +301,10 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
     const std::string label = "morph to " + target.filename().string();
     startJob<MorphRun>(
         label, [copy, target, options](const Progress& p) { return morphInto(*copy, target, options, p); },
-        [this, label](MorphRun run) {
+        [this, label, target](MorphRun run) {
+            // The target becomes the loaded one: its ghost shows where the frames go.
+            mBrush.target = {target, run.target};
+            mGhost.set(run.target.get());
             mMorph.emplace(std::move(run));
             const MorphSummary& s = mMorph->run().summary;
             mDialogs.notice = label + ": " + std::to_string(mMorph->count()) + " frames, " +

@@ -464,6 +464,35 @@ TEST(ImportPreview, AScanPreviewIsTheImportCoarselyAndFollowsTheIsoValue)
     EXPECT_LT(measureField(preview.surface(options)).volume, 0.6 * fullVolume);
 }
 
+TEST(ImportPreview, AnOpenMeshIsReportedAndPreviewedCoarsely)
+{
+    // A cube of side 20 without its top face: 4 open edges.
+    const test::TempDir dir;
+    {
+        std::ofstream off(dir / "open.off");
+        off << "OFF\n8 5 0\n";
+        for (int i = 0; i < 8; ++i)
+            off << (i & 1 ? 10 : -10) << " " << (i & 2 ? 10 : -10) << " " << (i & 4 ? 10 : -10) << "\n";
+        off << "4 0 2 3 1\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+    }
+    ImportPreview preview(dir / "open.off");
+    ASSERT_FALSE(preview.isScan());
+    EXPECT_FALSE(preview.meshReport().closed());
+    EXPECT_EQ(preview.meshReport().boundaryEdges, 4u);
+    EXPECT_NEAR(preview.defaultVoxelSize(), 20.0 / 256.0, 1e-9);
+    EXPECT_NEAR(preview.previewVoxelSize(), 20.0 / 96.0, 1e-9);
+    const FieldImage coarse = preview.surface({});
+    EXPECT_DOUBLE_EQ(coarse.voxelSize(), preview.previewVoxelSize());
+    // The surface shows where the walls are (inside is only guessed for an open mesh).
+    const openvdb::CoordBBox box = coarse.grid().evalActiveVoxelBoundingBox();
+    const openvdb::Vec3d lo = coarse.grid().transform().indexToWorld(box.min());
+    const openvdb::Vec3d hi = coarse.grid().transform().indexToWorld(box.max());
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(lo[a], -10.0, 4 * coarse.voxelSize());
+        EXPECT_NEAR(hi[a], 10.0, 4 * coarse.voxelSize());
+    }
+}
+
 TEST(ImportPreview, RefusesWhatTheImportRefusesNamingTheFile)
 {
     const test::TempDir dir;
