@@ -104,12 +104,10 @@ void meshFacts(const ImportDraft& draft)
     const MeshImportReport& mesh = draft.file().meshReport();
     ImGui::Text("%zu triangles", mesh.triangles);
     if (!mesh.closed()) {
-        ImGui::PushTextWrapPos(kPanelWidth - 10.f);
-        ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f),
-                           "not closed: %zu open edges, %zu non-manifold; inside and outside are guessed where it is "
-                           "open",
-                           mesh.boundaryEdges, mesh.nonManifoldEdges);
-        ImGui::PopTextWrapPos();
+        warningText("not closed: " + std::to_string(mesh.boundaryEdges) + " open edges, " +
+                        std::to_string(mesh.nonManifoldEdges) +
+                        " non-manifold; inside and outside are guessed where it is open",
+                    kPanelWidth - 20.f);
     }
 }
 
@@ -143,19 +141,14 @@ void drawImportPanel(SculptApp& app)
 {
     ImportDraft* draft = app.importDraft();
     if (!draft) return;
-    // Under the brush palette: the history stays in view on the right.
-    ImGui::SetNextWindowPos(ImVec2(8.f, 312.f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.f), ImGuiCond_Always);
-    ImGui::Begin("Import", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginSidePanel("Import", kPanelWidth);
     ImGui::TextUnformatted(draft->file().path().filename().string().c_str());
     if (draft->file().isScan()) scanControls(*draft);
     else meshFacts(*draft);
     resultControls(app, *draft);
     ImGui::Separator();
     if (!draft->problem().empty()) {
-        ImGui::PushTextWrapPos(kPanelWidth - 10.f);
-        ImGui::TextColored(ImVec4(1.f, 0.5f, 0.4f, 1.f), "%s", draft->problem().c_str());
-        ImGui::PopTextWrapPos();
+        warningText(draft->problem(), kPanelWidth - 20.f);
     } else {
         ImGui::TextDisabled("preview at voxel size %.3g, made in %.0f ms", draft->file().previewVoxelSize(),
                             draft->previewMs());

@@ -3,6 +3,8 @@
 /// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,
 ///        the history, the status bar, the dialogs and the help.
 
+#include <string>
+
 namespace sculpt::ui {
 
 class SculptApp;
@@ -23,6 +25,11 @@ void drawImportPanel(SculptApp& app);
 /// The primitives being placed: their list, the selected one's skeleton and kernel, the scene's
 /// iso-value and operation; Bake, Load and Save.
 void drawPrimitivesPanel(SculptApp& app);
+
+/// A fixed window under the brush palette (the Import and Primitives panels); End() closes it.
+void beginSidePanel(const char* title, float width);
+/// Text in the warning colour, wrapped to `width` pixels.
+void warningText(const std::string& text, float width);
 
 /// A menu item running `command`, its keys shown beside it.
 void commandMenuItem(SculptApp& app, int command, bool enabled = true);

@@ -110,10 +110,7 @@ void drawPrimitivesPanel(SculptApp& app)
 {
     PrimitiveDraft* draft = app.primitiveDraft();
     if (!draft) return;
-    ImGui::SetNextWindowPos(ImVec2(8.f, 312.f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.f), ImGuiCond_Always);
-    ImGui::Begin("Primitives", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginSidePanel("Primitives", kPanelWidth);
     addButtons(app);
     primitiveList(*draft);
     selectedFields(app, *draft);
@@ -125,11 +122,7 @@ void drawPrimitivesPanel(SculptApp& app)
     ImGui::SetNextItemWidth(120.f);
     if (ImGui::Combo("into the model", &operation, kOperations, int(std::size(kOperations))))
         draft->operation = CsgOperation(operation);
-    if (!draft->problem().empty()) {
-        ImGui::PushTextWrapPos(kPanelWidth - 10.f);
-        ImGui::TextColored(ImVec4(1.f, 0.5f, 0.4f, 1.f), "%s", draft->problem().c_str());
-        ImGui::PopTextWrapPos();
-    }
+    if (!draft->problem().empty()) warningText(draft->problem(), kPanelWidth - 20.f);
     ImGui::PushTextWrapPos(kPanelWidth - 10.f);
     ImGui::TextDisabled("click or drag on the surface moves the selected one");
     ImGui::PopTextWrapPos();

@@ -70,7 +70,7 @@ void drawToolPanel(SculptApp& app)
     if (b.tool == BrushTool::Smooth) ImGui::Checkbox("keep volume", &b.keepVolume);
     if (b.tool == BrushTool::Follow) {
         if (b.target.shape) ImGui::Text("target: %s", b.target.path.filename().string().c_str());
-        else ImGui::TextColored(ImVec4(1.f, 0.6f, 0.3f, 1.f), "no target: Ctrl+T loads one");
+        else warningText("no target: Ctrl+T loads one", 200.f);
     }
     ImGui::TextDisabled("Ctrl inverts, Shift smooths");
     ImGui::End();
