@@ -46,13 +46,13 @@ struct SculptSession::LiveStroke {
     StrokeReport report;
 };
 
-SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBudgetBytes)
+SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBudgetBytes, const Progress& meshing)
     : mField(std::move(field)), mHistory(undoBudgetBytes)
 {
     mField.takeDirtyRegion();
     if (liveMesh) {
         mMesher.emplace();
-        mMesher->rebuild(mField);
+        mMesher->rebuild(mField, meshing);
     }
 }
 

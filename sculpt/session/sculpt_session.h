@@ -19,8 +19,10 @@ namespace sculpt {
 class SculptSession {
 public:
     /// @param liveMesh keep an IncrementalMesher up to date after every stamp (the UI does).
+    /// @param meshing reports the first full mesh (Cancelled if it says stop).
     explicit SculptSession(FieldImage field, bool liveMesh = false,
-                           std::size_t undoBudgetBytes = UndoHistory::kDefaultBudgetBytes);
+                           std::size_t undoBudgetBytes = UndoHistory::kDefaultBudgetBytes,
+                           const Progress& meshing = {});
     ~SculptSession();
     SculptSession(SculptSession&&) noexcept;
     SculptSession& operator=(SculptSession&&) noexcept;

@@ -318,7 +318,11 @@ void SculptApp::startOpen(const fs::path& path)
     // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
     startJob<std::unique_ptr<Document>>(
         "open " + path.filename().string(),
-        [path](const Progress&) { return std::make_unique<Document>(readFieldImage(path), path); },
+        [path](const Progress& p) {
+            FieldImage field = readFieldImage(path);
+            report(p, 0.3);  // reading is quick next to meshing
+            return std::make_unique<Document>(std::move(field), path, scaledProgress(p, 0.3, 1.0));
+        },
         [this, path](std::unique_ptr<Document> document) {
             setDocument(std::move(document), true);
             mRecent.add(path);
@@ -419,7 +423,8 @@ void SculptApp::applyImport()
         startJob<std::unique_ptr<Document>>(
             label,
             [path, options, report](const Progress& p) {
-                return std::make_unique<Document>(importShape(path, options, *report, p));
+                FieldImage field = importShape(path, options, *report, scaledProgress(p, 0.0, 0.7));
+                return std::make_unique<Document>(std::move(field), fs::path(), scaledProgress(p, 0.7, 1.0));
             },
             [this, done](std::unique_ptr<Document> document) {
                 setDocument(std::move(document), true);

@@ -24,8 +24,8 @@ std::string strokeLabel(const Stroke& stroke, std::size_t stamps)
 
 }  // namespace
 
-Document::Document(FieldImage field, std::filesystem::path path)
-    : mSession(std::move(field), /*liveMesh=*/true), mPath(std::move(path))
+Document::Document(FieldImage field, std::filesystem::path path, const Progress& meshing)
+    : mSession(std::move(field), /*liveMesh=*/true, UndoHistory::kDefaultBudgetBytes, meshing), mPath(std::move(path))
 {}
 
 Document Document::create(const NewShape& shape)

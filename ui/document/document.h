@@ -23,7 +23,8 @@ inline constexpr const char* kShapeNames[] = {"sphere", "box", "torus"};
 class Document {
 public:
     /// A document of `field`, saved at `path` (empty: untitled).
-    explicit Document(FieldImage field, std::filesystem::path path = {});
+    /// `meshing` reports building its mesh (Cancelled if it says stop).
+    explicit Document(FieldImage field, std::filesystem::path path = {}, const Progress& meshing = {});
 
     /// @throws InputError naming the setting (sizes not positive, too many voxels).
     static Document create(const NewShape& shape);

@@ -141,6 +141,12 @@ void morphDialog(SculptApp& app)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame volumes on the straight line between the two shapes'");
     ImGui::Checkbox("align", &m.align);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("First move the model's centroid onto the target's");
+    float tolerance = float(m.toleranceVoxels);
+    ImGui::SetNextItemWidth(120.f);
+    if (ImGui::InputFloat("tolerance (voxels)", &tolerance, 0.f, 0.f, "%.2f") && tolerance > 0.f)
+        m.toleranceVoxels = tolerance;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Converged once the surface is this close to the target's everywhere it resolves it");
     okOrCancel(app, "Run", entered, !d.path.empty());
 }
 
