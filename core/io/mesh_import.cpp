@@ -65,43 +65,106 @@ TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
     return mesh;
 }
 
-/// OFF: "OFF", then "V F E", V lines "x y z", F lines "n i0 ... i(n-1)" (fanned into triangles).
+/// The words of an OFF file's lines, comments (from '#') dropped, empty lines skipped.
+class OffLines {
+public:
+    OffLines(std::istream& in, const fs::path& path) : mIn(in), mPath(path) {}
+    /// The next line's words; empty at the end of the file.
+    std::vector<std::string> next()
+    {
+        std::string line;
+        while (std::getline(mIn, line)) {
+            line = line.substr(0, line.find('#'));
+            std::istringstream words(line);
+            std::vector<std::string> out;
+            for (std::string w; words >> w;) out.push_back(w);
+            if (!out.empty()) return out;
+        }
+        return {};
+    }
+    /// `word` as a number. @throws InputError naming `what`.
+    double number(const std::string& word, const std::string& what) const
+    {
+        std::size_t used = 0;
+        double value = 0.0;
+        try {
+            value = std::stod(word, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != word.size() || !std::isfinite(value))
+            throw InputError(mPath.string() + ": " + what + " has \"" + word + "\", not a number");
+        return value;
+    }
+
+private:
+    std::istream& mIn;
+    const fs::path& mPath;
+};
+
+/// The header keyword of the OFF family: [ST][C][N]OFF (texture coordinates, colours and normals
+/// follow each vertex's position and are ignored); 4OFF, nOFF and binary files are refused.
+void checkOffKeyword(const std::string& word, const fs::path& path)
+{
+    std::string rest = word;
+    for (const char* prefix : {"ST", "C", "N"}) {
+        if (rest.rfind(prefix, 0) == 0) rest = rest.substr(std::string(prefix).size());
+    }
+    if (rest == "OFF") return;
+    if (rest == "4OFF" || rest == "nOFF")
+        throw InputError(path.string() + ": " + word + " holds points of more than 3 dimensions");
+    throw InputError(path.string() + ": not an OFF file (it must start with OFF, COFF, NOFF or STOFF)");
+}
+
+/// OFF: the keyword, then "V F E", V vertex lines "x y z ...", F face lines "n i0 ... i(n-1) ..."
+/// (fanned into triangles); '#' starts a comment.
 TriangleMesh readOff(const fs::path& path)
 {
     std::ifstream in(path);
     if (!in) throw InputError(path.string() + ": cannot read the mesh");
-    std::string word;
-    in >> word;
-    if (word != "OFF") throw InputError(path.string() + ": not an OFF file (it must start with \"OFF\")");
-    long long vertices = -1, faces = -1, edges = 0;
-    in >> vertices >> faces >> edges;
-    if (!in || vertices < 0 || faces < 0) throw InputError(path.string() + ": corrupt OFF header");
-    // Each vertex takes at least 6 characters of text: refuse counts the file cannot hold.
-    if (double(vertices) * 6.0 > double(fs::file_size(path)) || double(faces) * 6.0 > double(fs::file_size(path))) {
-        throw InputError(path.string() + ": the header claims " + std::to_string(vertices) + " vertices and " +
-                         std::to_string(faces) + " faces, more than the file holds");
+    OffLines lines(in, path);
+    std::vector<std::string> header = lines.next();
+    if (header.empty()) throw InputError(path.string() + ": empty OFF file");
+    checkOffKeyword(header[0], path);
+    if (header.size() > 1 && header[1] == "BINARY") throw InputError(path.string() + ": binary OFF is not supported");
+    header.erase(header.begin());
+    if (header.empty()) header = lines.next();  // the counts on the next line, as usual
+    if (header.size() < 2) throw InputError(path.string() + ": corrupt OFF header (expected vertex and face counts)");
+    const double vertices = lines.number(header[0], "the vertex count"),
+                 faces = lines.number(header[1], "the face count");
+    // Each vertex and face takes at least 6 characters of text: refuse counts the file cannot hold.
+    const double size = double(fs::file_size(path));
+    if (vertices < 0 || faces < 0 || vertices != std::floor(vertices) || faces != std::floor(faces) ||
+        vertices * 6.0 > size || faces * 6.0 > size) {
+        throw InputError(path.string() + ": the header claims " + header[0] + " vertices and " + header[1] +
+                         " faces, which the file cannot hold");
     }
     TriangleMesh mesh;
     mesh.positions.resize(size_t(vertices));
-    for (auto& p : mesh.positions) {
-        if (!(in >> p[0] >> p[1] >> p[2])) throw InputError(path.string() + ": truncated vertex list");
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        const std::vector<std::string> words = lines.next();
+        if (words.size() < 3)
+            throw InputError(path.string() + ": truncated vertex list (vertex " + std::to_string(v) + ")");
+        for (int a = 0; a < 3; ++a)
+            mesh.positions[v][size_t(a)] = float(lines.number(words[size_t(a)], "vertex " + std::to_string(v)));
     }
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    for (long long f = 0; f < faces; ++f) {
-        long long n = 0;
-        if (!(in >> n) || n < 3 || n > vertices)
-            throw InputError(path.string() + ": corrupt face " + std::to_string(f));
-        std::vector<long long> ids(static_cast<size_t>(n));
-        for (auto& id : ids) {
-            if (!(in >> id) || id < 0 || id >= vertices)
-                throw InputError(path.string() + ": face " + std::to_string(f) + " has a bad vertex index");
+    for (long long f = 0; f < (long long)faces; ++f) {
+        const std::vector<std::string> words = lines.next();
+        const std::string what = "face " + std::to_string(f);
+        if (words.empty()) throw InputError(path.string() + ": truncated face list (" + what + ")");
+        const double n = lines.number(words[0], what);
+        if (n < 3 || n != std::floor(n) || double(words.size()) < n + 1)
+            throw InputError(path.string() + ": corrupt " + what + " (a face needs 3 or more vertex indices)");
+        std::vector<std::uint32_t> ids;
+        for (std::size_t k = 1; k <= std::size_t(n); ++k) {
+            const double id = lines.number(words[k], what);
+            if (id < 0 || id >= vertices || id != std::floor(id))
+                throw InputError(path.string() + ": " + what + " has vertex index " + words[k] + ", outside 0.." +
+                                 std::to_string((long long)vertices - 1));
+            ids.push_back(std::uint32_t(id));
         }
-        for (long long k = 1; k + 1 < n; ++k) {
-            triangles.push_back(
-                {std::uint32_t(ids[0]), std::uint32_t(ids[size_t(k)]), std::uint32_t(ids[size_t(k + 1)])});
-        }
-        std::string colour;
-        std::getline(in, colour);  // optional face colour
+        for (std::size_t k = 1; k + 1 < ids.size(); ++k) triangles.push_back({ids[0], ids[k], ids[k + 1]});
     }
     mesh.triangles.resize(triangles.size());
     std::copy(triangles.begin(), triangles.end(), mesh.triangles.begin());

@@ -19,6 +19,8 @@
 #include <vtkTriangleFilter.h>
 
 #include <fstream>
+#include <map>
+#include <sstream>
 
 namespace sculpt {
 namespace {
@@ -80,6 +82,42 @@ TEST(MeshImport, OpenMeshesAreReportedAndStillImported)
     EXPECT_GT(meshToField(mesh, 0.25).grid().activeVoxelCount(), 0u);
 }
 
+TEST(MeshImport, OffVariantsWithColoursNormalsAndCommentsImport)
+{
+    // The cube of side 8 as other programs write it: CGAL's COFF (a colour per vertex), NOFF
+    // (normals), comments before and inside, the counts on the keyword's line, faces in colour.
+    std::string corners[8], normals[8];
+    for (int i = 0; i < 8; ++i) {
+        corners[i] = std::to_string(i & 1 ? 4 : -4) + " " + std::to_string(i & 2 ? 4 : -4) + " " +
+                     std::to_string(i & 4 ? 4 : -4);
+        normals[i] =
+            std::string(i & 1 ? "0.57" : "-0.57") + (i & 2 ? " 0.57" : " -0.57") + (i & 4 ? " 0.57" : " -0.57");
+    }
+    const std::string faces = "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+    std::map<std::string, std::string> files;
+    files["coff.off"] = "COFF\n8 6 0\n";
+    files["noff.off"] = "NOFF\n8 6 0\n";
+    files["comments.off"] = "# written by hand\n\nOFF 8 6 12 # counts on this line\n# the vertices\n";
+    for (int i = 0; i < 8; ++i) {
+        files["coff.off"] += corners[i] + " 192 192 192 255\n";
+        files["noff.off"] += corners[i] + " " + normals[i] + "\n";
+        files["comments.off"] += corners[i] + "   # corner " + std::to_string(i) + "\n";
+    }
+    files["coff.off"] += faces;
+    files["noff.off"] += faces;
+    files["comments.off"] += "# the faces, in colour\n";
+    std::istringstream lines(faces);
+    for (std::string line; std::getline(lines, line);) files["comments.off"] += line + " 1.0 0.5 0.25\n";
+    test::TempDir dir;
+    for (const auto& [name, text] : files) {
+        std::ofstream(dir / name) << text;
+        const TriangleMesh mesh = readMesh(dir / name);
+        EXPECT_EQ(mesh.triangles.size(), 12u) << name;
+        EXPECT_TRUE(inspectMesh(mesh).closed()) << name;
+        EXPECT_NEAR(std::abs(test::meshVolume(mesh)), 512.0, 1e-9) << name;
+    }
+}
+
 TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
 {
     test::TempDir dir;
@@ -88,7 +126,11 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
     std::ofstream(dir / "index.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n";
     std::ofstream(dir / "junk.stl") << "solid junk\nthis is not a facet\n";
     std::ofstream(dir / "empty.obj") << "# nothing\n";
-    for (const char* name : {"huge.off", "cut.off", "index.off", "junk.stl", "empty.obj", "missing.ply", "ball.xyz"}) {
+    std::ofstream(dir / "binary.off") << "OFF BINARY\n";
+    std::ofstream(dir / "four.off") << "4OFF\n1 0 0\n0 0 0 1\n";
+    std::ofstream(dir / "word.off") << "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n";
+    for (const char* name : {"huge.off", "cut.off", "index.off", "junk.stl", "empty.obj", "missing.ply", "ball.xyz",
+                             "binary.off", "four.off", "word.off"}) {
         try {
             readMesh(dir / name);
             ADD_FAILURE() << "no error for " << name;
