@@ -173,6 +173,17 @@ ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
     return ScanVolume(impl);
 }
 
+double ScanVolume::worldExtent() const
+{
+    const openvdb::Coord d = dims();
+    openvdb::BBoxd box;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d ijk(corner & 1 ? d.x() - 1 : 0, corner & 2 ? d.y() - 1 : 0, corner & 4 ? d.z() - 1 : 0);
+        box.expand(worldFromIndex().transform(ijk));
+    }
+    return box.extents()[box.maxExtent()];
+}
+
 std::vector<double> ScanVolume::histogram(int bins) const
 {
     const auto [lo, hi] = range();

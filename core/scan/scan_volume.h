@@ -25,6 +25,8 @@ public:
     openvdb::Coord dims() const;
     /// Maps a sample's index (i, j, k) to its world position: spacing, orientation, origin.
     const openvdb::Mat4d& worldFromIndex() const;
+    /// Longest side of the box the samples span in the world.
+    double worldExtent() const;
     /// World distance between neighbouring samples along index axis 0, 1 or 2.
     double spacing(int axis) const;
     /// Smallest and largest sample.

@@ -8,22 +8,6 @@
 
 namespace sculpt {
 
-namespace {
-
-/// Longest side of the box the scan's samples span in the world.
-double worldExtent(const ScanVolume& scan)
-{
-    const openvdb::Coord d = scan.dims();
-    openvdb::BBoxd box;
-    for (int corner = 0; corner < 8; ++corner) {
-        const openvdb::Vec3d ijk(corner & 1 ? d.x() - 1 : 0, corner & 2 ? d.y() - 1 : 0, corner & 4 ? d.z() - 1 : 0);
-        box.expand(scan.worldFromIndex().transform(ijk));
-    }
-    return box.extents()[box.maxExtent()];
-}
-
-}  // namespace
-
 ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
 {
     if (isMeshPath(path)) {
@@ -35,7 +19,7 @@ ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
     }
     mScan = readScan(path);
     mDefaultVoxelSize = nativeVoxelSize(*mScan);
-    mPreviewVoxelSize = std::max(mDefaultVoxelSize, worldExtent(*mScan) / kPreviewVoxelsAcross);
+    mPreviewVoxelSize = std::max(mDefaultVoxelSize, mScan->worldExtent() / kPreviewVoxelsAcross);
 }
 
 void ImportPreview::prepare(const ImportOptions& options)

@@ -17,11 +17,42 @@ std::string filterLabel(const ModelFilter& filter)
     return "smooth " + std::to_string(filter.iterations) + (filter.keepVolume ? " (keep volume)" : "");
 }
 
+namespace {
+
+InputError nothingLeft(const std::string& source, const std::string& operation)
+{
+    return InputError(source + ": " + operation + " leaves nothing of the model (no surface remains); nothing written");
+}
+
+/// Limits that keep a filter's work bounded: its cost grows with the iterations, or with the
+/// distance in voxels.
+void refuseUnboundedWork(const FieldImage& field, const ModelFilter& filter, const std::string& source)
+{
+    if (filter.kind == ModelFilter::Kind::Smooth &&
+        (filter.iterations < 1 || filter.iterations > kMaxSmoothIterations)) {
+        throw InputError(source + ": smoothing takes 1 to " + std::to_string(kMaxSmoothIterations) +
+                         " iterations (got " + std::to_string(filter.iterations) + ")");
+    }
+    if (filter.kind != ModelFilter::Kind::Offset) return;
+    openvdb::CoordBBox box;
+    field.grid().tree().evalLeafBoundingBox(box);
+    const double size = box.dim().asVec3d().length() * field.voxelSize();
+    if (filter.distanceWorld < -size) throw nothingLeft(source, filterLabel(filter));
+    if (filter.distanceWorld > size) {
+        throw InputError(source + ": an offset of " + formatNumber(filter.distanceWorld) +
+                         " is larger than the model (" + formatNumber(size) +
+                         " across); offset at most that at a time");
+    }
+}
+
+}  // namespace
+
 FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::string& source, const Progress& progress)
 {
     if (filter.kind == ModelFilter::Kind::Offset && !std::isfinite(filter.distanceWorld)) {
         throw InputError("offset distance must be finite");
     }
+    refuseUnboundedWork(field, filter, source);
     if (filter.kind == ModelFilter::Kind::Smooth) {
         smooth(field, filter.iterations, filter.keepVolume, progress);
     } else {
@@ -36,8 +67,7 @@ void refuseEmptyResult(const FieldImage& field, const std::string& source, const
     // Less than a voxel of volume left is nothing a user can see or print either.
     const double voxel = field.voxelSize() * field.voxelSize() * field.voxelSize();
     if (!field.enclosesSomething() || estimateVolumeArea(field.grid()).volume < voxel) {
-        throw InputError(source + ": " + operation +
-                         " leaves nothing of the model (no surface remains); nothing written");
+        throw nothingLeft(source, operation);
     }
 }
 

@@ -11,6 +11,9 @@
 
 namespace sculpt {
 
+/// More smoothing than this is a mistake, not a look: 10,000 iterations flatten any model.
+inline constexpr int kMaxSmoothIterations = 10000;
+
 struct ModelFilter {
     enum class Kind { Smooth, Offset };
     Kind kind = Kind::Smooth;
@@ -23,8 +26,9 @@ struct ModelFilter {
 std::string filterLabel(const ModelFilter& filter);
 
 /// `field` filtered. Taken by value: pass a deepCopy() to keep yours untouched.
-/// @throws InputError (a negative iteration count, a non-finite distance, or nothing of the
-///         model left, naming `source`); Cancelled if progress says stop.
+/// @throws InputError naming `source`: iterations outside 1..kMaxSmoothIterations, a distance
+///         not finite or larger than the model, or nothing of the model left; Cancelled if
+///         progress says stop.
 FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::string& source,
                        const Progress& progress = {});
 

@@ -5,17 +5,25 @@
 #include "core/brushes/brush.h"
 #include "core/field/leaf_journal.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sculpt {
 
 namespace {
 
+// Below this, stamps pile up for no visible difference (and a long stroke takes hours).
+constexpr double kMinSpacing = 0.01;
+// Samples farther than this many model sizes beyond the model's box reach nothing, only cost
+// stamps on the way (a sample at 10^6 is a million of them).
+constexpr double kSampleReachModels = 4.0;
+
 void validateSettings(const Stroke& stroke)
 {
     stroke.brush.validate();
-    if (!(stroke.spacing > 0.0 && stroke.spacing <= 4.0)) {
-        throw InputError("field 'spacing' must be in (0, 4] radii (got " + formatNumber(stroke.spacing) + ")");
+    if (!(stroke.spacing >= kMinSpacing && stroke.spacing <= 4.0)) {
+        throw InputError("field 'spacing' must be in [" + formatNumber(kMinSpacing) + ", 4] radii (got " +
+                         formatNumber(stroke.spacing) + ")");
     }
 }
 
@@ -67,6 +75,23 @@ double SculptSession::modelSize() const
     return double(box.dim().asVec3d().length()) * mField.voxelSize();
 }
 
+void SculptSession::checkNearModel(const StrokeSample& sample, std::size_t index) const
+{
+    openvdb::CoordBBox box;
+    if (!mField.grid().tree().evalLeafBoundingBox(box)) return;
+    const openvdb::BBoxd world = mField.grid().transform().indexToWorld(box);
+    const openvdb::Vec3d p = sample.positionWorld;
+    const openvdb::Vec3d nearest(std::clamp(p.x(), world.min().x(), world.max().x()),
+                                 std::clamp(p.y(), world.min().y(), world.max().y()),
+                                 std::clamp(p.z(), world.min().z(), world.max().z()));
+    const double size = modelSize(), away = (p - nearest).length();
+    if (away > kSampleReachModels * size) {
+        throw InputError("field 'samples[" + std::to_string(index) + "].position' lies " + formatNumber(away) +
+                         " from the model (" + formatNumber(size) + " " + mField.units() +
+                         " across): a stroke stays within " + formatNumber(kSampleReachModels) + " model sizes of it");
+    }
+}
+
 void SculptSession::checkRadius(const BrushSettings& brush) const
 {
     const double size = modelSize();
@@ -110,6 +135,7 @@ SculptSession::StrokeReport SculptSession::extendStroke(const StrokeSample& samp
 {
     if (!mLive) throw std::logic_error("extendStroke: no active stroke");
     validateSample(sample, mLive->stroke.samples.size());
+    checkNearModel(sample, mLive->stroke.samples.size());
     mLive->stroke.samples.push_back(sample);
     StrokeReport report;
     stamp(mLive->stepper.add(sample), report);

@@ -76,6 +76,8 @@ private:
     struct LiveStroke;
     void updateMesh();
     void checkRadius(const BrushSettings& brush) const;
+    /// @throws InputError if the sample lies far beyond the model (its stamps would reach nothing).
+    void checkNearModel(const StrokeSample& sample, std::size_t index) const;
     void stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report);
 
     FieldImage mField;
@@ -86,7 +88,7 @@ private:
 };
 
 /// @throws InputError naming the field if a sample is not finite or its pressure not in (0, 1],
-///         there are no samples, the spacing is not in (0, 4], or the brush settings are invalid.
+///         there are no samples, the spacing is not in [0.01, 4], or the brush settings are invalid.
 void validateStroke(const Stroke& stroke);
 
 }  // namespace sculpt

@@ -8,11 +8,22 @@
 #include "core/local/speck_removal.h"
 #include "core/scan/scan_to_level_set.h"
 
+#include <cmath>
+
 namespace sculpt {
 
 namespace fs = std::filesystem;
 
 namespace {
+
+/// A voxel larger than the whole shape can resolve nothing of it (and 1e30 overflows the lattice).
+void refuseCoarserThan(double voxelSize, double extent, const fs::path& input, const char* kind)
+{
+    if (voxelSize > extent) {
+        throw InputError(input.string() + ": a voxel size of " + formatNumber(voxelSize) + " is larger than the " +
+                         kind + " (" + formatNumber(extent) + " across); choose a smaller voxel size");
+    }
+}
 
 FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report,
                       const Progress& progress)
@@ -31,6 +42,7 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     }
     report.kind = "mesh";
     report.voxelSize = options.voxelSize.value_or(voxelSizeFor(mesh));
+    refuseCoarserThan(report.voxelSize, voxelSizeFor(mesh, 1.0), input, "mesh");
     return meshToField(mesh, report.voxelSize, progress);
 }
 
@@ -39,6 +51,12 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
 {
     ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
     if (options.crop) scan = scan.cropped(*options.crop);
+    if (options.voxelSize) refuseCoarserThan(*options.voxelSize, scan.worldExtent(), input, "scan");
+    if (options.smoothSigma > scan.worldExtent()) {
+        throw InputError(input.string() + ": a smoothing sigma of " + formatNumber(options.smoothSigma) +
+                         " is wider than the scan (" + formatNumber(scan.worldExtent()) +
+                         " across): it would blur everything away");
+    }
     if (options.smoothSigma > 0.0) scan = scan.smoothed(options.smoothSigma);
     report.kind = "scan";
     report.isoChosen = !options.iso;
@@ -56,8 +74,9 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
 FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report,
                        const Progress& progress)
 {
-    if (options.voxelSize && !(*options.voxelSize > 0.0)) {
-        throw InputError("the voxel size must be a positive number (got " + formatNumber(*options.voxelSize) + ")");
+    if (options.voxelSize && !(*options.voxelSize > 0.0 && std::isfinite(*options.voxelSize))) {
+        throw InputError(input.string() + ": the voxel size must be a positive number (got " +
+                         formatNumber(*options.voxelSize) + ")");
     }
     // The conversion is most of the work; the cleanup the rest.
     const Progress converting = scaledProgress(progress, 0.0, options.largestComponent ? 0.8 : 1.0);

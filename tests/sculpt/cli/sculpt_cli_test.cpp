@@ -114,6 +114,11 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "s_field.json") << R"({"events": [{"tool": "add", "radius": 1}]})";
     std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
     std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
+    // A sample at 10^6 (a million stamps on the way) and a spacing that piles stamps up.
+    std::ofstream(dir / "s_far.json")
+        << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, 0], [1e6, 0, 0]]}]})";
+    std::ofstream(dir / "s_spacing.json")
+        << R"({"events": [{"tool": "add", "radius": 1, "spacing": 0.0001, "samples": [[5, 0, 0]]}]})";
     std::ofstream(dir / "s_huge.json") << R"({"events": [)" << stroke
                                        << R"(, {"tool": "inflate", "radius": 90, "samples": [[5, 0, 0]]}]})";
     const auto blob = [](const std::string& operation, const std::string& radius, const std::string& at) {
@@ -185,7 +190,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"build eat_all.json --into good.vdb -o out.vdb", "combining the scene into good.vdb leaves nothing"},
         BadCall{"build huge_blob.json -o out.vdb", "primitive 0: its influence reaches 3.4641e+30 voxels"},
         BadCall{"build far_blob.json -o out.vdb", "beyond the largest model"},
-        BadCall{"build huge_blob.json --voxel-size 0 -o out.vdb", "--voxel-size: must be a positive number (got 0)"}),
+        BadCall{"build huge_blob.json --voxel-size 0 -o out.vdb", "--voxel-size: must be a positive number (got 0)"},
+        // Work without bound from absurd numbers: refused with the limit.
+        BadCall{"apply good.vdb s_far.json -o out.vdb", "field 'samples[1].position' lies 999992 from the model"},
+        BadCall{"apply good.vdb s_spacing.json -o out.vdb", "field 'spacing' must be in [0.01, 4] radii"},
+        BadCall{"smooth good.vdb --iterations 2000000000 -o out.vdb", "smoothing takes 1 to 10000 iterations"},
+        BadCall{"offset good.vdb --distance 1e9 -o out.vdb", "an offset of 1e+09 is larger than the model"},
+        BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --voxel-size 1e30 -o out.vdb",
+                "a voxel size of 1e+30 is larger than the scan"},
+        BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --smooth 1e9 -o out.vdb",
+                "a smoothing sigma of 1e+09 is wider than the scan"},
+        BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --voxel-size inf -o out.vdb",
+                "tiny.raw: the voxel size must be a positive number (got inf)"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
