@@ -106,12 +106,11 @@ void writePng(const RenderedImage& image, const std::filesystem::path& path)
     }
     AtomicFile file(path);
     vtkNew<vtkPNGWriter> writer;
-    vtkNew<VtkErrorCatcher> catcher;
-    writer->AddObserver(vtkCommand::ErrorEvent, catcher);
+    const VtkErrorCatcher catcher(writer);
     writer->SetInputData(data);
     writer->SetFileName(file.temporaryPath().c_str());
     writer->Write();
-    if (!catcher->message.empty() || writer->GetErrorCode() != 0) throw InputError(path.string() + ": cannot write");
+    if (catcher.caught() || writer->GetErrorCode() != 0) throw InputError(path.string() + ": cannot write");
     file.commit();
 }
 

@@ -32,9 +32,7 @@ namespace {
 /// Runs a VTK mesh reader, then triangulates and merges coincident points.
 TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
 {
-    vtkObject::GlobalWarningDisplayOff();
-    vtkNew<VtkErrorCatcher> catcher;
-    reader->AddObserver(vtkCommand::ErrorEvent, catcher);
+    const VtkErrorCatcher catcher(reader);
     vtkNew<vtkTriangleFilter> triangles;
     triangles->SetInputConnection(reader->GetOutputPort());
     triangles->PassVertsOff();
@@ -44,7 +42,7 @@ TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
     clean->PointMergingOn();
     clean->SetTolerance(0.0);
     clean->Update();
-    if (!catcher->message.empty()) throw InputError(path.string() + ": cannot read the mesh (corrupt or truncated?)");
+    if (catcher.caught()) throw InputError(path.string() + ": cannot read the mesh (corrupt or truncated?)");
     vtkPolyData* poly = clean->GetOutput();
     TriangleMesh mesh;
     mesh.positions.resize(size_t(poly->GetNumberOfPoints()));

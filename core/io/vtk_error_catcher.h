@@ -1,23 +1,47 @@
 #pragma once
 /// @file vtk_error_catcher.h
-/// @brief Catches what a VTK reader reports instead of letting it print to stderr, so the
-///        caller can turn it into an InputError naming the file. For VTK translation units only.
+/// @brief Catches what VTK reports during one call instead of letting it print to stderr, so
+///        the caller can turn it into an InputError naming the file. For VTK translation units.
+///
+/// VTK's error macros do nothing at all once vtkObject::GlobalWarningDisplayOff() was called,
+/// so nothing here (nor anywhere else) switches them off: errors are caught per call instead,
+/// from the watched object's events, from the output window (replaced for the call's duration)
+/// and from vtkLogger, where the pipeline's executives and some readers write. The programs keep
+/// vtkLogger off stderr (quietVtkLogger), so what is caught is said once, naming the file.
+
+#include "core/io/vtk_logging.h"
 
 #include <vtkCommand.h>
+#include <vtkOutputWindow.h>
+#include <vtkSmartPointer.h>
 
 #include <string>
 
 namespace sculpt {
 
-/// Observer of vtkCommand::ErrorEvent (and WarningEvent): keeps the first message.
-class VtkErrorCatcher : public vtkCommand {
+/// Keeps the first error VTK reported while it lived: through `watched`'s ErrorEvent (and
+/// WarningEvent, if asked) or through VTK's output window.
+class VtkErrorCatcher {
 public:
-    static VtkErrorCatcher* New() { return new VtkErrorCatcher; }
-    void Execute(vtkObject*, unsigned long, void* data) override
-    {
-        if (message.empty() && data) message = static_cast<const char*>(data);
-    }
-    std::string message;
+    explicit VtkErrorCatcher(vtkObject* watched, bool warningsToo = false);
+    ~VtkErrorCatcher();
+    VtkErrorCatcher(const VtkErrorCatcher&) = delete;
+    VtkErrorCatcher& operator=(const VtkErrorCatcher&) = delete;
+
+    /// The first message, or "".
+    const std::string& message() const;
+    bool caught() const { return !message().empty(); }
+
+private:
+    class Observer;
+    class Window;
+    vtkSmartPointer<Observer> mObserver;
+    vtkSmartPointer<Window> mWindow;
+    vtkSmartPointer<vtkOutputWindow> mPrevious;
+    vtkObject* mWatched;
+    std::string mLogId;
+    std::string mLogged;  // the first error (or warning, if asked) vtkLogger saw
+    bool mWarningsToo;
 };
 
 }  // namespace sculpt

@@ -5,6 +5,7 @@
 #include "core/base/file_extension.h"
 #include "core/base/text_format.h"
 #include "core/scan/dicom_series.h"
+#include "core/scan/header_checks.h"
 #include "core/scan/vtk_image_scan.h"
 
 #include <vtkDataArray.h>
@@ -105,7 +106,10 @@ ScanVolume readScan(const fs::path& path)
     const std::string ext = lowerExtension(path);
     if (ext == ".nii" || ext == ".nii.gz") return readNifti(path);
     if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
-    if (ext == ".mha" || ext == ".mhd") return readWithDirection<vtkMetaImageReader>(path);
+    if (ext == ".mha" || ext == ".mhd") {
+        checkMetaImageHeader(path);
+        return readWithDirection<vtkMetaImageReader>(path);
+    }
     throw InputError(path.string() + ": unknown scan format '" + ext +
                          "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd or a DICOM directory); raw samples "
                          "need their layout given",

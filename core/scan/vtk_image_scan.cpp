@@ -19,6 +19,9 @@ namespace {
 /// The last line of a VTK error message, without VTK's file/line prefix.
 std::string cleanMessage(std::string text)
 {
+    // vtkImageReader's word for a file shorter than its header says.
+    if (text.find("File operation failed") != std::string::npos)
+        return "truncated: the file holds fewer samples than its header declares";
     while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
     const auto colon = text.rfind(": ");
     if (colon != std::string::npos && text.find("vtk") != std::string::npos) text = text.substr(colon + 2);
@@ -29,12 +32,9 @@ std::string cleanMessage(std::string text)
 
 vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source)
 {
-    vtkObject::GlobalWarningDisplayOff();
-    vtkNew<VtkErrorCatcher> catcher;
-    reader->AddObserver(vtkCommand::ErrorEvent, catcher);
-    reader->AddObserver(vtkCommand::WarningEvent, catcher);
+    const VtkErrorCatcher catcher(reader, /*warningsToo=*/true);
     reader->UpdateInformation();
-    if (!catcher->message.empty()) throw InputError(source + ": " + cleanMessage(catcher->message));
+    if (catcher.caught()) throw InputError(source + ": " + cleanMessage(catcher.message()));
     int extent[6];
     reader->GetDataExtent(extent);
     std::array<long long, 3> dims{};
@@ -51,7 +51,7 @@ vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::stri
                                                      std::to_string(dims[1]) + " x " + std::to_string(dims[2]) +
                                                      " samples)");
     reader->Update();
-    if (!catcher->message.empty()) throw InputError(source + ": " + cleanMessage(catcher->message));
+    if (catcher.caught()) throw InputError(source + ": " + cleanMessage(catcher.message()));
     vtkSmartPointer<vtkImageData> image = reader->GetOutput();
     if (!image || !image->GetPointData()->GetScalars() || image->GetNumberOfPoints() != vtkIdType(voxels)) {
         throw InputError(source + ": the samples could not be read (truncated or corrupt file?)");

@@ -3,6 +3,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/progress.h"
+#include "core/io/vtk_logging.h"
 #include "sculpt/cli/commands.h"
 
 #include <CLI/CLI.hpp>
@@ -40,6 +41,7 @@ const char* remedyFlag(sculpt::Remedy remedy)
 
 int main(int argc, char** argv)
 {
+    sculpt::quietVtkLogger();
     CLI::App app{"sculpt: volumetric clay sculpting on sparse signed-distance grids.\n"
                  "Run 'sculpt COMMAND --help' for the options of a command."};
     app.require_subcommand(1);

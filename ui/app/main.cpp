@@ -1,12 +1,15 @@
 /// sculpt-ui: the sculpting window. See --help and the README.
 
 #include "core/base/errors.h"
+#include "core/io/vtk_logging.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
 
 #include <CLI/CLI.hpp>
 #include <vtkAutoInit.h>
-#include <vtkObject.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -21,6 +24,18 @@ bool parseSize(const std::string& text, int& width, int& height)
     return std::sscanf(text.c_str(), "%dx%d", &width, &height) == 2 && width >= 64 && height >= 64 && width <= 8192 &&
            height <= 8192;
 }
+
+/// VTK's chatter (render warnings) dropped.
+class QuietVtkOutput : public vtkOutputWindow {
+public:
+    static QuietVtkOutput* New();
+    void DisplayText(const char*) override {}
+    void DisplayErrorText(const char*) override {}
+    void DisplayWarningText(const char*) override {}
+    void DisplayGenericWarningText(const char*) override {}
+    void DisplayDebugText(const char*) override {}
+};
+vtkStandardNewMacro(QuietVtkOutput);
 
 }  // namespace
 
@@ -63,7 +78,10 @@ int main(int argc, char** argv)
         std::cerr << "sculpt-ui: --size " << size << ": expected WIDTHxHEIGHT, 64 to 8192 pixels each\n";
         return 2;
     }
-    vtkObject::GlobalWarningDisplayOff();  // VTK's own chatter; our errors are shown in the window
+    // VTK's own chatter stays out of the terminal. Not GlobalWarningDisplayOff(): that would also
+    // silence the readers' errors, which are caught per call and shown in the window.
+    vtkOutputWindow::SetInstance(vtkNew<QuietVtkOutput>());
+    quietVtkLogger();
     try {
         ui::AppWindow window(width, height, "Sculpt");
         ui::SculptApp app(window, options);

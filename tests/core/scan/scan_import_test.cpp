@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <random>
 
 namespace sculpt {
@@ -345,6 +346,45 @@ std::vector<std::filesystem::path> writeBallSeries(const std::filesystem::path& 
         test::writeDicomSlice(files.back(), slice);
     }
     return files;
+}
+
+TEST(ScanImport, TruncatedScansAndMissingDataFilesAreRefused)
+{
+    test::TempDir dir;
+    const auto ball = [](const openvdb::Vec3d& p) { return (p - openvdb::Vec3d(8.0)).length() - 5.0; };
+    writeMetaImage(sampledImage(openvdb::Coord(16), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), ball), dir / "ball.mha");
+    {  // NRRD by hand: 16^3 bytes, a ball of 200 in 0
+        std::ofstream nrrd(dir / "ball.nrrd", std::ios::binary);
+        nrrd << "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 16 16 16\nencoding: raw\n\n";
+        for (int z = 0; z < 16; ++z)
+            for (int y = 0; y < 16; ++y)
+                for (int x = 0; x < 16; ++x) nrrd.put(ball(openvdb::Vec3d(x, y, z)) < 0.0 ? char(200) : char(0));
+    }
+    for (const char* name : {"ball.mha", "ball.nrrd"}) {
+        ASSERT_NO_THROW(readScan(dir / name)) << name;
+        const std::string bytes = [&] {
+            std::ifstream in(dir / name, std::ios::binary);
+            return std::string(std::istreambuf_iterator<char>(in), {});
+        }();
+        for (const double share : {0.1, 0.5, 0.9}) {
+            const std::string cut = std::string("cut_") + std::to_string(int(share * 100)) + "_" + name;
+            std::ofstream(dir / cut, std::ios::binary) << bytes.substr(0, std::size_t(share * double(bytes.size())));
+            try {
+                readScan(dir / cut);
+                ADD_FAILURE() << cut << " was read";
+            } catch (const InputError& e) {
+                EXPECT_NE(std::string(e.what()).find(cut), std::string::npos) << e.what();
+            }
+        }
+    }
+    std::ofstream(dir / "lost.mhd")
+        << "NDims = 3\nDimSize = 16 16 16\nElementType = MET_UCHAR\nElementDataFile = lost.raw\n";
+    try {
+        readScan(dir / "lost.mhd");
+        ADD_FAILURE() << "lost.mhd was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("lost.raw does not exist"), std::string::npos) << e.what();
+    }
 }
 
 TEST(ScanImport, DicomSeriesKeepsSliceOrderSpacingAndPosition)
