@@ -11,6 +11,7 @@ find_package(OpenVDB REQUIRED)
 find_package(Imath CONFIG REQUIRED)
 find_package(OpenEXR CONFIG REQUIRED)
 find_package(TBB REQUIRED)
+find_package(ZLIB REQUIRED)  # reading a .nii.gz header and length before VTK does
 find_package(CLI11 CONFIG REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 # The window: GLFW, GLM, and Debian's static Dear ImGui (it holds the GLFW and OpenGL3 backends).

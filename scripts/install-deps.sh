@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake g++ make pkg-config clang-format clang-tidy
-  libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev
+  libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev zlib1g-dev
   libvtk9-dev libopenexr-dev
   libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libgl1-mesa-dri

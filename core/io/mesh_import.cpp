@@ -29,6 +29,30 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// A binary STL is 84 bytes and 50 per triangle: a count the file does not match is refused
+/// before VTK allocates for it. Text STLs open with "solid" and hold "facet".
+void checkStlSize(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot read the mesh");
+    char head[84] = {};
+    in.read(head, sizeof head);
+    const std::size_t size = std::size_t(fs::file_size(path));
+    std::string start(head, std::size_t(in.gcount()));
+    if (start.rfind("solid", 0) == 0 && start.find("facet") != std::string::npos) return;  // text
+    if (size < 84)
+        throw InputError(path.string() + ": too short for a binary STL (" + std::to_string(size) + " bytes)");
+    const std::uint32_t count = std::uint32_t(std::uint8_t(head[80])) | std::uint32_t(std::uint8_t(head[81])) << 8 |
+                                std::uint32_t(std::uint8_t(head[82])) << 16 |
+                                std::uint32_t(std::uint8_t(head[83])) << 24;
+    const double expected = 84.0 + 50.0 * double(count);
+    if (double(size) < expected) {
+        throw InputError(path.string() + ": truncated binary STL: it declares " + std::to_string(count) +
+                         " triangles (" + formatNumber(expected) + " bytes) but holds " + std::to_string(size) +
+                         " bytes");
+    }
+}
+
 /// Runs a VTK mesh reader, then triangulates and merges coincident points.
 TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
 {
@@ -194,6 +218,7 @@ TriangleMesh readMesh(const fs::path& path)
             return readWithVtk(reader, path);
         }
         if (ext == ".stl") {
+            checkStlSize(path);
             vtkNew<vtkSTLReader> reader;
             reader->SetFileName(path.string().c_str());
             return readWithVtk(reader, path);

@@ -13,4 +13,14 @@ namespace sculpt {
 /// @throws InputError naming the file and what is wrong.
 void checkMetaImageHeader(const std::filesystem::path& path);
 
+/// A NRRD (.nrrd, or .nhdr naming a data file): a text header (no NUL byte, at most 64 KiB,
+/// ending in a blank line) with type, dimension and sizes sane; a raw encoding's samples all
+/// present. @throws InputError naming the file and what is wrong.
+void checkNrrdHeader(const std::filesystem::path& path);
+
+/// A NIfTI-1 header (.nii; .nii.gz read through zlib to its end): sizeof_hdr 348, dimensions 1
+/// to 7 of positive sizes, a datatype VTK reads with its bit depth, and every sample present.
+/// @throws InputError naming the file and what is wrong.
+void checkNiftiHeader(const std::filesystem::path& path);
+
 }  // namespace sculpt

@@ -104,8 +104,14 @@ ScanVolume readScan(const fs::path& path)
     if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
     if (fs::is_directory(path)) return readDicomSeries(path);
     const std::string ext = lowerExtension(path);
-    if (ext == ".nii" || ext == ".nii.gz") return readNifti(path);
-    if (ext == ".nrrd" || ext == ".nhdr") return readWithDirection<vtkNrrdReader>(path);
+    if (ext == ".nii" || ext == ".nii.gz") {
+        checkNiftiHeader(path);
+        return readNifti(path);
+    }
+    if (ext == ".nrrd" || ext == ".nhdr") {
+        checkNrrdHeader(path);
+        return readWithDirection<vtkNrrdReader>(path);
+    }
     if (ext == ".mha" || ext == ".mhd") {
         checkMetaImageHeader(path);
         return readWithDirection<vtkMetaImageReader>(path);

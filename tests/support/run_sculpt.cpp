@@ -25,6 +25,13 @@ CommandResult runSculpt(const std::string& args, const std::string& workDir)
     return runCommand("'" SCULPT_EXECUTABLE "' " + args, workDir);
 }
 
+CommandResult runSculptBounded(const std::string& args, const std::string& workDir, int seconds, int addressSpaceMiB)
+{
+    return runCommand("ulimit -v " + std::to_string(addressSpaceMiB * 1024) + " && timeout " + std::to_string(seconds) +
+                          " '" SCULPT_EXECUTABLE "' " + args,
+                      workDir);
+}
+
 CommandResult runCommand(const std::string& command, const std::string& workDir)
 {
     const std::string outFile = workDir + "/.stdout", errFile = workDir + "/.stderr";

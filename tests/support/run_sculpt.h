@@ -14,6 +14,8 @@ struct CommandResult {
 
 /// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
 CommandResult runSculpt(const std::string& args, const std::string& workDir);
+/// runSculpt killed after `seconds` and refused more than `addressSpaceMiB` of address space.
+CommandResult runSculptBounded(const std::string& args, const std::string& workDir, int seconds, int addressSpaceMiB);
 
 /// Runs `COMMAND` (a shell command line, already shell-safe) in `workDir`.
 CommandResult runCommand(const std::string& command, const std::string& workDir);

@@ -360,7 +360,15 @@ TEST(ScanImport, TruncatedScansAndMissingDataFilesAreRefused)
             for (int y = 0; y < 16; ++y)
                 for (int x = 0; x < 16; ++x) nrrd.put(ball(openvdb::Vec3d(x, y, z)) < 0.0 ? char(200) : char(0));
     }
-    for (const char* name : {"ball.mha", "ball.nrrd"}) {
+    {
+        vtkNew<vtkNIFTIImageWriter> writer;
+        writer->SetInputData(sampledImage(openvdb::Coord(16), openvdb::Vec3d(1.0), openvdb::Vec3d(0.0), ball));
+        writer->SetFileName((dir / "ball.nii.gz").c_str());
+        writer->Write();
+        writer->SetFileName((dir / "ball.nii").c_str());
+        writer->Write();
+    }
+    for (const char* name : {"ball.mha", "ball.nrrd", "ball.nii", "ball.nii.gz"}) {
         ASSERT_NO_THROW(readScan(dir / name)) << name;
         const std::string bytes = [&] {
             std::ifstream in(dir / name, std::ios::binary);

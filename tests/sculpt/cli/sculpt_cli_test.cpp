@@ -204,6 +204,39 @@ INSTANTIATE_TEST_SUITE_P(
                 "tiny.raw: the voxel size must be a positive number (got inf)"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
+/// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.
+struct Regression {
+    const char* file;
+    const char* command;  ///< FILE stands for the file's path
+};
+
+class SculptCliRegression : public ::testing::TestWithParam<Regression> {};
+
+TEST_P(SculptCliRegression, ExitsTwoWithOneLineInBoundedTimeAndMemoryAndWritesNothing)
+{
+    TempDir dir;
+    const std::string corpus = SCULPT_TESTS_DIR "/bad-inputs/";
+    ASSERT_EQ(runSculpt("new --radius 20 -o ball.vdb", dir.path()).exitCode, 0);  // what the strokes sculpt
+    std::string args = GetParam().command;
+    args.replace(args.find("FILE"), 4, "'" + corpus + GetParam().file + "'");
+    const auto r = test::runSculptBounded(args + " -o out.vdb", dir.path(), 30, 4096);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find(GetParam().file), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.vdb"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
+                         ::testing::Values(Regression{"nii_datatype6_segv.nii", "import FILE --iso 100"},
+                                           Regression{"nrrd_no_sizes_segv.nrrd", "import FILE --iso 100"},
+                                           Regression{"nrrd_nul_in_header_hang.nrrd", "import FILE --iso 100"},
+                                           Regression{"nrrd_trunc50_accepted.nrrd", "import FILE --iso 100"},
+                                           Regression{"mha_trunc50_accepted.mha", "import FILE --iso 100"},
+                                           Regression{"mha_datafile_missing_accepted.mha", "import FILE --iso 100"},
+                                           Regression{"stl_bin_oom_rc1.stl", "import FILE --voxel-size 0.1"},
+                                           Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"}),
+                         [](const auto& test) { return "case" + std::to_string(test.index); });
+
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
 {
     Imf::InputFile in(path.c_str());
