@@ -53,6 +53,109 @@ void checkStlSize(const fs::path& path)
     }
 }
 
+/// One element of a PLY header: how many, and its properties (sizes; a list's count and item
+/// sizes, its items taken as at least 3).
+struct PlyElement {
+    std::string name;
+    double count = 0.0;
+    double minimalBytes = 0.0;  // per element, binary
+    int scalars = 0;            // properties that are not lists
+    bool listFirst = false;     // a single list property ("3 i j k")
+    int lists = 0;
+};
+
+double plyTypeBytes(const std::string& type, const fs::path& path)
+{
+    static const std::map<std::string, double> sizes{{"char", 1},  {"int8", 1},    {"uchar", 1},  {"uint8", 1},
+                                                     {"short", 2}, {"int16", 2},   {"ushort", 2}, {"uint16", 2},
+                                                     {"int", 4},   {"int32", 4},   {"uint", 4},   {"uint32", 4},
+                                                     {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    if (type.empty()) throw InputError(path.string() + ": corrupt PLY header (a property without a type: cut short?)");
+    const auto found = sizes.find(type);
+    if (found == sizes.end()) throw InputError(path.string() + ": unknown PLY property type '" + type + "'");
+    return found->second;
+}
+
+/// A text PLY's body: a line per element with the words its properties need, and face indices
+/// that name a vertex. vtkPLYReader crashes on less.
+void checkPlyText(std::istream& in, const std::vector<PlyElement>& elements, const fs::path& path)
+{
+    double vertices = 0.0;
+    for (const PlyElement& e : elements) {
+        if (e.name == "vertex") vertices = e.count;
+        for (double k = 0; k < e.count; ++k) {
+            std::string line;
+            if (!std::getline(in, line))
+                throw InputError(path.string() + ": truncated PLY: " + e.name + " " + formatNumber(k) + " is missing");
+            std::istringstream words(line);
+            std::vector<double> values;
+            for (double v; words >> v;) values.push_back(v);
+            const bool face = e.listFirst && e.lists == 1 && e.scalars == 0;
+            const std::size_t needed =
+                face && !values.empty() ? std::size_t(std::max(0.0, values[0])) + 1 : std::size_t(e.scalars + e.lists);
+            if (values.size() < needed)
+                throw InputError(path.string() + ": truncated or corrupt PLY: " + e.name + " " + formatNumber(k));
+            for (std::size_t i = 1; face && e.name == "face" && i < needed; ++i) {
+                if (values[i] < 0 || values[i] >= vertices)
+                    throw InputError(path.string() + ": PLY face " + formatNumber(k) + " names vertex " +
+                                     formatNumber(values[i]) + " of " + formatNumber(vertices));
+            }
+        }
+    }
+}
+
+/// A PLY's header read and what it declares checked against the body before vtkPLYReader
+/// (which crashes on a cut file) sees it: a binary body must hold every fixed-size property and
+/// a list of at least 3 per element; a text body is checked line by line.
+void checkPlyHeader(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot read the mesh");
+    std::string line, format;
+    std::size_t headerBytes = 0;
+    std::vector<PlyElement> elements;
+    for (bool first = true;; first = false) {
+        if (!std::getline(in, line) || headerBytes > 65536 || line.find('\0') != std::string::npos)
+            throw InputError(path.string() + ": truncated or corrupt PLY header (no end_header)");
+        headerBytes += line.size() + 1;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::string word;
+        words >> word;
+        if (first && word != "ply") throw InputError(path.string() + ": not a PLY file (it must start with \"ply\")");
+        if (word == "format") words >> format;
+        if (word == "element") {
+            PlyElement e;
+            if (!(words >> e.name >> e.count) || e.count < 0 || e.count > 4e9 || e.count != std::floor(e.count))
+                throw InputError(path.string() + ": corrupt PLY element line '" + line + "'");
+            elements.push_back(e);
+        }
+        if (word == "property" && !elements.empty()) {
+            PlyElement& e = elements.back();
+            std::string type, countType, itemType;
+            words >> type;
+            if (type == "list") {
+                words >> countType >> itemType;
+                e.minimalBytes += plyTypeBytes(countType, path) + 3.0 * plyTypeBytes(itemType, path);
+                e.listFirst = e.lists == 0 && e.scalars == 0;
+                ++e.lists;
+            } else {
+                e.minimalBytes += plyTypeBytes(type, path);
+                ++e.scalars;
+            }
+        }
+        if (word == "end_header") break;
+    }
+    if (format == "ascii") return checkPlyText(in, elements, path);
+    double needed = 0.0;
+    for (const PlyElement& e : elements) needed += e.count * e.minimalBytes;
+    const double body = double(fs::file_size(path)) - double(headerBytes);
+    if (body < needed) {
+        throw InputError(path.string() + ": truncated PLY: its elements need at least " + formatNumber(needed) +
+                         " bytes; it holds " + formatNumber(std::max(0.0, body)));
+    }
+}
+
 /// Runs a VTK mesh reader, then triangulates and merges coincident points.
 TriangleMesh readWithVtk(vtkAlgorithm* reader, const fs::path& path)
 {
@@ -213,6 +316,7 @@ TriangleMesh readMesh(const fs::path& path)
             return readWithVtk(reader, path);
         }
         if (ext == ".ply") {
+            checkPlyHeader(path);
             vtkNew<vtkPLYReader> reader;
             reader->SetFileName(path.string().c_str());
             return readWithVtk(reader, path);

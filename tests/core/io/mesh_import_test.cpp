@@ -19,6 +19,7 @@
 #include <vtkTriangleFilter.h>
 
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -136,6 +137,41 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
             ADD_FAILURE() << "no error for " << name;
         } catch (const InputError& e) {
             EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
+TEST(MeshImport, TruncatedPlyAndStlFilesAreRefusedBeforeVtkReadsThem)
+{
+    test::TempDir dir;
+    vtkNew<vtkSphereSource> sphere;
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputConnection(triangles->GetOutputPort());
+    ply->SetFileName((dir / "ball.ply").c_str());
+    ply->Write();
+    ply->SetFileTypeToASCII();
+    ply->SetFileName((dir / "text.ply").c_str());
+    ply->Write();
+    vtkNew<vtkSTLWriter> stl;
+    stl->SetInputConnection(triangles->GetOutputPort());
+    stl->SetFileTypeToBinary();
+    stl->SetFileName((dir / "ball.stl").c_str());
+    stl->Write();
+    for (const char* name : {"ball.ply", "text.ply", "ball.stl"}) {
+        ASSERT_NO_THROW(readMesh(dir / name)) << name;
+        std::ifstream in(dir / name, std::ios::binary);
+        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        for (const double share : {0.1, 0.5, 0.9}) {
+            const std::string cut = "cut_" + std::to_string(int(share * 100)) + "_" + name;
+            std::ofstream(dir / cut, std::ios::binary) << bytes.substr(0, std::size_t(share * double(bytes.size())));
+            try {
+                readMesh(dir / cut);
+                ADD_FAILURE() << cut << " was read";
+            } catch (const InputError& e) {
+                EXPECT_NE(std::string(e.what()).find(cut), std::string::npos) << e.what();
+            }
         }
     }
 }

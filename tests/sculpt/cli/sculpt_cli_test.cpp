@@ -234,6 +234,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"mha_trunc50_accepted.mha", "import FILE --iso 100"},
                                            Regression{"mha_datafile_missing_accepted.mha", "import FILE --iso 100"},
                                            Regression{"stl_bin_oom_rc1.stl", "import FILE --voxel-size 0.1"},
+                                           Regression{"ply_trunc_segv.ply", "import FILE --voxel-size 0.1"},
                                            Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
 
