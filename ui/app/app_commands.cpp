@@ -463,8 +463,13 @@ void SculptApp::addPrimitive(SkeletonType type)
 
 void SculptApp::syncPrimitives()
 {
-    if (mPrimitives && mPrimitives->refresh()) mPrimitivePreview.set(mPrimitives->preview());
-    if (mPrimitives) mSkeletons.show(mPrimitives->primitives, mPrimitives->selected);
+    if (!mPrimitives) return;
+    const bool changed = mPrimitives->refresh();
+    if (changed) mPrimitivePreview.set(mPrimitives->preview());
+    // The skeletons' geometry is rebuilt only when the scene or the selection changed.
+    if (changed || mPrimitives->selected != mSkeletonsSelected)
+        mSkeletons.show(mPrimitives->primitives, mPrimitives->selected);
+    mSkeletonsSelected = mPrimitives->selected;
 }
 
 void SculptApp::bakePrimitives()

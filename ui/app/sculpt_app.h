@@ -227,6 +227,7 @@ private:
     std::optional<MorphFrames> mMorph;
     std::optional<ImportDraft> mImport;
     std::optional<PrimitiveDraft> mPrimitives;
+    int mSkeletonsSelected = -1;         // the selection the skeletons were last drawn with
     double mLastEventArrival = 0.0;      // when the latest input was due (its replay time, if replayed)
     double mPreviewPendingSince = -1.0;  // the import's options changed then, the preview not yet on screen
     std::string mLastJob;                // how the last job ended: "finished", "cancelled", "failed"

@@ -151,6 +151,7 @@ void ModelDisplay::setCoarse(bool coarse)
 
 void ModelDisplay::setHidden(bool hidden)
 {
+    if (hidden == mHidden) return;  // asked every frame: touch the actors only on a change
     mHidden = hidden;
     for (auto& [origin, block] : mBlocks) block.full->SetVisibility(!mCoarse && !hidden);
     for (auto& [origin, chunk] : mChunks) {
