@@ -14,7 +14,7 @@ namespace sculpt {
 
 /// What the user can change to get past an InputError. Core says it in words ("choose a coarser
 /// voxel size"); a front end may add the control that does it (the CLI names its flag).
-enum class Remedy { None, CoarserVoxelSize, FinerVoxelSize, AlignShapes, DescribeRawLayout };
+enum class Remedy { None, CoarserVoxelSize, FinerVoxelSize, AlignShapes, DescribeRawLayout, ChooseGrid };
 
 /// Bad user input: the message is one sentence naming the file, field or value at fault.
 class InputError : public std::runtime_error {

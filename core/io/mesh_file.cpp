@@ -3,12 +3,12 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
+#include "core/io/ply_file.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkOBJWriter.h>
-#include <vtkPLYWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -61,22 +61,20 @@ bool writeWith(Writer* writer, vtkPolyData* polyData, const fs::path& path)
     return writer->Write() == 1;
 }
 
-bool writeFormat(MeshFormat format, vtkPolyData* polyData, const fs::path& path)
+bool writeFormat(MeshFormat format, const TriangleMesh& mesh, const fs::path& path)
 {
     switch (format) {
-    case MeshFormat::Ply: {
-        vtkNew<vtkPLYWriter> writer;
-        writer->SetFileTypeToBinary();
-        return writeWith(writer.Get(), polyData, path);
-    }
+    case MeshFormat::Ply:
+        writePly(mesh, path);  // ours: VTK's PLY writer drops the normals
+        return true;
     case MeshFormat::Obj: {
         vtkNew<vtkOBJWriter> writer;
-        return writeWith(writer.Get(), polyData, path);
+        return writeWith(writer.Get(), toPolyData(mesh), path);
     }
     case MeshFormat::Stl: {
         vtkNew<vtkSTLWriter> writer;
         writer->SetFileTypeToBinary();
-        return writeWith(writer.Get(), polyData, path);
+        return writeWith(writer.Get(), toPolyData(mesh), path);
     }
     }
     return false;
@@ -98,9 +96,8 @@ void writeMesh(const TriangleMesh& mesh, const fs::path& path)
 {
     const MeshFormat format = meshFormatOf(path);
     AtomicFile out(path);
-    const auto polyData = toPolyData(mesh);
     std::error_code ec;
-    if (!writeFormat(format, polyData, out.temporaryPath()) || !fs::exists(out.temporaryPath(), ec)) {
+    if (!writeFormat(format, mesh, out.temporaryPath()) || !fs::exists(out.temporaryPath(), ec)) {
         throw InputError(path.string() + ": the mesh writer failed (disk full or no permission?)");
     }
     out.commit();

@@ -1,6 +1,7 @@
 #pragma once
 /// @file mesh_file.h
-/// @brief Mesh export for printing and rendering: binary PLY, OBJ and binary STL via VTK writers.
+/// @brief Mesh export for printing and rendering: binary PLY (ours, with normals), OBJ and binary
+///        STL (VTK's writers).
 
 #include "core/mesh/triangle_mesh.h"
 

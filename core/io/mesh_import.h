@@ -2,8 +2,10 @@
 /// @file mesh_import.h
 /// @brief Triangle meshes (OBJ, PLY, STL, OFF) into editable field images.
 ///
-/// OBJ, PLY and STL are read with VTK's readers (polygons triangulated, coincident points
-/// merged); OFF, which VTK 9.1 cannot read, with a small reader of our own. The mesh's edges are
+/// Each format has a reader of our own that checks every count, length and index against the
+/// file before allocating or indexing (VTK's readers crash on cut PLY files and import OBJ
+/// faces naming no vertex as wrong shapes); polygons are fanned into triangles and coincident
+/// vertices joined. The mesh's edges are
 /// counted first: a closed 2-manifold (every edge shared by exactly two triangles) converts
 /// exactly; an open or non-manifold mesh still converts, with openvdb's sign classification
 /// deciding inside and outside as well as it can, and the report says how many edges are

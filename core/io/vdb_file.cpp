@@ -4,12 +4,16 @@
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
+#include "core/field/band_repair.h"
 #include "core/field/grid_checksum.h"
+#include "core/io/vdb_layout.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -24,27 +28,147 @@ constexpr const char* kMetaUnits = "sculpt.units";
 constexpr const char* kMetaVoxelSize = "sculpt.voxel_size";
 constexpr const char* kMetaChecksum = "sculpt.checksum";
 
-/// First float level-set grid among the file's grid descriptors (metadata only, no voxels).
-openvdb::GridBase::Ptr findLevelSet(const openvdb::GridPtrVec& grids)
+/// The grid to edit: the one named, else the default one.
+const VdbGridEntry& chooseGrid(const VdbLayout& layout, const std::string& requested)
 {
-    for (const auto& grid : grids) {
-        if (grid->isType<openvdb::FloatGrid>() && grid->getGridClass() == openvdb::GRID_LEVEL_SET) {
-            return grid;
+    if (!requested.empty()) {
+        for (const VdbGridEntry& grid : layout.grids) {
+            if (grid.name == requested) return grid;
         }
+        throw InputError("has no grid named '" + requested + "' (it holds " + describeGrids(layout) + ")");
     }
-    throw InputError("contains no float level-set grid");
+    if (const VdbGridEntry* grid = defaultGrid(layout)) return *grid;
+    if (levelSetNames(layout).empty()) {
+        throw InputError("contains no float level-set grid (it holds " + describeGrids(layout) + ")");
+    }
+    throw InputError("holds several level sets and none is named 'surface' (" + describeGrids(layout) + "): choose one",
+                     Remedy::ChooseGrid);
 }
 
-/// All grids of the file get loaded: refuse if their recorded in-core size exceeds memory.
-void requireMemoryFor(const openvdb::GridPtrVec& grids, const fs::path& path)
+/// Refuses a chosen grid that cannot be a distance field.
+void checkChosen(const VdbGridEntry& grid)
+{
+    if (!grid.isFloat())
+        throw InputError("grid '" + grid.name + "' holds " + grid.type + " values, not float distances");
+    if (grid.gridClass == "fog volume")
+        throw InputError("grid '" + grid.name + "' is a fog volume (densities), not distances");
+    if (!grid.instanceOf.empty()) {
+        throw InputError("grid '" + grid.name + "' shares the voxels of grid '" + grid.instanceOf +
+                         "' (an instance); open that grid instead");
+    }
+}
+
+/// Every grid read is held in memory: refuse if their recorded sizes exceed what is available.
+void requireMemoryFor(const VdbLayout& layout, const fs::path& path)
 {
     double total = 0.0;
-    for (const auto& grid : grids) {
-        const auto bytes = grid->getMetadata<openvdb::Int64Metadata>(openvdb::GridBase::META_FILE_MEM_BYTES);
-        if (bytes && bytes->value() < 0) throw InputError("corrupt (negative grid size)");
-        if (bytes) total += double(bytes->value());
-    }
+    for (const VdbGridEntry& grid : layout.grids) total += double(grid.memoryBytes);
     requireMemory(total, path.string());
+}
+
+/// A stream that throws on a short read: OpenVDB's File reader ignores some truncations and
+/// leaves the missing voxels uninitialised.
+template <typename Stream>
+void throwOnShortReads(Stream& in)
+{
+    in.exceptions(std::ios::failbit | std::ios::badbit);
+}
+
+/// The decoded grids of a file and its metadata.
+struct DecodedFile {
+    openvdb::GridPtrVec grids;
+    openvdb::MetaMap::Ptr metadata;
+};
+
+/// Decodes one grid alone: the file's header and metadata, a grid count of one and that grid's
+/// bytes go through OpenVDB's stream reader, so other grids (of types this build may not know)
+/// are never touched.
+DecodedFile decodeOne(const fs::path& path, const VdbLayout& layout, const VdbGridEntry& grid)
+{
+    std::ifstream file(path, std::ios::binary);
+    throwOnShortReads(file);
+    const std::int32_t one = 1;
+    std::string bytes(std::size_t(layout.gridTableOffset + std::int64_t(sizeof one) + grid.end - grid.begin), '\0');
+    file.read(bytes.data(), std::streamsize(layout.gridTableOffset));
+    std::memcpy(bytes.data() + layout.gridTableOffset, &one, sizeof one);
+    file.seekg(grid.begin);
+    file.read(bytes.data() + layout.gridTableOffset + sizeof one, std::streamsize(grid.end - grid.begin));
+    std::istringstream in(std::move(bytes));
+    throwOnShortReads(in);
+    openvdb::io::Stream stream(in, /*delayLoad=*/false);
+    return {*stream.getGrids(), stream.getMetadata()};
+}
+
+/// Decodes every grid in order: a streamed file (no offsets) cannot be read grid by grid.
+DecodedFile decodeAll(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    throwOnShortReads(in);
+    openvdb::io::Stream stream(in, /*delayLoad=*/false);
+    return {*stream.getGrids(), stream.getMetadata()};
+}
+
+/// The chosen grid and the others (decoded where this build can), warning of what cannot be kept.
+std::pair<openvdb::FloatGrid::Ptr, VdbCompanions> decodeGrids(const fs::path& path, const VdbLayout& layout,
+                                                              const VdbGridEntry& chosen,
+                                                              std::vector<std::string>& warnings)
+{
+    DecodedFile file;
+    if (layout.hasGridOffsets) {
+        file = decodeOne(path, layout, chosen);
+        for (const VdbGridEntry& other : layout.grids) {
+            if (&other == &chosen) continue;
+            try {
+                if (!openvdb::GridBase::isRegistered(other.type))
+                    throw std::runtime_error("type " + other.type + " unknown");
+                file.grids.push_back(decodeOne(path, layout, other).grids.front());
+            } catch (const std::exception& e) {
+                warnings.push_back(path.string() + ": grid '" + other.name + "' cannot be read by this build (" +
+                                   e.what() +
+                                   "); it is left out of files saved from this one, which cannot replace this file");
+            }
+        }
+    } else {
+        file = decodeAll(path);
+        const auto it = std::find_if(file.grids.begin(), file.grids.end(),
+                                     [&](const auto& g) { return g->getName() == chosen.name; });
+        std::rotate(file.grids.begin(), it, it + 1);
+    }
+    auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.grids.front());
+    if (!grid) throw InputError("grid '" + chosen.name + "' is unreadable");
+    return {grid, VdbCompanions{{file.grids.begin() + 1, file.grids.end()}, *file.metadata}};
+}
+
+/// A float grid that is not a proper band (Mantaflow writes `phi` dense, background 0, in cell
+/// units) rebuilt into one around its zero level, with a warning.
+openvdb::FloatGrid::Ptr asNarrowBand(openvdb::FloatGrid::Ptr grid, const fs::path& path,
+                                     std::vector<std::string>& warnings)
+{
+    const std::string why = whyNotNarrowBand(*grid);
+    if (why.empty()) return grid;
+    warnings.push_back(path.string() + ": grid '" + grid->getName() + "' is not a narrow-band level set (" + why +
+                       "): rebuilt as a band of " + formatNumber(FieldImage::kDefaultHalfWidthVoxels) +
+                       " voxels around its zero level");
+    return rebuildNarrowBand(*grid, FieldImage::kDefaultHalfWidthVoxels);
+}
+
+/// Writing over a file that holds a grid this build cannot decode would lose that grid.
+void refuseToLoseGrids(const fs::path& path)
+{
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec)) return;
+    VdbLayout layout;
+    try {
+        layout = scanVdbLayout(path);
+    } catch (const InputError&) {
+        return;  // not a readable .vdb: nothing in it could be kept anyway
+    }
+    for (const VdbGridEntry& grid : layout.grids) {
+        if (!openvdb::GridBase::isRegistered(grid.type)) {
+            throw InputError(path.string() + ": holds grid '" + grid.name + "' of a type this build cannot read (" +
+                             grid.type + "); writing over it would lose that grid: choose another file");
+        }
+    }
 }
 
 void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field, const fs::path& path)
@@ -69,58 +193,40 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
     }
 }
 
-/// Reads every grid with a stream that throws on a short read: OpenVDB's own File reader
-/// ignores some truncations and leaves the missing voxels uninitialised.
-openvdb::GridPtrVecPtr readAllGridsStrictly(const fs::path& path)
+VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
 {
-    std::ifstream in(path, std::ios::binary);
-    in.exceptions(std::ios::failbit | std::ios::badbit);
-    openvdb::io::Stream stream(in, /*delayLoad=*/false);
-    return stream.getGrids();
-}
+    const VdbLayout layout = scanVdbLayout(path);
+    const VdbGridEntry& chosen = chooseGrid(layout, gridName);
+    checkChosen(chosen);
+    requireMemoryFor(layout, path);
 
-FieldImage readUnchecked(const fs::path& path)
-{
-    // Headers first (no voxels): refuse files without a level set or too big for memory.
-    openvdb::io::File file(path.string());
-    file.open(/*delayLoad=*/false);
-    const auto meta = file.getMetadata();
-    const openvdb::GridPtrVecPtr descriptors = file.readAllGridMetadata();
-    const auto descriptor = findLevelSet(*descriptors);
-    requireMemoryFor(*descriptors, path);
-    file.close();
-
-    openvdb::FloatGrid::Ptr grid;
-    const openvdb::GridPtrVecPtr grids = readAllGridsStrictly(path);
-    for (const auto& candidate : *grids) {
-        if (candidate->getName() == descriptor->getName()) {
-            grid = openvdb::gridPtrCast<openvdb::FloatGrid>(candidate);
-            break;
-        }
-    }
-    if (!grid) throw InputError("grid '" + descriptor->getName() + "' is unreadable");
-
+    std::vector<std::string> warnings;
+    auto [grid, companions] = decodeGrids(path, layout, chosen, warnings);
+    openvdb::MetaMap& meta = companions.metadata;
     std::string units = FieldImage::kDefaultUnits;
-    if (auto u = meta->getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
-    FieldImage field(grid, units);
-    checkDocumentMetadata(*meta, field, path);
-    return field;
+    if (auto u = meta.getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
+    FieldImage field(asNarrowBand(grid, path, warnings), units);
+    checkDocumentMetadata(meta, field, path);
+    for (const char* ours : {kMetaVersion, kMetaUnits, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
+        meta.removeMeta(ours);
+    }
+    return {std::move(field), std::move(companions), std::move(warnings)};
 }
 
 }  // namespace
 
-FieldImage readFieldImage(const fs::path& path)
+VdbDocument readVdbDocument(const fs::path& path, const std::string& gridName)
 {
     openvdb::initialize();
     std::error_code ec;
     if (!fs::exists(path, ec)) throw InputError(path.string() + ": no such file");
     if (!fs::is_regular_file(path, ec)) throw InputError(path.string() + ": not a regular file");
     try {
-        return readUnchecked(path);
+        return readUnchecked(path, gridName);
     } catch (const InputError& e) {
         const std::string what = e.what();
         if (what.rfind(path.string(), 0) == 0) throw;
-        throw InputError(path.string() + ": " + what);
+        throw InputError(path.string() + ": " + what, e.remedy());
     } catch (const std::ios_base::failure&) {
         throw InputError(path.string() + ": truncated (the file ends inside its voxel data)");
     } catch (const std::bad_alloc&) {
@@ -130,18 +236,33 @@ FieldImage readFieldImage(const fs::path& path)
     }
 }
 
-void writeFieldImage(const FieldImage& field, const fs::path& path)
+FieldImage readFieldImage(const fs::path& path, const std::string& gridName)
+{
+    return readVdbDocument(path, gridName).field;
+}
+
+void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCompanions& companions)
 {
     openvdb::initialize();
+    refuseToLoseGrids(path);
     AtomicFile out(path);
-    openvdb::MetaMap meta;
+    openvdb::MetaMap meta = companions.metadata;
     meta.insertMeta(kMetaVersion, openvdb::Int32Metadata(kVdbFormatVersion));
     meta.insertMeta(kMetaUnits, openvdb::StringMetadata(field.units()));
     meta.insertMeta(kMetaVoxelSize, openvdb::DoubleMetadata(field.voxelSize()));
     meta.insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(field.grid()))));
+    openvdb::GridCPtrVec grids{field.gridPtr()};
+    if (field.grid().getName().empty()) {
+        // A shallow copy (the tree is shared) carries the name documents promise.
+        auto named = openvdb::ConstPtrCast<openvdb::FloatGrid>(field.gridPtr())->copy();
+        named->setName("surface");
+        grids.front() = named;
+    }
+    meta.insertMeta(kVdbEditedGridKey, openvdb::StringMetadata(grids.front()->getName()));
+    grids.insert(grids.end(), companions.grids.begin(), companions.grids.end());
     try {
         openvdb::io::File file(out.temporaryPath().string());
-        file.write(openvdb::GridCPtrVec{field.gridPtr()}, meta);
+        file.write(grids, meta);
         file.close();
     } catch (const std::exception& e) {
         throw InputError(path.string() + ": cannot write (" + e.what() + ")");

@@ -2,32 +2,56 @@
 /// @file vdb_file.h
 /// @brief Field images in OpenVDB's `.vdb` format, readable by Houdini, Blender and OpenVDB tools.
 ///
-/// A document holds one float level-set grid named "surface" and file metadata:
+/// A document holds one float level-set grid (named "surface" in the files we make) and file
+/// metadata:
 ///   sculpt.format_version (int)   — kVdbFormatVersion; newer files are refused
 ///   sculpt.units          (string)— length unit of world coordinates, e.g. "mm"
 ///   sculpt.voxel_size     (double)— redundant with the transform; a mismatch means damage
 ///   sculpt.checksum       (string)— gridChecksum() in hex; a mismatch means damage
-/// Files from other programs (no sculpt metadata) are accepted if they hold a float level set;
-/// the first such grid is used.
+/// Files from other programs are accepted: the grid named "surface" is edited, else the only
+/// float level set, else the one the user names. Their other grids and metadata are kept and
+/// written back on save; a float grid that is not a narrow band (a dense `phi`) is rebuilt into one.
 
 #include "core/field/field_image.h"
 
+#include <openvdb/openvdb.h>
+
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace sculpt {
 
 /// Version of our metadata layout, written into every document.
 constexpr int kVdbFormatVersion = 1;
 
-/// Reads a field image.
+/// What a file held besides the edited grid, written back unchanged on save.
+struct VdbCompanions {
+    openvdb::GridPtrVec grids;  ///< the other grids, decoded
+    openvdb::MetaMap metadata;  ///< the file's metadata, less our own entries
+};
+
+struct VdbDocument {
+    FieldImage field;
+    VdbCompanions companions;
+    /// Grids that cannot be kept (a type this OpenVDB cannot decode), a band rebuilt, ...
+    std::vector<std::string> warnings;
+};
+
+/// Reads a document: the grid named `gridName`, or when that is empty the one chosen as above.
 /// @throws InputError naming the file if it is missing, not an OpenVDB file, truncated or
-///         corrupt, holds no float level set, was written by a newer format version, or would
-///         need more memory than is available.
-FieldImage readFieldImage(const std::filesystem::path& path);
+///         corrupt, holds no usable grid (or several level sets and no choice), was written by
+///         a newer format version, or would need more memory than is available.
+VdbDocument readVdbDocument(const std::filesystem::path& path, const std::string& gridName = {});
+
+/// readVdbDocument's field alone, for readers that do not write the file back.
+FieldImage readFieldImage(const std::filesystem::path& path, const std::string& gridName = {});
 
 /// Writes a field image atomically (temporary file, then rename): a failure or a crash leaves
-/// any previous file untouched and no partial file behind.
-/// @throws InputError naming the file if its directory does not exist or it cannot be written.
-void writeFieldImage(const FieldImage& field, const std::filesystem::path& path);
+/// any previous file untouched and no partial file behind. The grid keeps its name ("surface"
+/// if it has none); `companions` are written after it.
+/// @throws InputError naming the file if its directory does not exist, it cannot be written, or
+///         it is a .vdb holding a grid this build cannot decode (writing would lose that grid).
+void writeFieldImage(const FieldImage& field, const std::filesystem::path& path, const VdbCompanions& companions = {});
 
 }  // namespace sculpt

@@ -17,7 +17,8 @@ namespace sculpt::cli {
 namespace {
 
 struct ApplyOptions {
-    std::string input, script, output, mesh;
+    DocumentInput input;
+    std::string script, output, mesh;
     int threads = 0;
 };
 
@@ -49,7 +50,7 @@ void addApplyCommand(CLI::App& app)
         "apply", "Replay a stroke script (brush strokes, undo and redo; see data/strokes.schema.json\n"
                  "and data/strokes/) on a document. Replays are deterministic: the same input and\n"
                  "script give the same output bit for bit, whatever the thread count.");
-    cmd->add_option("input", options->input, "the .vdb document to sculpt")->required();
+    addDocumentInput(*cmd, options->input, "the .vdb document to sculpt");
     cmd->add_option("script", options->script, "the stroke script (.json)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");

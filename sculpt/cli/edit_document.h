@@ -5,16 +5,17 @@
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
+#include "sculpt/cli/document_input.h"
 
 #include <functional>
 #include <string>
 
 namespace sculpt::cli {
 
-/// Reads `input`, applies `edit` (drawing a bar labelled `label`), writes `output`; returns the
-/// edited field for the command's report. Fails before any work if `output` cannot be written,
+/// Reads `input` (its chosen grid), applies `edit` (drawing a bar labelled `label`), writes `output`; returns the
+/// edited field for the command's report. The file's other grids and metadata are written too. Fails before any work if `output` cannot be written,
 /// and refuses (writing nothing) an edit that leaves nothing of the model.
-FieldImage editDocument(const std::string& input, const std::string& output, const std::string& label,
+FieldImage editDocument(const DocumentInput& input, const std::string& output, const std::string& label,
                         const std::function<void(FieldImage&, const Progress&)>& edit);
 
 }  // namespace sculpt::cli

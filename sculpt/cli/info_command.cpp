@@ -1,7 +1,8 @@
 #include "core/base/text_format.h"
-#include "core/io/vdb_file.h"
+#include "core/io/vdb_layout.h"
 #include "core/mesh/field_measures.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/document_input.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -15,9 +16,17 @@ namespace sculpt::cli {
 namespace {
 
 struct InfoOptions {
-    std::string input;
+    DocumentInput input;
     bool json = false;
 };
+
+nlohmann::json gridsJson(const VdbLayout& layout)
+{
+    nlohmann::json grids = nlohmann::json::array();
+    for (const VdbGridEntry& g : layout.grids)
+        grids.push_back({{"name", g.name}, {"type", g.type}, {"class", g.gridClass}});
+    return grids;
+}
 
 nlohmann::json toJson(const FieldMeasures& m, const std::string& units)
 {
@@ -35,10 +44,12 @@ nlohmann::json toJson(const FieldMeasures& m, const std::string& units)
             {"components", m.components}};
 }
 
-void printText(const FieldMeasures& m, const std::string& units, const std::string& input)
+void printText(const FieldMeasures& m, const std::string& units, const std::string& input, const std::string& grid,
+               const VdbLayout& layout)
 {
     const char* u = units.c_str();
     std::printf("file:                 %s\n", input.c_str());
+    std::printf("grid:                 %s (the file holds %s)\n", grid.c_str(), describeGrids(layout).c_str());
     std::printf("voxel size:           %g %s (band half width %g voxels)\n", m.voxelSize, u, m.halfWidthVoxels);
     std::printf("active voxels:        %llu\n", static_cast<unsigned long long>(m.activeVoxels));
     std::printf("memory:               %s\n", formatBytes(double(m.memoryBytes)).c_str());
@@ -52,12 +63,16 @@ void printText(const FieldMeasures& m, const std::string& units, const std::stri
 
 void runInfo(const InfoOptions& o)
 {
-    const FieldImage field = readFieldImage(o.input);
+    const FieldImage field = readDocument(o.input).field;
+    const VdbLayout layout = scanVdbLayout(o.input.path);
     const FieldMeasures m = measureField(field);
     if (o.json) {
-        std::cout << toJson(m, field.units()).dump() << "\n";
+        nlohmann::json report = toJson(m, field.units());
+        report["grid"] = field.grid().getName();
+        report["grids"] = gridsJson(layout);
+        std::cout << report.dump() << "\n";
     } else {
-        printText(m, field.units(), o.input);
+        printText(m, field.units(), o.input.path, field.grid().getName(), layout);
     }
 }
 
@@ -69,12 +84,13 @@ void addInfoCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("info", "Print a document's voxel size, active voxels, memory, bounding box, volume,\n"
                                    "area, Euler characteristic (2 per sphere-like piece, 0 per torus) and\n"
-                                   "number of connected surface components.");
-    cmd->add_option("input", options->input, "the .vdb document to measure")->required();
+                                   "number of connected surface components, and the grids the file holds.");
+    addDocumentInput(*cmd, options->input, "the .vdb document to measure");
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
                   "bbox_min, bbox_max, volume, area, euler_characteristic, components\n"
-                  "(plus units and half_width_voxels)");
+                  "(plus units, half_width_voxels, grid: the grid measured, and grids: every\n"
+                  "grid of the file with its name, type and class)");
     cmd->callback([options] { runInfo(*options); });
 }
 

@@ -33,6 +33,7 @@ const char* remedyFlag(sculpt::Remedy remedy)
     case sculpt::Remedy::FinerVoxelSize: return " (a smaller --voxel-size)";
     case sculpt::Remedy::AlignShapes: return " (--align)";
     case sculpt::Remedy::DescribeRawLayout: return " (--raw-dims, --raw-type, --raw-spacing)";
+    case sculpt::Remedy::ChooseGrid: return " with --grid NAME";
     }
     return "";
 }

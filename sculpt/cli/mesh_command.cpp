@@ -1,8 +1,8 @@
 #include "core/base/atomic_file.h"
 #include "core/io/mesh_file.h"
-#include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/document_input.h"
 
 #include <CLI/CLI.hpp>
 
@@ -14,7 +14,7 @@ namespace sculpt::cli {
 namespace {
 
 struct MeshOptions {
-    std::string input;
+    DocumentInput input;
     std::string output;
 };
 
@@ -22,7 +22,7 @@ void runMesh(const MeshOptions& o)
 {
     meshFormatOf(o.output);
     AtomicFile::checkTarget(o.output);
-    const FieldImage field = readFieldImage(o.input);
+    const FieldImage field = readDocument(o.input).field;
     const TriangleMesh mesh = meshLevelSet(field);
     writeMesh(mesh, o.output);
     std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
@@ -38,7 +38,7 @@ void addMeshCommand(CLI::App& app)
         app.add_subcommand("mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
                                    "or rendering. The format follows the output's extension: .ply (binary, with\n"
                                    "normals), .obj (text) or .stl (binary).");
-    cmd->add_option("input", options->input, "the .vdb document to mesh")->required();
+    addDocumentInput(*cmd, options->input, "the .vdb document to mesh");
     cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
     cmd->callback([options] { runMesh(*options); });
 }

@@ -12,14 +12,15 @@ namespace sculpt::cli {
 namespace {
 
 struct OffsetOptions {
-    std::string input, output;
+    DocumentInput input;
+    std::string output;
     double distance = 0.0;
 };
 
 void runOffset(const OffsetOptions& o)
 {
     const FieldImage field = editDocument(o.input, o.output, "offsetting", [&](FieldImage& f, const Progress& p) {
-        f = applyFilter(std::move(f), {ModelFilter::Kind::Offset, 0, false, o.distance}, o.input, p);
+        f = applyFilter(std::move(f), {ModelFilter::Kind::Offset, 0, false, o.distance}, o.input.path, p);
     });
     std::cout << "wrote " << o.output << ": surface moved " << o.distance << " " << field.units()
               << " along its normal\n";
@@ -33,7 +34,7 @@ void addOffsetCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("offset", "Move the whole surface along its normal by a distance: positive grows\n"
                                      "(thickens), negative shrinks (thins). Cost grows with |distance| / voxel size.");
-    cmd->add_option("input", options->input, "the .vdb document")->required();
+    addDocumentInput(*cmd, options->input, "the .vdb document");
     cmd->add_option("--distance", options->distance, "offset in world units (> 0 grows)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->callback([options] { runOffset(*options); });

@@ -1,9 +1,9 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/io/image_file.h"
-#include "core/io/vdb_file.h"
 #include "core/render/ray_tracer.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/document_input.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/frame_files.h"
 
@@ -22,7 +22,8 @@ namespace fs = std::filesystem;
 using openvdb::Vec3d;
 
 struct RenderCommandOptions {
-    std::string input, output;
+    DocumentInput input;
+    std::string output;
     RenderOptions render;
     std::vector<double> camera, lookAt, up;
     double fov = 35.0;
@@ -79,9 +80,9 @@ void runRender(RenderCommandOptions o)
 {
     o.render.background = parseBackground(o.background);
     o.render.validate();
-    const bool sequence = fs::is_directory(o.input);
+    const bool sequence = fs::is_directory(o.input.path);
     if (sequence && o.turntable > 0) {
-        throw InputError(o.input + ": --turntable turns one document, not a directory of frames");
+        throw InputError(o.input.path + ": --turntable turns one document, not a directory of frames");
     }
     if (sequence || o.turntable > 0) {
         imageFormatOf("frame." + o.format);
@@ -92,22 +93,22 @@ void runRender(RenderCommandOptions o)
     }
     if (sequence) {
         // One camera for every frame: it frames the union of the frames' bounds.
-        const std::vector<fs::path> frames = documentsIn(o.input);
+        const std::vector<fs::path> frames = documentsIn(o.input.path);
         // Frames are read twice (here and to render) so that only one is in memory at a time.
         SurfaceExtent extent;
-        for (const fs::path& frame : frames) extent.add(readFieldImage(frame));
+        for (const fs::path& frame : frames) extent.add(readFieldImage(frame, o.input.grid));
         const Camera camera = chooseCamera(o, extent);
         ProgressBar bar("rendering " + std::to_string(frames.size()) + " frames");
         const Progress progress = bar.callback();
         for (std::size_t i = 0; i < frames.size(); ++i) {
-            renderOne(readFieldImage(frames[i]), camera, o.render, framePath(o.output, int(i), o.format), progress,
-                      double(i) / frames.size(), double(i + 1) / frames.size());
+            renderOne(readFieldImage(frames[i], o.input.grid), camera, o.render, framePath(o.output, int(i), o.format),
+                      progress, double(i) / frames.size(), double(i + 1) / frames.size());
         }
         std::cout << "wrote " << frames.size() << " frames to " << o.output << " (frame_0000." << o.format
                   << " ...), one camera for all\n";
         return;
     }
-    const FieldImage field = readFieldImage(o.input);
+    const FieldImage field = readDocument(o.input).field;
     const Camera camera = chooseCamera(o, SurfaceExtent(field));
     ProgressBar bar("rendering");
     const Progress progress = bar.callback();
@@ -137,7 +138,7 @@ void addRenderCommand(CLI::App& app)
                   ".png a tone-mapped 8-bit picture. --turntable N writes N frames around the model into\n"
                   "the directory -o; a directory of .vdb frames (a morph) renders to frames in -o with one\n"
                   "camera that frames them all. Without --camera, a three-quarter view frames the model.");
-    cmd->add_option("input", o->input, "a .vdb document, or a directory of .vdb frames")->required();
+    addDocumentInput(*cmd, o->input, "a .vdb document, or a directory of .vdb frames");
     cmd->add_option("-o,--output", o->output, "the image (.exr or .png), or a directory for frames")->required();
     cmd->add_option("--width", o->render.width, "image width in pixels (1 to 16384)")->capture_default_str();
     cmd->add_option("--height", o->render.height, "image height in pixels (1 to 16384)")->capture_default_str();

@@ -14,7 +14,8 @@ namespace sculpt::cli {
 namespace {
 
 struct SmoothOptions {
-    std::string input, output;
+    DocumentInput input;
+    std::string output;
     int iterations = 10;
     bool keepVolume = false;
 };
@@ -24,7 +25,7 @@ void runSmooth(const SmoothOptions& o)
     double before = 0.0;
     const FieldImage field = editDocument(o.input, o.output, "smoothing", [&](FieldImage& f, const Progress& p) {
         before = measureField(f).volume;
-        f = applyFilter(std::move(f), {ModelFilter::Kind::Smooth, o.iterations, o.keepVolume, 0.0}, o.input, p);
+        f = applyFilter(std::move(f), {ModelFilter::Kind::Smooth, o.iterations, o.keepVolume, 0.0}, o.input.path, p);
     });
     std::cout << "wrote " << o.output << ": " << o.iterations << " smoothing iterations, volume " << before << " -> "
               << measureField(field).volume << " " << field.units() << "^3\n";
@@ -38,7 +39,7 @@ void addSmoothCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("smooth", "Smooth the whole surface by mean-curvature flow: bumps and creases relax,\n"
                                      "small features vanish first. One iteration is one stable step (dt = h^2/6).");
-    cmd->add_option("input", options->input, "the .vdb document to smooth")->required();
+    addDocumentInput(*cmd, options->input, "the .vdb document to smooth");
     cmd->add_option("--iterations", options->iterations, "number of smoothing steps")
         ->check(nonNegativeNumber())
         ->capture_default_str();

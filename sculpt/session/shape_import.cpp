@@ -93,7 +93,11 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
 FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings,
                      const Progress& progress)
 {
-    if (lowerExtension(input) == ".vdb") return readFieldImage(input);
+    if (lowerExtension(input) == ".vdb") {
+        VdbDocument document = readVdbDocument(input);
+        warnings.insert(warnings.end(), document.warnings.begin(), document.warnings.end());
+        return std::move(document.field);
+    }
     ImportOptions options;
     options.voxelSize = voxelSize;
     ImportReport report;

@@ -27,9 +27,16 @@ CommandResult runSculpt(const std::string& args, const std::string& workDir)
 
 CommandResult runSculptBounded(const std::string& args, const std::string& workDir, int seconds, int addressSpaceMiB)
 {
-    return runCommand("ulimit -v " + std::to_string(addressSpaceMiB * 1024) + " && timeout " + std::to_string(seconds) +
-                          " '" SCULPT_EXECUTABLE "' " + args,
-                      workDir);
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer reserves terabytes of shadow address space: cap its allocations and the
+    // resident memory instead.
+    const std::string mib = std::to_string(addressSpaceMiB);
+    const std::string cap = "ASAN_OPTIONS=\"$ASAN_OPTIONS:max_allocation_size_mb=" + mib +
+                            ":allocator_may_return_null=1:hard_rss_limit_mb=" + mib + "\" ";
+#else
+    const std::string cap = "ulimit -v " + std::to_string(addressSpaceMiB * 1024) + " && ";
+#endif
+    return runCommand(cap + "timeout " + std::to_string(seconds) + " '" SCULPT_EXECUTABLE "' " + args, workDir);
 }
 
 CommandResult runCommand(const std::string& command, const std::string& workDir)

@@ -3,10 +3,13 @@
 
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
+#include "core/io/vdb_layout.h"
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/ui/ui_driver.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/io/File.h>
 #include <vtkImageData.h>
 
 #include <algorithm>
@@ -218,6 +221,43 @@ TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing
     EXPECT_EQ(reports[2]["error"], "");
     EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);
     EXPECT_EQ(reports[2]["undo"], 0);  // a freshly opened document
+}
+
+TEST(SculptUi, AFileOfSeveralLevelSetsAsksWhichToSculptAndKeepsTheOthers)
+{
+    TempDir dir;
+    auto left = makeSphere(8.0, 0.5).grid().deepCopy();
+    left->setName("left");
+    auto right = makeSphere(14.0, 0.5).grid().deepCopy();
+    right->setName("right");
+    openvdb::MetaMap meta;
+    meta.insertMeta("creator", openvdb::StringMetadata("Houdini 20"));
+    openvdb::io::File((dir / "pair.vdb").string()).write({left, right}, meta);
+    const std::string leftSum = formatChecksum(gridChecksum(*left));
+
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.key("O", {"ctrl"}).text((dir / "pair.vdb").string()).key("Enter").wait(0.3);
+    events.screenshot(dir / "choice.png").report(r).key("2").untilJobEnds().report(r);
+    events.drag(560, 380, 700, 380).key("S", {"ctrl"}).report(r);
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_EQ(reports[0]["title"], "untitled");  // asking, nothing opened yet
+    EXPECT_EQ(reports[1]["title"], "pair.vdb");
+    EXPECT_EQ(reports[1]["checksum"], formatChecksum(gridChecksum(*right)));
+    EXPECT_FALSE(reports[2]["modified"].get<bool>());
+
+    const VdbLayout saved = scanVdbLayout(dir / "pair.vdb");
+    ASSERT_EQ(saved.grids.size(), 2u);
+    EXPECT_EQ(saved.editedGrid, "right");
+    EXPECT_EQ(checksumOfFile(dir / "pair.vdb"), reports[2]["checksum"]);
+    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);  // the stroke is in the file
+    openvdb::io::File file((dir / "pair.vdb").string());
+    file.open();
+    EXPECT_EQ(file.getMetadata()->metaValue<std::string>("creator"), "Houdini 20");
+    EXPECT_EQ(formatChecksum(gridChecksum(*openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("left")))), leftSum);
 }
 
 TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)

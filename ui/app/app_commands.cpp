@@ -3,7 +3,7 @@
 #include "core/base/text_format.h"
 #include "core/field/csg_combine.h"
 #include "core/io/mesh_file.h"
-#include "core/io/vdb_file.h"
+#include "core/io/vdb_layout.h"
 #include "sculpt/session/morph_run.h"
 #include "sculpt/session/scene_bake.h"
 #include "sculpt/session/shape_import.h"
@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <utility>
 
 namespace sculpt::ui {
 
@@ -220,6 +221,12 @@ void SculptApp::openRecent(const fs::path& path)
     confirmPrompt();
 }
 
+void SculptApp::openChosenGrid(std::optional<std::string> grid)
+{
+    const std::optional<Dialogs::GridChoice> choice = std::exchange(mDialogs.gridChoice, std::nullopt);
+    if (choice && grid) startOpen(choice->file, *grid);
+}
+
 void SculptApp::confirmPrompt()
 {
     const Dialogs::Prompt prompt = mDialogs.prompt;
@@ -312,21 +319,32 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
         });
 }
 
-void SculptApp::startOpen(const fs::path& path)
+void SculptApp::startOpen(const fs::path& path, const std::string& grid)
 {
     if (busy()) return;
+    if (grid.empty()) {
+        // A file of several level sets and none to take by default: ask which (a damaged
+        // file is left for the job to report).
+        try {
+            const VdbLayout layout = scanVdbLayout(path);
+            if (!defaultGrid(layout) && levelSetNames(layout).size() > 1) {
+                mDialogs.gridChoice = Dialogs::GridChoice{path, levelSetNames(layout)};
+                return;
+            }
+        } catch (const InputError&) {}
+    }
     // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
+    auto warnings = std::make_shared<std::vector<std::string>>();
     startJob<std::unique_ptr<Document>>(
         "open " + path.filename().string(),
-        [path](const Progress& p) {
-            FieldImage field = readFieldImage(path);
-            report(p, 0.3);  // reading is quick next to meshing
-            return std::make_unique<Document>(std::move(field), path, scaledProgress(p, 0.3, 1.0));
+        [path, warnings, grid](const Progress& p) {
+            return std::make_unique<Document>(Document::open(path, p, warnings.get(), grid));
         },
-        [this, path](std::unique_ptr<Document> document) {
+        [this, path, warnings](std::unique_ptr<Document> document) {
             setDocument(std::move(document), true);
             mRecent.add(path);
             mDialogs.notice = "opened " + path.string();
+            if (!warnings->empty()) mDialogs.notice += " (" + warnings->front() + ")";
         });
 }
 
@@ -570,8 +588,7 @@ void SculptApp::recover(bool accept)
         return;
     }
     try {
-        auto recovered = std::make_unique<Document>(readFieldImage(*file), mDocument->path());
-        recovered->markUnsaved();
+        auto recovered = std::make_unique<Document>(Document::recover(*file, mDocument->path()));
         setDocument(std::move(recovered), false);
         mDialogs.notice = "recovered from " + file->string();
     } catch (const InputError& e) {

@@ -49,6 +49,9 @@ int main(int argc, char** argv)
                  "Left drag sculpts, middle/right drag orbits, wheel zooms; F1 lists every key.\n"
                  "For tests and demos it replays recorded input (--play) without a person.");
     cli.add_option("file", options.document, "the .vdb document to open (default: a new clay ball)");
+    cli.add_option("--grid", options.grid,
+                   "the grid to sculpt when the file holds several level sets (default: the one named\n"
+                   "'surface', else the only one; File > Open asks). The others are kept.");
     cli.add_option("--play", options.play, "replay input events recorded with --record (data/ui-events.schema.json)")
         ->check(CLI::ExistingFile);
     cli.add_option("--record", options.record, "write every input event to this file at exit");

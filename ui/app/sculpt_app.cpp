@@ -36,10 +36,10 @@ std::size_t residentBytes()
     return resident * std::size_t(sysconf(_SC_PAGESIZE));
 }
 
-std::unique_ptr<Document> openOrCreate(const fs::path& path)
+std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& grid)
 {
     if (path.empty()) return std::make_unique<Document>(Document::create(NewShape{}));
-    return std::make_unique<Document>(Document::open(path));
+    return std::make_unique<Document>(Document::open(path, {}, nullptr, grid));
 }
 
 }  // namespace
@@ -53,7 +53,7 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
       mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
-    setDocument(openOrCreate(mOptions.document), true);
+    setDocument(openOrCreate(mOptions.document, mOptions.grid), true);
     mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
     mDialogs.recovery = mAutosave.pending(mOptions.document);
     if (!mOptions.document.empty()) mRecent.add(mOptions.document);
@@ -114,7 +114,7 @@ double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPla
 bool SculptApp::modalOpen() const
 {
     return mDialogs.prompt != Dialogs::Prompt::None || mDialogs.afterUnsaved || mDialogs.recovery ||
-           !mDialogs.error.empty();
+           mDialogs.gridChoice || !mDialogs.error.empty();
 }
 
 void SculptApp::showError(const std::string& message)

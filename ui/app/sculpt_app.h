@@ -37,6 +37,7 @@ class AppWindow;
 
 struct AppOptions {
     std::filesystem::path document;                       ///< empty: the default clay ball
+    std::string grid;                                     ///< the document's grid, in a file of several
     std::filesystem::path play, record;                   ///< event recordings
     std::filesystem::path screenshot;                     ///< after the opening view, or after the replay
     std::filesystem::path strokes;                        ///< a stroke script to replay into the document
@@ -83,8 +84,14 @@ struct Dialogs {
     MorphOptions morph;                             ///< the Morph To prompt's settings (target: path)
     std::optional<Command> afterUnsaved;            ///< asking "save changes?" before this command
     std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
-    std::string error;                              ///< shown until dismissed
-    std::string notice;                             ///< status line (saved, autosaved, ...)
+    /// Asking which level set of a file to open (it holds several, none named "surface").
+    struct GridChoice {
+        std::filesystem::path file;
+        std::vector<std::string> grids;
+    };
+    std::optional<GridChoice> gridChoice;
+    std::string error;   ///< shown until dismissed
+    std::string notice;  ///< status line (saved, autosaved, ...)
     bool help = false;
     bool focusField = false;
 };
@@ -139,6 +146,8 @@ public:
     void confirmPrompt();
     void recover(bool accept);
     void answerUnsaved(bool save, bool discard);
+    /// Opens the grid chosen in the grid dialog (nothing: the choice was cancelled).
+    void openChosenGrid(std::optional<std::string> grid);
     void openRecent(const std::filesystem::path& path);
 
 private:
@@ -178,7 +187,7 @@ private:
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
     /// Opens the document at `path` as a job; the old one stays if it fails.
-    void startOpen(const std::filesystem::path& path);
+    void startOpen(const std::filesystem::path& path, const std::string& grid = {});
     /// Writes the surface as a mesh file as a job.
     void startExport(const std::filesystem::path& path);
     /// Reads the file at `path` as the follow brush's target (and the ghost), as a job.

@@ -50,7 +50,7 @@ bool Autosave::tick(const Document& document, double nowSeconds, bool strokeActi
     try {
         std::error_code ec;
         fs::create_directories(mDir / "recovery", ec);
-        writeFieldImage(document.session().field(), recoveryFile(document.path()));
+        writeFieldImage(document.session().field(), recoveryFile(document.path()), document.companions());
     } catch (const InputError& e) {
         error = std::string("autosave failed: ") + e.what();
         return false;

@@ -47,13 +47,30 @@ Document Document::create(const NewShape& shape)
     }
 }
 
-Document Document::open(const std::filesystem::path& path) { return Document(readFieldImage(path), path); }
+Document Document::open(const std::filesystem::path& path, const Progress& progress, std::vector<std::string>* warnings,
+                        const std::string& grid)
+{
+    VdbDocument file = readVdbDocument(path, grid);
+    report(progress, 0.3);  // reading is quick next to meshing
+    Document document(std::move(file.field), path, scaledProgress(progress, 0.3, 1.0));
+    document.mCompanions = std::move(file.companions);
+    if (warnings) *warnings = std::move(file.warnings);
+    return document;
+}
+
+Document Document::recover(const std::filesystem::path& recoveryFile, std::filesystem::path documentPath)
+{
+    Document document = open(recoveryFile);
+    document.mPath = std::move(documentPath);
+    document.markUnsaved();
+    return document;
+}
 
 void Document::save() { saveAs(mPath); }
 
 void Document::saveAs(const std::filesystem::path& path)
 {
-    writeFieldImage(mSession.field(), path);
+    writeFieldImage(mSession.field(), path, mCompanions);
     mPath = path;
     mSavedState = mState;
 }

@@ -3,6 +3,7 @@
 /// @brief The open document: the sculpt session (field, live mesh, undo), where it is saved,
 ///        whether it has unsaved changes, and the log of its edits as a stroke script.
 
+#include "core/io/vdb_file.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
 
@@ -28,10 +29,17 @@ public:
 
     /// @throws InputError naming the setting (sizes not positive, too many voxels).
     static Document create(const NewShape& shape);
-    /// @throws InputError naming the file and what is wrong with it.
-    static Document open(const std::filesystem::path& path);
+    /// Reads a document (its other grids and metadata kept for saving); `warnings` gets what
+    /// the file could not give whole. @throws InputError naming the file and what is wrong with it.
+    /// `grid` names the grid to sculpt in a file of several (empty: readVdbDocument's choice).
+    static Document open(const std::filesystem::path& path, const Progress& progress = {},
+                         std::vector<std::string>* warnings = nullptr, const std::string& grid = {});
 
-    /// Writes to path() (atomically). @throws InputError naming the file.
+    /// The document at `documentPath` as its recovery file holds it, unsaved until saved.
+    static Document recover(const std::filesystem::path& recoveryFile, std::filesystem::path documentPath);
+
+    /// Writes to path() (atomically), with the other grids and metadata the file held.
+    /// @throws InputError naming the file (see writeFieldImage).
     void save();
     void saveAs(const std::filesystem::path& path);
     /// Writes the welded mesh (.ply, .obj, .stl). @throws InputError naming the file.
@@ -44,6 +52,8 @@ public:
     SculptSession& session() { return mSession; }
     const SculptSession& session() const { return mSession; }
     const std::filesystem::path& path() const { return mPath; }
+    /// The opened file's other grids and metadata, written with every save.
+    const VdbCompanions& companions() const { return mCompanions; }
     /// "face.vdb" or "untitled", with " *" when modified.
     std::string title() const;
     bool modified() const { return mState != mSavedState; }
@@ -72,6 +82,7 @@ private:
 
     SculptSession mSession;
     std::filesystem::path mPath;
+    VdbCompanions mCompanions;  // the opened file's other grids and metadata
     StrokeScript mLog;
     StrokeSources mPendingSources;
     std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold

@@ -72,6 +72,22 @@ void recoveryDialog(SculptApp& app)
     ImGui::End();
 }
 
+void gridDialog(SculptApp& app)
+{
+    const Dialogs::GridChoice& choice = *app.dialogs().gridChoice;
+    beginDialog("Which level set?");
+    ImGui::Text("%s holds several level sets and none is named 'surface'.", choice.file.filename().string().c_str());
+    ImGui::Text("Choose the one to sculpt; the others are kept in the file when it is saved.");
+    std::optional<std::string> chosen;
+    for (std::size_t i = 0; i < choice.grids.size(); ++i) {
+        const std::string label = choice.grids[i] + (i < 9 ? " (" + std::to_string(i + 1) + ")" : std::string());
+        if (ImGui::Button(label.c_str()) || (i < 9 && pressed(GLFW_KEY_1 + int(i)))) chosen = choice.grids[i];
+    }
+    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    ImGui::End();
+    if (chosen || cancel) app.openChosenGrid(chosen);
+}
+
 void unsavedDialog(SculptApp& app)
 {
     beginDialog("Unsaved changes");
@@ -198,6 +214,7 @@ void drawDialogs(SculptApp& app)
     Dialogs& d = app.dialogs();
     if (!d.error.empty()) return errorDialog(app);
     if (d.recovery) return recoveryDialog(app);
+    if (d.gridChoice) return gridDialog(app);
     if (d.afterUnsaved) return unsavedDialog(app);
     switch (d.prompt) {
     case Dialogs::Prompt::New: return newDialog(app);

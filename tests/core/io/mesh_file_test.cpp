@@ -10,6 +10,13 @@
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPLYReader.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
 
 namespace sculpt {
 namespace {
@@ -45,6 +52,31 @@ TEST(MeshFile, ReferenceMeshIsOrientedOutwards)
     EXPECT_TRUE(topology.closedManifold());
     EXPECT_EQ(topology.eulerCharacteristic(), 2);
     EXPECT_GT(test::meshVolume(mesh), 0.0);
+}
+
+TEST(MeshFile, PlyExportCarriesUnitNormalsPointingOutwards)
+{
+    TempDir dir;
+    const TriangleMesh mesh = meshLevelSet(makeSphere(10.0, 0.5));
+    ASSERT_EQ(mesh.normals.size(), mesh.positions.size());
+    writeMesh(mesh, dir / "ball.ply");
+    // Read back by VTK: the normals are the file's, not recomputed.
+    vtkNew<vtkPLYReader> reader;
+    reader->SetFileName((dir / "ball.ply").c_str());
+    reader->Update();
+    vtkDataArray* normals = reader->GetOutput()->GetPointData()->GetNormals();
+    ASSERT_NE(normals, nullptr);
+    ASSERT_EQ(normals->GetNumberOfTuples(), vtkIdType(mesh.positions.size()));
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i) {
+        double n[3], p[3];
+        normals->GetTuple(i, n);
+        reader->GetOutput()->GetPoint(i, p);
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const double radial =
+            (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / (length * std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+        ASSERT_NEAR(length, 1.0, 1e-3) << i;
+        ASSERT_GT(radial, 0.95) << i;  // outwards, within 18 degrees of the sphere's normal
+    }
 }
 
 TEST(MeshFile, FormatFollowsExtension)

@@ -65,6 +65,55 @@ TEST(MeshImport, ClosedMeshesInEveryFormatKeepTheirVolume)
     }
 }
 
+/// A VTK sphere written by VTK's writers in every variant they have, plus a big-endian PLY.
+std::vector<std::string> writeSphereInEveryVariant(const test::TempDir& dir)
+{
+    vtkNew<vtkSphereSource> sphere;
+    sphere->SetRadius(7.0);
+    sphere->SetThetaResolution(24);
+    sphere->SetPhiResolution(24);
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkPLYWriter> ply;
+    ply->SetInputConnection(triangles->GetOutputPort());
+    ply->SetFileName((dir / "little.ply").c_str());
+    ply->SetFileTypeToBinary();
+    ply->SetDataByteOrderToLittleEndian();
+    ply->Write();
+    ply->SetFileName((dir / "big.ply").c_str());
+    ply->SetDataByteOrderToBigEndian();
+    ply->Write();
+    ply->SetFileName((dir / "text.ply").c_str());
+    ply->SetFileTypeToASCII();
+    ply->Write();
+    vtkNew<vtkSTLWriter> stl;
+    stl->SetInputConnection(triangles->GetOutputPort());
+    stl->SetFileName((dir / "binary.stl").c_str());
+    stl->SetFileTypeToBinary();
+    stl->Write();
+    stl->SetFileName((dir / "text.stl").c_str());
+    stl->SetFileTypeToASCII();
+    stl->Write();
+    vtkNew<vtkOBJWriter> obj;
+    obj->SetInputConnection(triangles->GetOutputPort());
+    obj->SetFileName((dir / "ball.obj").c_str());
+    obj->Write();
+    return {"little.ply", "big.ply", "text.ply", "binary.stl", "text.stl", "ball.obj"};
+}
+
+TEST(MeshImport, OurReadersAgreeWithVtksOnFilesVtkWrote)
+{
+    test::TempDir dir;
+    for (const std::string& name : writeSphereInEveryVariant(dir)) {
+        const TriangleMesh mesh = readMesh(dir / name);
+        const test::VtkMeshReport vtk = test::vtkMeshReport(dir / name);
+        EXPECT_EQ(std::int64_t(mesh.triangles.size()), vtk.triangles) << name;
+        EXPECT_NEAR(test::meshVolume(mesh), vtk.volume, 1e-4 * vtk.volume) << name;
+        EXPECT_TRUE(test::meshTopology(mesh).closedManifold()) << name;  // corners joined (STL)
+        EXPECT_EQ(test::meshTopology(mesh).eulerCharacteristic(), 2) << name;
+    }
+}
+
 TEST(MeshImport, OpenMeshesAreReportedAndStillImported)
 {
     vtkNew<vtkSphereSource> sphere;
@@ -130,8 +179,21 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
     std::ofstream(dir / "binary.off") << "OFF BINARY\n";
     std::ofstream(dir / "four.off") << "4OFF\n1 0 0\n0 0 0 1\n";
     std::ofstream(dir / "word.off") << "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n";
+    const std::string triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    std::ofstream(dir / "beyond.obj") << triangle << "f 1 2 4\n";
+    std::ofstream(dir / "zero.obj") << triangle << "f 0 1 2\n";
+    std::ofstream(dir / "back.obj") << triangle << "f -1 -2 -4\n";
+    std::ofstream(dir / "slashes.obj") << triangle << "vt 0 0\nf 1/1 2/1 x/1\n";
+    std::ofstream(dir / "nan.obj") << "v 0 0 nan\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    const std::string plyHead = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                "0 0 0\n1 0 0\n0 1 0\n";
+    std::ofstream(dir / "index.ply") << plyHead << "3 0 1 3\n";
+    std::ofstream(dir / "list.ply") << plyHead << "200 0 1 2\n";
+    std::ofstream(dir / "nox.ply") << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float y\nend_header\n0\n";
     for (const char* name : {"huge.off", "cut.off", "index.off", "junk.stl", "empty.obj", "missing.ply", "ball.xyz",
-                             "binary.off", "four.off", "word.off"}) {
+                             "binary.off", "four.off", "word.off", "beyond.obj", "zero.obj", "back.obj", "slashes.obj",
+                             "nan.obj", "index.ply", "list.ply", "nox.ply"}) {
         try {
             readMesh(dir / name);
             ADD_FAILURE() << "no error for " << name;
@@ -141,7 +203,7 @@ TEST(MeshImport, BadFilesAreRefusedNamingTheFile)
     }
 }
 
-TEST(MeshImport, TruncatedPlyAndStlFilesAreRefusedBeforeVtkReadsThem)
+TEST(MeshImport, TruncatedPlyAndStlFilesAreRefused)
 {
     test::TempDir dir;
     vtkNew<vtkSphereSource> sphere;
@@ -172,6 +234,39 @@ TEST(MeshImport, TruncatedPlyAndStlFilesAreRefusedBeforeVtkReadsThem)
             } catch (const InputError& e) {
                 EXPECT_NE(std::string(e.what()).find(cut), std::string::npos) << e.what();
             }
+        }
+    }
+}
+
+/// Byte offsets of a binary PLY's face lists (uchar count, int indices), after its vertices.
+std::size_t firstFaceOffset(const std::string& bytes, std::size_t vertexBytes, std::size_t vertices)
+{
+    return bytes.find("end_header\n") + 11 + vertexBytes * vertices;
+}
+
+TEST(MeshImport, BinaryPlyFacesNamingNoVertexOrHugeListsAreRefused)
+{
+    test::TempDir dir;
+    TriangleMesh tetra;
+    tetra.positions.assign({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    tetra.triangles.assign({{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
+    writeMesh(tetra, dir / "tetra.ply");
+    ASSERT_EQ(readMesh(dir / "tetra.ply").triangles.size(), 4u);
+    std::ifstream in(dir / "tetra.ply", std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t face = firstFaceOffset(bytes, 12, 4);
+    ASSERT_EQ(bytes[face], char(3));
+    std::map<std::string, std::string> damaged{{"index.ply", bytes}, {"negative.ply", bytes}, {"list.ply", bytes}};
+    damaged["index.ply"][face + 1 + 4 * 2] = char(4);            // a vertex past the last
+    damaged["negative.ply"][face + 1 + 4 * 2 + 3] = char(0x80);  // a negative index
+    damaged["list.ply"][face] = char(250);                       // a list longer than the file
+    for (const auto& [name, content] : damaged) {
+        std::ofstream(dir / name, std::ios::binary) << content;
+        try {
+            readMesh(dir / name);
+            ADD_FAILURE() << name << " was read";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
         }
     }
 }

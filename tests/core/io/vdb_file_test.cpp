@@ -3,12 +3,15 @@
 #include "core/base/errors.h"
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
+#include "core/io/vdb_layout.h"
+#include "core/mesh/field_measures.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
 
+#include <cmath>
 #include <fstream>
 #include <random>
 
@@ -171,6 +174,165 @@ TEST(VdbFile, OverwriteReplacesWholeFile)
     writeFieldImage(small, dir / "doc.vdb");
     EXPECT_EQ(gridChecksum(readFieldImage(dir / "doc.vdb").grid()), gridChecksum(small.grid()));
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"doc.vdb"});
+}
+
+/// A small level set first, "surface" second, a fog volume third, and metadata of the file's own.
+fs::path writeThreeGridFile(const TempDir& dir, const FieldImage& surface)
+{
+    auto small = makeSphere(3.0, 1.0).grid().deepCopy();
+    small->setName("collider");
+    auto named = surface.grid().deepCopy();
+    named->setName("surface");
+    auto fog = openvdb::FloatGrid::create(0.0f);
+    fog->setName("density");
+    fog->setGridClass(openvdb::GRID_FOG_VOLUME);
+    fog->tree().setValue(openvdb::Coord(1, 2, 3), 0.5f);
+    openvdb::MetaMap meta;
+    meta.insertMeta("creator", openvdb::StringMetadata("Houdini 19.5"));
+    const fs::path path = dir / "scene.vdb";
+    openvdb::io::File(path.string()).write({small, named, fog}, meta);
+    return path;
+}
+
+std::vector<std::string> gridNamesIn(const fs::path& path)
+{
+    std::vector<std::string> names;
+    for (const VdbGridEntry& grid : scanVdbLayout(path).grids) names.push_back(grid.name);
+    return names;
+}
+
+TEST(VdbFile, OpensTheGridNamedSurfaceAndKeepsTheOthersAndTheMetadata)
+{
+    TempDir dir;
+    const FieldImage torus = makeTorus(10.0, 3.0, 0.5);
+    const fs::path path = writeThreeGridFile(dir, torus);
+    const VdbDocument document = readVdbDocument(path);
+    EXPECT_EQ(gridChecksum(document.field.grid()), gridChecksum(torus.grid()));
+    ASSERT_EQ(document.companions.grids.size(), 2u);
+    EXPECT_TRUE(document.warnings.empty());
+
+    writeFieldImage(document.field, dir / "saved.vdb", document.companions);
+    EXPECT_EQ(gridNamesIn(dir / "saved.vdb"), (std::vector<std::string>{"surface", "collider", "density"}));
+    openvdb::io::File saved((dir / "saved.vdb").string());
+    saved.open();
+    EXPECT_EQ(saved.getMetadata()->metaValue<std::string>("creator"), "Houdini 19.5");
+    auto fog = openvdb::gridPtrCast<openvdb::FloatGrid>(saved.readGrid("density"));
+    EXPECT_EQ(fog->tree().getValue(openvdb::Coord(1, 2, 3)), 0.5f);
+    auto collider = openvdb::gridPtrCast<openvdb::FloatGrid>(saved.readGrid("collider"));
+    EXPECT_EQ(gridChecksum(*collider), gridChecksum(makeSphere(3.0, 1.0).grid()));
+    EXPECT_EQ(gridChecksum(readFieldImage(dir / "saved.vdb").grid()), gridChecksum(torus.grid()));
+}
+
+TEST(VdbFile, AsksForAGridWhenSeveralLevelSetsAndNoneIsSurface)
+{
+    TempDir dir;
+    auto a = makeSphere(4.0, 1.0).grid().deepCopy();
+    a->setName("left");
+    auto b = makeSphere(6.0, 1.0).grid().deepCopy();
+    b->setName("right");
+    const fs::path path = dir / "two.vdb";
+    openvdb::io::File(path.string()).write({a, b});
+    try {
+        readFieldImage(path);
+        FAIL() << "expected a request for a grid";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.remedy(), Remedy::ChooseGrid);
+        const std::string what = e.what();
+        for (const char* word : {"two.vdb", "'left'", "'right'", "choose one"})
+            EXPECT_NE(what.find(word), std::string::npos) << what;
+    }
+    const VdbDocument right = readVdbDocument(path, "right");
+    EXPECT_EQ(gridChecksum(right.field.grid()), gridChecksum(*b));
+    EXPECT_THROW(readFieldImage(path, "middle"), InputError);
+    // What we write names the grid it edited: the next read needs no choice.
+    writeFieldImage(right.field, dir / "edited.vdb", right.companions);
+    EXPECT_EQ(readFieldImage(dir / "edited.vdb").grid().getName(), "right");
+}
+
+TEST(VdbFile, AGridOfATypeThisBuildCannotReadIsLeftOutWithAWarning)
+{
+    TempDir dir;
+    auto points = openvdb::Vec3SGrid::create();
+    points->setName("points");
+    points->tree().setValue(openvdb::Coord(0, 0, 0), openvdb::Vec3s(1, 2, 3));
+    auto surface = makeSphere(5.0, 1.0).grid().deepCopy();
+    surface->setName("surface");
+    const fs::path path = dir / "cache.vdb";
+    openvdb::io::File(path.string()).write({points, surface});
+    // Rename the vector grid's type to one no build registers, as a newer writer's would be.
+    std::string bytes = readBytes(path);
+    const std::string type = openvdb::Vec3SGrid::gridType();
+    const auto at = bytes.find(type);
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at, type.size(), std::string(type.size(), 'Q'));
+    writeBytes(path, bytes);
+
+    const VdbDocument document = readVdbDocument(path);
+    EXPECT_EQ(gridChecksum(document.field.grid()), gridChecksum(*surface));
+    EXPECT_TRUE(document.companions.grids.empty());
+    // Nothing we write may replace that file: the grid would be lost.
+    EXPECT_THROW(writeFieldImage(document.field, path, document.companions), InputError);
+    EXPECT_EQ(readBytes(path), bytes);
+    writeFieldImage(document.field, dir / "elsewhere.vdb", document.companions);
+    ASSERT_EQ(document.warnings.size(), 1u);
+    EXPECT_NE(document.warnings[0].find("'points'"), std::string::npos) << document.warnings[0];
+}
+
+TEST(VdbFile, ADensePhiIsRebuiltIntoABandWithAWarning)
+{
+    // Mantaflow's layout: every voxel of the domain active, background 0, distances in cells.
+    const double h = 0.25, radius = 4.0;
+    auto phi = openvdb::FloatGrid::create(0.0f);
+    phi->setName("phi");
+    phi->setTransform(openvdb::math::Transform::createLinearTransform(h));
+    auto acc = phi->getAccessor();
+    const int n = 24;
+    for (int i = -n; i < n; ++i) {
+        for (int j = -n; j < n; ++j) {
+            for (int k = -n; k < n; ++k)
+                acc.setValue({i, j, k}, float((std::sqrt(double(i * i + j * j + k * k)) * h - radius) / h));
+        }
+    }
+    TempDir dir;
+    const fs::path path = dir / "fluid.vdb";
+    openvdb::io::File(path.string()).write({phi});
+    EXPECT_THROW(readFieldImage(path), InputError);  // not a level set: only on request
+
+    const VdbDocument document = readVdbDocument(path, "phi");
+    ASSERT_EQ(document.warnings.size(), 1u);
+    EXPECT_NE(document.warnings[0].find("rebuilt"), std::string::npos) << document.warnings[0];
+    EXPECT_NEAR(document.field.halfWidthVoxels(), FieldImage::kDefaultHalfWidthVoxels, 1e-6);
+    const FieldMeasures measures = measureField(document.field);
+    EXPECT_NEAR(measures.volume, 4.0 / 3.0 * M_PI * std::pow(radius, 3), 0.02 * 4.0 / 3.0 * M_PI * std::pow(radius, 3));
+    EXPECT_EQ(measures.eulerCharacteristic, 2);
+}
+
+TEST(VdbFile, DocumentsNameTheirGridSurface)
+{
+    TempDir dir;
+    auto grid = makeSphere(5.0, 1.0).grid().deepCopy();
+    grid->setName("");
+    writeFieldImage(FieldImage(grid), dir / "unnamed.vdb");
+    EXPECT_EQ(gridNamesIn(dir / "unnamed.vdb"), std::vector<std::string>{"surface"});
+    EXPECT_EQ(grid->getName(), "");  // the field's own grid is untouched
+}
+
+TEST(VdbFile, RefusesLengthsBeyondTheFileBeforeAllocating)
+{
+    TempDir dir;
+    writeFieldImage(makeSphere(5.0, 1.0), dir / "whole.vdb");
+    std::string bytes = readBytes(dir / "whole.vdb");
+    // The first metadata name's length (after the 8+4+8+1+36-byte header and the 4-byte count).
+    const std::size_t at = 8 + 4 + 8 + 1 + 36 + 4;
+    const std::uint32_t huge = 0x7fffffff;
+    std::memcpy(bytes.data() + at, &huge, sizeof huge);
+    writeBytes(dir / "huge.vdb", bytes);
+    try {
+        readFieldImage(dir / "huge.vdb");
+        FAIL() << "expected an InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("2147483647 bytes"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -1,11 +1,15 @@
 // End to end: the `sculpt` program on a temporary directory, as a user runs it.
 
+#include "core/field/grid_checksum.h"
+#include "core/io/vdb_layout.h"
+#include "core/primitives/analytic_shapes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <openvdb/io/File.h>
 
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
@@ -204,6 +208,77 @@ INSTANTIATE_TEST_SUITE_P(
                 "tiny.raw: the voxel size must be a positive number (got inf)"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
+/// Grids in the order the file holds them, each renamed.
+void writeGrids(const std::filesystem::path& path, std::vector<std::pair<std::string, FieldImage>> grids,
+                const openvdb::MetaMap& meta = {})
+{
+    openvdb::initialize();
+    openvdb::GridCPtrVec out;
+    for (auto& [name, field] : grids) {
+        auto grid = field.grid().deepCopy();
+        grid->setName(name);
+        out.push_back(grid);
+    }
+    openvdb::io::File(path.string()).write(out, meta);
+}
+
+TEST(SculptCli, AnEditOfATwoGridFileUsesSurfaceAndKeepsTheOtherGridAndTheMetadata)
+{
+    TempDir dir;
+    openvdb::initialize();
+    openvdb::MetaMap meta;
+    meta.insertMeta("creator", openvdb::StringMetadata("Blender 4.2"));
+    const FieldImage small = makeSphere(3.0, 0.5);
+    writeGrids(dir / "two.vdb", {{"collider", small}, {"surface", makeSphere(10.0, 0.5)}}, meta);
+    const nlohmann::json info = infoJson(dir, "two.vdb");
+    EXPECT_EQ(info["grid"], "surface");
+    ASSERT_EQ(info["grids"].size(), 2u);
+    EXPECT_EQ(info["grids"][0]["name"], "collider");
+    EXPECT_EQ(info["grids"][0]["class"], "level set");
+    EXPECT_NEAR(info["volume"].get<double>(), 4.0 / 3.0 * kPi * 1000.0, 0.02 * 4.0 / 3.0 * kPi * 1000.0);
+
+    ASSERT_EQ(runSculpt("offset two.vdb --distance 1 -o out.vdb", dir.path()).exitCode, 0);
+    EXPECT_NEAR(infoJson(dir, "out.vdb")["volume"].get<double>(), 4.0 / 3.0 * kPi * 1331.0,
+                0.02 * 4.0 / 3.0 * kPi * 1331.0);
+    openvdb::io::File out((dir / "out.vdb").string());
+    out.open();
+    EXPECT_EQ(out.getMetadata()->metaValue<std::string>("creator"), "Blender 4.2");
+    const auto collider = openvdb::gridPtrCast<openvdb::FloatGrid>(out.readGrid("collider"));
+    ASSERT_TRUE(collider);
+    EXPECT_EQ(gridChecksum(*collider), gridChecksum(small.grid()));
+}
+
+TEST(SculptCli, SeveralLevelSetsAndNoSurfaceAskForGrid)
+{
+    TempDir dir;
+    writeGrids(dir / "pair.vdb", {{"left", makeSphere(4.0, 0.5)}, {"right", makeSphere(8.0, 0.5)}});
+    const auto refused = runSculpt("info pair.vdb", dir.path());
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.err.find("pair.vdb: holds several level sets"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("'left' (level set), 'right' (level set)"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("with --grid NAME"), std::string::npos) << refused.err;
+    ASSERT_EQ(runSculpt("smooth pair.vdb --grid right --iterations 2 -o out.vdb", dir.path()).exitCode, 0);
+    // The document names the grid it edited: reading it again needs no choice.
+    const nlohmann::json info = infoJson(dir, "out.vdb");
+    EXPECT_EQ(info["grid"], "right");
+    EXPECT_NEAR(info["volume"].get<double>(), 4.0 / 3.0 * kPi * 512.0, 0.03 * 4.0 / 3.0 * kPi * 512.0);
+}
+
+TEST(SculptCli, ImportedAndMorphedDocumentsNameTheirGridSurface)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 6 --voxel-size 0.5 -o a.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("mesh a.vdb -o a.stl", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("import a.stl --voxel-size 0.5 -o imported.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape box --radius 5 --voxel-size 0.5 -o b.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("morph imported.vdb b.vdb --frames 2 -o frames", dir.path()).exitCode, 0);
+    for (const char* file : {"imported.vdb", "frames/frame_0000.vdb", "frames/frame_0001.vdb"}) {
+        const VdbLayout layout = scanVdbLayout(dir / file);
+        ASSERT_EQ(layout.grids.size(), 1u) << file;
+        EXPECT_EQ(layout.grids[0].name, "surface") << file;
+    }
+}
+
 /// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.
 struct Regression {
     const char* file;
@@ -235,7 +310,8 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"mha_datafile_missing_accepted.mha", "import FILE --iso 100"},
                                            Regression{"stl_bin_oom_rc1.stl", "import FILE --voxel-size 0.1"},
                                            Regression{"ply_trunc_segv.ply", "import FILE --voxel-size 0.1"},
-                                           Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"}),
+                                           Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"},
+                                           Regression{"vdb_8GB_peak.vdb", "offset FILE --distance 1"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)

@@ -1,0 +1,109 @@
+// One libFuzzer target per input the programs parse, chosen at build time by SCULPT_FUZZ_TARGET
+// (see tests/fuzz/CMakeLists.txt and scripts/fuzz.sh). Each writes the fuzzer's bytes to a file
+// and runs what the program runs on such a file. An InputError is the right answer to bad bytes;
+// any other exception, a crash, a sanitizer report, a hang or a runaway allocation is a finding.
+
+#include "core/base/errors.h"
+#include "core/io/mesh_import.h"
+#include "core/io/vdb_file.h"
+#include "core/primitives/analytic_shapes.h"
+#include "core/primitives/scene_file.h"
+#include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/shape_import.h"
+#include "sculpt/session/stroke_script.h"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace sculpt;
+
+void importScan(const fs::path& path)
+{
+    ImportReport report;
+    importShape(path, {}, report);
+}
+
+void importDicomSeries(const fs::path& slice) { importScan(slice.parent_path()); }
+
+/// Read, inspected and converted coarsely (32 voxels across): what import does, kept fast.
+void importMesh(const fs::path& path)
+{
+    const TriangleMesh mesh = readMesh(path);
+    inspectMesh(mesh);
+    meshToField(mesh, voxelSizeFor(mesh, 32.0));
+}
+
+void openDocument(const fs::path& path) { readVdbDocument(path); }
+
+/// Replayed on a small ball: stroke limits are what keep absurd numbers from running for hours.
+void replayStrokes(const fs::path& path)
+{
+    const StrokeScript script = readStrokeScript(path);
+    SculptSession session(makeSphere(10.0, 1.0), /*liveMesh=*/false);
+    replayScript(session, script, path.string());
+}
+
+void readSceneFile(const fs::path& path) { readScene(path); }
+
+struct Target {
+    const char* name;
+    const char* file;  ///< the input's name, inside a directory of its own
+    void (*run)(const fs::path&);
+};
+
+const Target kTargets[] = {
+    {"nifti", "input.nii", importScan},
+    {"nifti_gz", "input.nii.gz", importScan},
+    {"nrrd", "input.nrrd", importScan},
+    {"metaimage", "input.mha", importScan},
+    {"dicom", "series/slice.dcm", importDicomSeries},
+    {"ply", "input.ply", importMesh},
+    {"stl", "input.stl", importMesh},
+    {"obj", "input.obj", importMesh},
+    {"off", "input.off", importMesh},
+    {"vdb", "input.vdb", openDocument},
+    {"strokes", "input.json", replayStrokes},
+    {"scene", "input.json", readSceneFile},
+};
+
+const Target& chosenTarget()
+{
+    for (const Target& target : kTargets) {
+        if (std::strcmp(target.name, SCULPT_FUZZ_TARGET) == 0) return target;
+    }
+    std::abort();  // a target CMake knows and this table does not
+}
+
+fs::path inputPath()
+{
+    static const fs::path path = [] {
+        const fs::path dir = fs::temp_directory_path() / ("sculpt-fuzz-" + std::to_string(getpid()));
+        const fs::path file = dir / chosenTarget().file;
+        fs::create_directories(file.parent_path());
+        return file;
+    }();
+    return path;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+    const fs::path path = inputPath();
+    std::ofstream(path, std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(data), std::streamsize(size));
+    try {
+        chosenTarget().run(path);
+    } catch (const sculpt::InputError&) {
+        // The answer to bad bytes: one line naming the file, exit 2.
+    }
+    return 0;
+}
