@@ -4,6 +4,7 @@
 #include "core/base/file_extension.h"
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
+#include "core/base/union_find.h"
 #include "core/io/obj_file.h"
 #include "core/io/off_file.h"
 #include "core/io/ply_file.h"
@@ -52,19 +53,32 @@ TriangleMesh readMesh(const fs::path& path)
 
 MeshImportReport inspectMesh(const TriangleMesh& mesh)
 {
-    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
-    for (const auto& t : mesh.triangles) {
+    // Each edge's triangles; corners (3 per triangle) around a vertex joined across shared
+    // edges give the vertex's fans: a vertex where two cones touch counts twice, as the surface
+    // sees it.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> edges;
+    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
         for (int e = 0; e < 3; ++e) {
-            const std::uint32_t a = t[size_t(e)], b = t[size_t((e + 1) % 3)];
-            ++edges[{std::min(a, b), std::max(a, b)}];
+            const std::uint32_t a = mesh.triangles[t][size_t(e)], b = mesh.triangles[t][size_t((e + 1) % 3)];
+            edges[{std::min(a, b), std::max(a, b)}].push_back(t);
         }
     }
+    const auto corner = [&](std::uint32_t t, std::uint32_t v) {
+        const auto& tri = mesh.triangles[t];
+        return 3 * t + (tri[0] == v ? 0u : tri[1] == v ? 1u : 2u);
+    };
+    UnionFind fans(3 * mesh.triangles.size());
     MeshImportReport report;
     report.triangles = mesh.triangles.size();
-    for (const auto& [edge, count] : edges) {
-        if (count == 1) ++report.boundaryEdges;
-        if (count > 2) ++report.nonManifoldEdges;
+    for (const auto& [edge, triangles] : edges) {
+        if (triangles.size() == 1) ++report.boundaryEdges;
+        if (triangles.size() > 2) ++report.nonManifoldEdges;
+        for (std::size_t k = 1; k < triangles.size(); ++k) {
+            for (std::uint32_t v : {edge.first, edge.second})
+                fans.join(corner(triangles[0], v), corner(triangles[k], v));
+        }
     }
+    report.eulerCharacteristic = (long long)fans.count() - (long long)edges.size() + (long long)mesh.triangles.size();
     return report;
 }
 

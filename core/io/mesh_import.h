@@ -30,8 +30,9 @@ TriangleMesh readMesh(const std::filesystem::path& path);
 
 struct MeshImportReport {
     std::size_t triangles = 0;
-    std::size_t boundaryEdges = 0;     ///< edges of one triangle: holes
-    std::size_t nonManifoldEdges = 0;  ///< edges of three or more triangles
+    std::size_t boundaryEdges = 0;      ///< edges of one triangle: holes
+    std::size_t nonManifoldEdges = 0;   ///< edges of three or more triangles
+    long long eulerCharacteristic = 0;  ///< V - E + F, a vertex counted once per fan of triangles
     bool closed() const { return boundaryEdges == 0 && nonManifoldEdges == 0; }
 };
 

@@ -6,6 +6,7 @@
 #include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
 #include "core/local/speck_removal.h"
+#include "core/mesh/field_measures.h"
 #include "core/scan/scan_to_level_set.h"
 
 #include <cmath>
@@ -23,6 +24,39 @@ void refuseCoarserThan(double voxelSize, double extent, const fs::path& input, c
         throw InputError(input.string() + ": a voxel size of " + formatNumber(voxelSize) + " is larger than the " +
                          kind + " (" + formatNumber(extent) + " across); choose a smaller voxel size");
     }
+}
+
+/// Finer voxel sizes tried for a closed mesh whose topology the chosen one changes, while the
+/// mesh stays within this many voxels across (the default is 256).
+constexpr double kMaxVoxelsAcrossTried = 1024.0;
+
+/// The Euler characteristic the import ends with: after the debris is removed.
+int importedEuler(FieldImage field)
+{
+    removeSpecks(field);
+    return measureField(field).eulerCharacteristic;
+}
+
+/// A closed mesh's Euler characteristic, kept or not by its field: warns when not (thin parts
+/// merged or lost), with the first of h/2, h/4, ... that keeps it.
+void checkTopologyKept(const TriangleMesh& mesh, long long euler, const FieldImage& field, const fs::path& input,
+                       ImportReport& report)
+{
+    const int imported = importedEuler(field.deepCopy());
+    if (imported == euler) return;
+    std::string advice =
+        "no voxel size down to " + formatNumber(voxelSizeFor(mesh, kMaxVoxelsAcrossTried)) + " keeps it";
+    for (double h = report.voxelSize / 2.0; h >= voxelSizeFor(mesh, kMaxVoxelsAcrossTried); h /= 2.0) {
+        if (importedEuler(meshToField(mesh, h)) == euler) {
+            report.topologyKeepingVoxelSize = h;
+            advice = "a voxel size of " + formatNumber(h) + " keeps it";
+            break;
+        }
+    }
+    report.warnings.push_back(input.string() + ": at voxel size " + formatNumber(report.voxelSize) +
+                              " the surface's topology changes (Euler characteristic " + std::to_string(euler) +
+                              " becomes " + std::to_string(imported) +
+                              ": parts thinner than about two voxels merge or vanish); " + advice);
 }
 
 FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report,
@@ -43,7 +77,9 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     report.kind = "mesh";
     report.voxelSize = options.voxelSize.value_or(voxelSizeFor(mesh));
     refuseCoarserThan(report.voxelSize, voxelSizeFor(mesh, 1.0), input, "mesh");
-    return meshToField(mesh, report.voxelSize, progress);
+    FieldImage field = meshToField(mesh, report.voxelSize, progress);
+    if (inspection.closed()) checkTopologyKept(mesh, inspection.eulerCharacteristic, field, input, report);
+    return field;
 }
 
 FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,

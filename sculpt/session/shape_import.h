@@ -31,6 +31,8 @@ struct ImportReport {
     double voxelSize = 0.0;
     bool antiAliased = false;       ///< scans: low-pass filtered for a voxel size coarser than the scan's
     LargestComponentReport pieces;  ///< with largestComponent
+    /// Closed meshes whose topology the voxel size changed: a finer one that keeps it, if found.
+    std::optional<double> topologyKeepingVoxelSize;
     std::vector<std::string> warnings;
 };
 

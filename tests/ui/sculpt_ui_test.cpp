@@ -6,6 +6,7 @@
 #include "core/io/vdb_layout.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/vdb_files.h"
 #include "tests/ui/ui_driver.h"
 
 #include <gtest/gtest.h>
@@ -226,14 +227,11 @@ TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing
 TEST(SculptUi, AFileOfSeveralLevelSetsAsksWhichToSculptAndKeepsTheOthers)
 {
     TempDir dir;
-    auto left = makeSphere(8.0, 0.5).grid().deepCopy();
-    left->setName("left");
-    auto right = makeSphere(14.0, 0.5).grid().deepCopy();
-    right->setName("right");
+    const FieldImage left = makeSphere(8.0, 0.5), right = makeSphere(14.0, 0.5);
     openvdb::MetaMap meta;
     meta.insertMeta("creator", openvdb::StringMetadata("Houdini 20"));
-    openvdb::io::File((dir / "pair.vdb").string()).write({left, right}, meta);
-    const std::string leftSum = formatChecksum(gridChecksum(*left));
+    test::writeNamedGrids(dir / "pair.vdb", {{"left", left}, {"right", right}}, meta);
+    const std::string leftSum = formatChecksum(gridChecksum(left.grid()));
 
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
@@ -246,7 +244,7 @@ TEST(SculptUi, AFileOfSeveralLevelSetsAsksWhichToSculptAndKeepsTheOthers)
     ASSERT_EQ(reports.size(), 3u);
     EXPECT_EQ(reports[0]["title"], "untitled");  // asking, nothing opened yet
     EXPECT_EQ(reports[1]["title"], "pair.vdb");
-    EXPECT_EQ(reports[1]["checksum"], formatChecksum(gridChecksum(*right)));
+    EXPECT_EQ(reports[1]["checksum"], formatChecksum(gridChecksum(right.grid())));
     EXPECT_FALSE(reports[2]["modified"].get<bool>());
 
     const VdbLayout saved = scanVdbLayout(dir / "pair.vdb");

@@ -7,6 +7,7 @@
 #include "core/mesh/field_measures.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/vdb_files.h"
 
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
@@ -226,12 +227,9 @@ TEST(VdbFile, OpensTheGridNamedSurfaceAndKeepsTheOthersAndTheMetadata)
 TEST(VdbFile, AsksForAGridWhenSeveralLevelSetsAndNoneIsSurface)
 {
     TempDir dir;
-    auto a = makeSphere(4.0, 1.0).grid().deepCopy();
-    a->setName("left");
-    auto b = makeSphere(6.0, 1.0).grid().deepCopy();
-    b->setName("right");
+    const FieldImage b = makeSphere(6.0, 1.0);
     const fs::path path = dir / "two.vdb";
-    openvdb::io::File(path.string()).write({a, b});
+    test::writeNamedGrids(path, {{"left", makeSphere(4.0, 1.0)}, {"right", b}});
     try {
         readFieldImage(path);
         FAIL() << "expected a request for a grid";
@@ -242,7 +240,7 @@ TEST(VdbFile, AsksForAGridWhenSeveralLevelSetsAndNoneIsSurface)
             EXPECT_NE(what.find(word), std::string::npos) << what;
     }
     const VdbDocument right = readVdbDocument(path, "right");
-    EXPECT_EQ(gridChecksum(right.field.grid()), gridChecksum(*b));
+    EXPECT_EQ(gridChecksum(right.field.grid()), gridChecksum(b.grid()));
     EXPECT_THROW(readFieldImage(path, "middle"), InputError);
     // What we write names the grid it edited: the next read needs no choice.
     writeFieldImage(right.field, dir / "edited.vdb", right.companions);

@@ -6,6 +6,7 @@
 #include "tests/support/mesh_checks.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/vdb_files.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -208,28 +209,13 @@ INSTANTIATE_TEST_SUITE_P(
                 "tiny.raw: the voxel size must be a positive number (got inf)"}),
     [](const auto& test) { return "case" + std::to_string(test.index); });
 
-/// Grids in the order the file holds them, each renamed.
-void writeGrids(const std::filesystem::path& path, std::vector<std::pair<std::string, FieldImage>> grids,
-                const openvdb::MetaMap& meta = {})
-{
-    openvdb::initialize();
-    openvdb::GridCPtrVec out;
-    for (auto& [name, field] : grids) {
-        auto grid = field.grid().deepCopy();
-        grid->setName(name);
-        out.push_back(grid);
-    }
-    openvdb::io::File(path.string()).write(out, meta);
-}
-
 TEST(SculptCli, AnEditOfATwoGridFileUsesSurfaceAndKeepsTheOtherGridAndTheMetadata)
 {
     TempDir dir;
-    openvdb::initialize();
     openvdb::MetaMap meta;
     meta.insertMeta("creator", openvdb::StringMetadata("Blender 4.2"));
     const FieldImage small = makeSphere(3.0, 0.5);
-    writeGrids(dir / "two.vdb", {{"collider", small}, {"surface", makeSphere(10.0, 0.5)}}, meta);
+    test::writeNamedGrids(dir / "two.vdb", {{"collider", small}, {"surface", makeSphere(10.0, 0.5)}}, meta);
     const nlohmann::json info = infoJson(dir, "two.vdb");
     EXPECT_EQ(info["grid"], "surface");
     ASSERT_EQ(info["grids"].size(), 2u);
@@ -251,7 +237,7 @@ TEST(SculptCli, AnEditOfATwoGridFileUsesSurfaceAndKeepsTheOtherGridAndTheMetadat
 TEST(SculptCli, SeveralLevelSetsAndNoSurfaceAskForGrid)
 {
     TempDir dir;
-    writeGrids(dir / "pair.vdb", {{"left", makeSphere(4.0, 0.5)}, {"right", makeSphere(8.0, 0.5)}});
+    test::writeNamedGrids(dir / "pair.vdb", {{"left", makeSphere(4.0, 0.5)}, {"right", makeSphere(8.0, 0.5)}});
     const auto refused = runSculpt("info pair.vdb", dir.path());
     EXPECT_EQ(refused.exitCode, 2);
     EXPECT_NE(refused.err.find("pair.vdb: holds several level sets"), std::string::npos) << refused.err;

@@ -1,15 +1,20 @@
 // The sculpting session (sculpt/): strokes, symmetry, undo/redo, stroke scripts and replays.
 
 #include "core/base/errors.h"
+#include "core/base/text_format.h"
 #include "core/field/csg_combine.h"
 #include "core/field/grid_checksum.h"
+#include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
+#include "core/mesh/incremental_mesher.h"
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
 #include "sculpt/session/import_preview.h"
 #include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/shape_import.h"
 #include "sculpt/session/stroke_script.h"
+#include "tests/support/cgal_data.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -503,6 +508,58 @@ TEST(ImportPreview, RefusesWhatTheImportRefusesNamingTheFile)
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("empty.nii"), std::string::npos) << e.what();
     }
+}
+
+/// Two balls of radius 10, `gap` apart along x, as one closed mesh (Euler characteristic 4).
+TriangleMesh twoBalls(double gap)
+{
+    TriangleMesh one = meshLevelSet(makeSphere(10.0, 0.1)), two;
+    for (int copy = 0; copy < 2; ++copy) {
+        const auto offset = std::uint32_t(two.positions.size());
+        for (auto p : one.positions) {
+            p[0] += float(copy * (20.0 + gap));
+            two.positions.push_back(p);
+        }
+        for (auto t : one.triangles) two.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+    return two;
+}
+
+// Parts closer than about two voxels merge: the import warns, names the change and a voxel size
+// that keeps the topology, and that size does.
+TEST(ShapeImport, AClosedMeshWhoseTopologyTheVoxelSizeChangesGetsAWarningAndASizeThatKeepsIt)
+{
+    const test::TempDir dir;
+    writeMesh(twoBalls(0.2), dir / "pair.ply");  // default voxel size 0.157: the gap is 1.3 voxels
+    ImportReport report;
+    const FieldImage merged = importShape(dir / "pair.ply", {}, report);
+    EXPECT_EQ(measureField(merged).components, 1);
+    ASSERT_EQ(report.warnings.size(), 1u);
+    EXPECT_NE(report.warnings[0].find("Euler characteristic 4 becomes 2"), std::string::npos) << report.warnings[0];
+    ASSERT_TRUE(report.topologyKeepingVoxelSize);
+    EXPECT_NE(report.warnings[0].find(formatNumber(*report.topologyKeepingVoxelSize)), std::string::npos);
+
+    ImportOptions finer;
+    finer.voxelSize = report.topologyKeepingVoxelSize;
+    ImportReport kept;
+    const FieldImage apart = importShape(dir / "pair.ply", finer, kept);
+    EXPECT_TRUE(kept.warnings.empty()) << kept.warnings.front();
+    EXPECT_EQ(measureField(apart).eulerCharacteristic, 4);
+    EXPECT_EQ(measureField(apart).components, 2);
+
+    // A mesh the default voxel size resolves imports without a warning.
+    ImportReport ball;
+    writeMesh(meshLevelSet(makeSphere(10.0, 0.5)), dir / "ball.ply");
+    importShape(dir / "ball.ply", {}, ball);
+    EXPECT_TRUE(ball.warnings.empty()) << ball.warnings.front();
+
+    // CGAL's cow (genus 0): thin legs and ears merge at the default voxel size.
+    const auto cow = test::cgalMesh("cow.off");
+    if (cow.empty()) GTEST_SKIP() << "CGAL's meshes missing: apt-get install libcgal-demo";
+    ImportReport cowReport;
+    importShape(cow, {}, cowReport);
+    ASSERT_FALSE(cowReport.warnings.empty());
+    EXPECT_NE(cowReport.warnings[0].find("Euler characteristic 2 becomes"), std::string::npos) << cowReport.warnings[0];
 }
 
 }  // namespace
