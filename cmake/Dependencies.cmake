@@ -11,6 +11,10 @@ find_package(OpenVDB REQUIRED)
 find_package(Imath CONFIG REQUIRED)
 find_package(OpenEXR CONFIG REQUIRED)
 find_package(TBB REQUIRED)
+# DICOM: GDCM decodes every transfer syntax archives use (JPEG lossless, JPEG-LS, JPEG 2000,
+# RLE) and multi-frame files; only its core libraries, not its VTK classes.
+set(GDCM_SKIP_USE_VTK ON)
+find_package(GDCM REQUIRED)
 find_package(ZLIB REQUIRED)  # reading a .nii.gz header and length before VTK does
 find_package(CLI11 CONFIG REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)

@@ -17,7 +17,7 @@ targets=("$@")
 
 sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DSCULPT_FUZZ=ON \
-  -DSCULPT_BUILD_TESTS=OFF -DSCULPT_BUILD_BENCHMARKS=OFF \
+  -DSCULPT_BUILD_TESTS=OFF -DSCULPT_BUILD_BENCHMARKS=OFF -DSCULPT_PRECOMPILE_HEADERS=OFF \
   -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only -fsanitize=fuzzer-no-link $sanitizers" \
   -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]/#/fuzz_}"

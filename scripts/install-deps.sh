@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config clang-format clang-tidy
   libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev zlib1g-dev
+  libgdcm-dev libgdcm-tools
   libvtk9-dev libopenexr-dev
   libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libgl1-mesa-dri

@@ -96,13 +96,13 @@ bool isScanPath(const fs::path& path)
 {
     static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
     const std::string ext = lowerExtension(path);
-    return fs::is_directory(path) || std::find(known.begin(), known.end(), ext) != known.end();
+    return fs::is_directory(path) || isDicomFile(path) || std::find(known.begin(), known.end(), ext) != known.end();
 }
 
 ScanVolume readScan(const fs::path& path)
 {
     if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
-    if (fs::is_directory(path)) return readDicomSeries(path);
+    if (fs::is_directory(path) || isDicomFile(path)) return readDicomSeries(path);
     const std::string ext = lowerExtension(path);
     if (ext == ".nii" || ext == ".nii.gz") {
         checkNiftiHeader(path);
@@ -116,10 +116,11 @@ ScanVolume readScan(const fs::path& path)
         checkMetaImageHeader(path);
         return readWithDirection<vtkMetaImageReader>(path);
     }
-    throw InputError(path.string() + ": unknown scan format '" + ext +
-                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd or a DICOM directory); raw samples "
-                         "need their layout given",
-                     Remedy::DescribeRawLayout);
+    throw InputError(
+        path.string() + ": unknown scan format '" + ext +
+            "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM file or a DICOM directory); raw samples "
+            "need their layout given",
+        Remedy::DescribeRawLayout);
 }
 
 ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)

@@ -2,9 +2,10 @@
 /// @file scan_readers.h
 /// @brief Reading a scan from its file(s) into a ScanVolume.
 ///
-/// Readers are VTK's: NIfTI (.nii, .nii.gz, with its sform or else qform), NRRD (.nrrd, .nhdr),
-/// MetaImage (.mha, .mhd), a DICOM series (a directory of slices: dicom_series.h), and raw
-/// samples with a layout given by the user. Every reader checks what the header claims against
+/// Readers are VTK's for NIfTI (.nii, .nii.gz, with its sform or else qform), NRRD (.nrrd, .nhdr)
+/// and MetaImage (.mha, .mhd), GDCM's for DICOM (a directory of slices, one slice of a series,
+/// or a multi-frame file: dicom_series.h), and ours for raw samples with a layout given by the
+/// user. Every reader checks what the header claims against
 /// sane limits and the memory available before the samples are allocated.
 
 #include "core/scan/scan_volume.h"
@@ -24,11 +25,11 @@ struct RawLayout {
     std::size_t headerBytes = 0;  ///< bytes to skip at the start of the file
 };
 
-/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd) or, for a
-/// directory, as a DICOM series.
+/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd; .dcm, .dicom, .ima)
+/// or, for a directory, as a DICOM series.
 /// @throws InputError naming the file and the problem: unknown format, unreadable, truncated
 ///         or corrupt, absurd dimensions (refused before allocating), a DICOM directory with
-///         mixed sizes or missing slices.
+///         several series, mixed sizes or missing slices.
 ScanVolume readScan(const std::filesystem::path& path);
 /// Reads headerless samples. @throws InputError as readScan, or if the file is shorter than
 /// the layout says.

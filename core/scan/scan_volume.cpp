@@ -89,6 +89,8 @@ std::size_t ScanVolume::denseBytes() const
 
 const std::string& ScanVolume::source() const { return mImpl->source; }
 
+const std::vector<std::string>& ScanVolume::warnings() const { return mImpl->warnings; }
+
 void ScanVolume::readSlice(int k, float* out) const
 {
     const openvdb::Coord d = dims();
@@ -128,7 +130,7 @@ ScanVolume ScanVolume::cropped(const openvdb::CoordBBox& box) const
                     clipped.max().z());
     extract->Update();
     vtkSmartPointer<vtkImageData> image = extract->GetOutput();
-    return makeScan(image, mImpl->worldFromIndex, source());
+    return makeScan(image, mImpl->worldFromIndex, source(), warnings());
 }
 
 ScanVolume ScanVolume::smoothed(double sigmaWorld) const

@@ -35,6 +35,8 @@ public:
     std::size_t denseBytes() const;
     /// The file or directory it came from, for messages.
     const std::string& source() const;
+    /// What reading it noticed and worked around (a DICOM series' uneven slice spacing), for the user.
+    const std::vector<std::string>& warnings() const;
 
     /// Copies slice k (dims.x * dims.y samples, x fastest) into `out` as floats.
     void readSlice(int k, float* out) const;

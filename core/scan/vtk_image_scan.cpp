@@ -81,7 +81,8 @@ openvdb::Mat4d placement(vtkImageData* image, vtkMatrix4x4* orientation)
     return local * m;
 }
 
-ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d worldFromIndex, const std::string& source)
+ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d worldFromIndex, const std::string& source,
+                    std::vector<std::string> warnings)
 {
     int extent[6];
     image->GetExtent(extent);
@@ -92,6 +93,7 @@ ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d worldFro
     impl->image = image;
     impl->worldFromIndex = worldFromIndex;
     impl->source = source;
+    impl->warnings = std::move(warnings);
     const auto [lo, hi] = ScanVolume(impl).range();
     if (!std::isfinite(lo) || !std::isfinite(hi)) throw InputError(source + ": samples are not finite numbers");
     return ScanVolume(impl);

@@ -12,6 +12,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 namespace sculpt {
 
@@ -19,6 +20,7 @@ struct ScanVolume::Impl {
     vtkSmartPointer<vtkImageData> image;  // extent starts at (0, 0, 0)
     openvdb::Mat4d worldFromIndex = openvdb::Mat4d::identity();
     std::string source;
+    std::vector<std::string> warnings;
 };
 
 /// Runs a configured reader: header first (dimensions checked and memory reserved before the
@@ -31,6 +33,7 @@ openvdb::Mat4d placement(vtkImageData* image, vtkMatrix4x4* orientation);
 
 /// The scan of an image: its extent moved to start at zero (readers may start elsewhere),
 /// keeping its world placement. @throws InputError if a sample is not finite.
-ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d worldFromIndex, const std::string& source);
+ScanVolume makeScan(vtkSmartPointer<vtkImageData> image, openvdb::Mat4d worldFromIndex, const std::string& source,
+                    std::vector<std::string> warnings = {});
 
 }  // namespace sculpt

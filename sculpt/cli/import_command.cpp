@@ -88,12 +88,13 @@ void addImportCommand(CLI::App& app)
     auto o = std::make_shared<ImportCommandOptions>();
     CLI::App* cmd = app.add_subcommand(
         "import", "Turn a medical scan or a mesh into an editable document.\n"
-                  "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), a DICOM\n"
-                  "series (a directory of slices), or raw samples (--raw-dims ...). The surface is where\n"
+                  "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), DICOM (a\n"
+                  "directory of slices, one slice file to pick its series, or a multi-frame file;\n"
+                  "compressed too), or raw samples (--raw-dims ...). The surface is where\n"
                   "the samples cross the iso-value (inside: above it); spacing, origin and orientation\n"
                   "are kept, so the surface sits where the scan says.\n"
                   "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
-    cmd->add_option("input", o->input, "the scan file, DICOM directory or mesh file")->required();
+    cmd->add_option("input", o->input, "the scan file, DICOM directory or slice, or mesh file")->required();
     o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");
     cmd->add_flag("--auto-iso", o->autoIso, "choose the iso-value by Otsu's method (the default without --iso)")
         ->excludes(o->isoOption);

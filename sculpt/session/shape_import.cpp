@@ -86,6 +86,7 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
                       const Progress& progress)
 {
     ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
+    report.warnings.insert(report.warnings.end(), scan.warnings().begin(), scan.warnings().end());
     if (options.crop) scan = scan.cropped(*options.crop);
     if (options.voxelSize) refuseCoarserThan(*options.voxelSize, scan.worldExtent(), input, "scan");
     if (options.smoothSigma > scan.worldExtent()) {

@@ -31,8 +31,6 @@ void importScan(const fs::path& path)
     importShape(path, {}, report);
 }
 
-void importDicomSeries(const fs::path& slice) { importScan(slice.parent_path()); }
-
 /// Read, inspected and converted coarsely (32 voxels across): what import does, kept fast.
 void importMesh(const fs::path& path)
 {
@@ -60,17 +58,12 @@ struct Target {
 };
 
 const Target kTargets[] = {
-    {"nifti", "input.nii", importScan},
-    {"nifti_gz", "input.nii.gz", importScan},
-    {"nrrd", "input.nrrd", importScan},
-    {"metaimage", "input.mha", importScan},
-    {"dicom", "series/slice.dcm", importDicomSeries},
-    {"ply", "input.ply", importMesh},
-    {"stl", "input.stl", importMesh},
-    {"obj", "input.obj", importMesh},
-    {"off", "input.off", importMesh},
-    {"vdb", "input.vdb", openDocument},
-    {"strokes", "input.json", replayStrokes},
+    {"nifti", "input.nii", importScan},     {"nifti_gz", "input.nii.gz", importScan},
+    {"nrrd", "input.nrrd", importScan},     {"metaimage", "input.mha", importScan},
+    {"dicom", "input.dcm", importScan},  // a single slice is refused, a multi-frame file read
+    {"ply", "input.ply", importMesh},       {"stl", "input.stl", importMesh},
+    {"obj", "input.obj", importMesh},       {"off", "input.off", importMesh},
+    {"vdb", "input.vdb", openDocument},     {"strokes", "input.json", replayStrokes},
     {"scene", "input.json", readSceneFile},
 };
 

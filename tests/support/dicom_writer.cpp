@@ -1,6 +1,7 @@
 #include "tests/support/dicom_writer.h"
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace sculpt::test {
@@ -29,15 +30,45 @@ public:
         u16(2);
         u16(value);
     }
-    void pixels(const std::vector<std::uint16_t>& values)
+    void pixels(const std::vector<const DicomSliceSpec*>& frames)
     {
         header(0x7FE0, 0x0010, "OW");
         u16(0);
-        u32(std::uint32_t(values.size() * 2));
-        raw(values.data(), values.size() * 2);
+        u32(std::uint32_t(frames.size() * frames.front()->pixels.size() * 2));
+        for (const DicomSliceSpec* f : frames) raw(f->pixels.data(), f->pixels.size() * 2);
+    }
+    /// A sequence and its items, of undefined length (closed by delimiters).
+    void sequenceStart(std::uint16_t group, std::uint16_t element)
+    {
+        header(group, element, "SQ");
+        u16(0);
+        u32(0xFFFFFFFF);
+    }
+    void sequenceEnd() { delimiter(0xE0DD); }
+    void itemStart()
+    {
+        u16(0xFFFE);
+        u16(0xE000);
+        u32(0xFFFFFFFF);
+    }
+    void itemEnd() { delimiter(0xE00D); }
+    /// A sequence of one item holding one element.
+    void wrapped(std::uint16_t group, std::uint16_t element, const std::function<void()>& content)
+    {
+        sequenceStart(group, element);
+        itemStart();
+        content();
+        itemEnd();
+        sequenceEnd();
     }
 
 private:
+    void delimiter(std::uint16_t element)
+    {
+        u16(0xFFFE);
+        u16(element);
+        u32(0);
+    }
     void header(std::uint16_t group, std::uint16_t element, const char vr[2])
     {
         u16(group);
@@ -59,34 +90,70 @@ std::string decimals(std::initializer_list<double> values)
     return s.str();
 }
 
-}  // namespace
-
-void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& d)
+std::string position(const DicomSliceSpec& d) { return decimals({d.position.x(), d.position.y(), d.position.z()}); }
+std::string orientation(const DicomSliceSpec& d)
 {
+    return decimals({d.rowDirection.x(), d.rowDirection.y(), d.rowDirection.z(), d.columnDirection.x(),
+                     d.columnDirection.y(), d.columnDirection.z()});
+}
+std::string pixelSpacing(const DicomSliceSpec& d) { return decimals({d.rowSpacing, d.columnSpacing}); }
+
+/// A classic file holds one frame and its geometry; an enhanced one several, with the geometry in
+/// functional groups (orientation and spacing shared, each frame's position its own).
+void writeImage(const std::filesystem::path& path, const std::vector<const DicomSliceSpec*>& frames)
+{
+    const DicomSliceSpec& d = *frames.front();
+    const bool enhanced = frames.size() > 1;
     std::ofstream out(path, std::ios::binary);
     const std::string preamble(128, '\0');
     out.write(preamble.data(), 128);
     out.write("DICM", 4);
     Writer w(out);
-    w.text(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1");  // explicit VR little endian
+    w.text(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1");                        // explicit VR little endian
+    if (enhanced) w.text(0x0008, 0x0016, "UI", "1.2.840.10008.5.1.4.1.1.4.1");  // enhanced MR
     w.text(0x0008, 0x0060, "CS", "MR");
     w.text(0x0018, 0x0050, "DS", decimals({d.sliceThickness}));
     w.text(0x0020, 0x000E, "UI", d.seriesUid);
     w.text(0x0020, 0x0013, "IS", std::to_string(d.instanceNumber));
-    w.text(0x0020, 0x0032, "DS", decimals({d.position.x(), d.position.y(), d.position.z()}));
-    w.text(0x0020, 0x0037, "DS",
-           decimals({d.rowDirection.x(), d.rowDirection.y(), d.rowDirection.z(), d.columnDirection.x(),
-                     d.columnDirection.y(), d.columnDirection.z()}));
+    if (!enhanced) {
+        w.text(0x0020, 0x0032, "DS", position(d));
+        w.text(0x0020, 0x0037, "DS", orientation(d));
+    }
     w.ushort(0x0028, 0x0002, 1);
     w.text(0x0028, 0x0004, "CS", "MONOCHROME2");
+    if (enhanced) w.text(0x0028, 0x0008, "IS", std::to_string(frames.size()));
     w.ushort(0x0028, 0x0010, std::uint16_t(d.rows));
     w.ushort(0x0028, 0x0011, std::uint16_t(d.columns));
-    w.text(0x0028, 0x0030, "DS", decimals({d.rowSpacing, d.columnSpacing}));
+    if (!enhanced) w.text(0x0028, 0x0030, "DS", pixelSpacing(d));
     w.ushort(0x0028, 0x0100, 16);
     w.ushort(0x0028, 0x0101, 16);
     w.ushort(0x0028, 0x0102, 15);
     w.ushort(0x0028, 0x0103, 0);
-    w.pixels(d.pixels);
+    if (enhanced) {
+        w.wrapped(0x5200, 0x9229, [&] {
+            w.wrapped(0x0020, 0x9116, [&] { w.text(0x0020, 0x0037, "DS", orientation(d)); });
+            w.wrapped(0x0028, 0x9110, [&] { w.text(0x0028, 0x0030, "DS", pixelSpacing(d)); });
+        });
+        w.sequenceStart(0x5200, 0x9230);
+        for (const DicomSliceSpec* f : frames) {
+            w.itemStart();
+            w.wrapped(0x0020, 0x9113, [&] { w.text(0x0020, 0x0032, "DS", position(*f)); });
+            w.itemEnd();
+        }
+        w.sequenceEnd();
+    }
+    w.pixels(frames);
+}
+
+}  // namespace
+
+void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& slice) { writeImage(path, {&slice}); }
+
+void writeDicomMultiFrame(const std::filesystem::path& path, const std::vector<DicomSliceSpec>& frames)
+{
+    std::vector<const DicomSliceSpec*> pointers;
+    for (const DicomSliceSpec& f : frames) pointers.push_back(&f);
+    writeImage(path, pointers);
 }
 
 }  // namespace sculpt::test

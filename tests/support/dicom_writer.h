@@ -1,7 +1,7 @@
 #pragma once
 /// @file dicom_writer.h
-/// @brief Writes minimal DICOM image slices (explicit VR little endian, 16-bit monochrome) so
-///        tests can build series with known geometry; no DICOM library needed.
+/// @brief Writes minimal DICOM images (explicit VR little endian, 16-bit monochrome) so tests can
+///        build series with known geometry: classic slices, or one enhanced multi-frame file.
 
 #include <openvdb/openvdb.h>
 
@@ -24,5 +24,7 @@ struct DicomSliceSpec {
 };
 
 void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& slice);
+/// The frames (one size, orientation and spacing) in one file, each frame at its own position.
+void writeDicomMultiFrame(const std::filesystem::path& path, const std::vector<DicomSliceSpec>& frames);
 
 }  // namespace sculpt::test

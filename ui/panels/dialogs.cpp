@@ -231,8 +231,9 @@ void drawDialogs(SculptApp& app)
         return pathDialog(app, "Load Scene", "A primitive scene (.json) to place and bake");
     case Dialogs::Prompt::SaveScene: return pathDialog(app, "Save Scene", "A .json scene file for `sculpt build`");
     case Dialogs::Prompt::Import:
-        return pathDialog(app, "Import",
-                          "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory) or a mesh (.obj, .ply, .stl, .off)");
+        return pathDialog(
+            app, "Import",
+            "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory or file) or a mesh (.obj, .ply, .stl, .off)");
     case Dialogs::Prompt::Target:
         return pathDialog(app, "Load Target",
                           "A document, scan or mesh for the follow brush (O) and the morph, shown as a ghost (H)");

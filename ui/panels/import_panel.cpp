@@ -27,6 +27,7 @@ void scanFacts(const ScanVolume& scan)
     else ImGui::Text("oblique, origin %.4g, %.4g, %.4g", m(3, 0), m(3, 1), m(3, 2));
     const auto [lo, hi] = scan.range();
     ImGui::Text("values %.4g .. %.4g", lo, hi);
+    for (const std::string& warning : scan.warnings()) warningText(warning, kPanelWidth - 20.f);
 }
 
 /// The histogram (log counts: the background's bin dwarfs tissue's) with Otsu's threshold (red)

@@ -1,5 +1,5 @@
 // Importing scans (core/scan_volume.h, core/scan_to_level_set.h): every format, world placement,
-// agreement with VTK on a real MRI, and refusal of bad files.
+// agreement with VTK on a real MRI, and refusal of bad files. DICOM: dicom_series_test.cpp.
 
 #include "core/base/errors.h"
 #include "core/field/grid_checksum.h"
@@ -8,9 +8,9 @@
 #include "core/scan/largest_component.h"
 #include "core/scan/scan_readers.h"
 #include "core/scan/scan_to_level_set.h"
-#include "tests/support/dicom_writer.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/progress_log.h"
+#include "tests/support/synthetic_scan.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
@@ -37,56 +37,12 @@
 namespace sculpt {
 namespace {
 
+using test::expectBallAt;
+using test::sampledImage;
+using test::sphereOf;
+using test::SyntheticBall;
+
 const char* kMri = "/usr/share/mricron/templates/ch2bet.nii.gz";
-
-/// A shape given by its signed distance (world units, negative inside) sampled 0 outside .. 200
-/// inside with a linear ramp across the surface (100 on it), on a lattice with the given spacing
-/// and origin.
-vtkSmartPointer<vtkImageData> sampledImage(const openvdb::Coord& dims, const openvdb::Vec3d& spacing,
-                                           const openvdb::Vec3d& origin,
-                                           const std::function<double(const openvdb::Vec3d&)>& sdf)
-{
-    auto image = vtkSmartPointer<vtkImageData>::New();
-    image->SetDimensions(dims.x(), dims.y(), dims.z());
-    image->SetSpacing(spacing.x(), spacing.y(), spacing.z());
-    image->SetOrigin(origin.x(), origin.y(), origin.z());
-    image->AllocateScalars(VTK_SHORT, 1);
-    auto* p = static_cast<short*>(image->GetScalarPointer());
-    for (int k = 0; k < dims.z(); ++k) {
-        for (int j = 0; j < dims.y(); ++j) {
-            for (int i = 0; i < dims.x(); ++i) {
-                const double d = sdf(origin + openvdb::Vec3d(i * spacing.x(), j * spacing.y(), k * spacing.z()));
-                *p++ = short(std::clamp(100.0 - 40.0 * d, 0.0, 200.0));
-            }
-        }
-    }
-    return image;
-}
-
-/// Radius and centre of the imported surface, from the mesh's vertices.
-std::pair<double, openvdb::Vec3d> sphereOf(const FieldImage& field)
-{
-    const TriangleMesh mesh = meshLevelSet(field);
-    openvdb::Vec3d centre(0.0);
-    for (const auto& p : mesh.positions) centre += openvdb::Vec3d(p[0], p[1], p[2]) / double(mesh.positions.size());
-    double radius = 0.0;
-    for (const auto& p : mesh.positions)
-        radius += (openvdb::Vec3d(p[0], p[1], p[2]) - centre).length() / double(mesh.positions.size());
-    return {radius, centre};
-}
-
-struct SyntheticBall {
-    openvdb::Coord dims{40, 40, 22};
-    openvdb::Vec3d spacing{1.0, 1.0, 2.0};
-    openvdb::Vec3d origin{-13.0, 7.0, 31.0};
-    openvdb::Vec3d centre = origin + openvdb::Vec3d(19.5, 21.0, 20.0);
-    double radius = 12.0;
-    vtkSmartPointer<vtkImageData> image() const
-    {
-        return sampledImage(dims, spacing, origin,
-                            [&](const openvdb::Vec3d& p) { return (p - centre).length() - radius; });
-    }
-};
 
 /// MetaImage, uncompressed; a .mhd header keeps its samples in a .raw beside it (read raw too).
 void writeMetaImage(vtkImageData* image, const std::filesystem::path& path)
@@ -98,16 +54,6 @@ void writeMetaImage(vtkImageData* image, const std::filesystem::path& path)
         writer->SetRAWFileName(path.parent_path().append(path.stem().string() + ".raw").c_str());
     writer->SetCompression(false);
     writer->Write();
-}
-
-void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::string& format)
-{
-    const FieldImage field = scanToLevelSet(scan, 100.0, nativeVoxelSize(scan));
-    EXPECT_DOUBLE_EQ(field.voxelSize(), 1.0) << format;
-    const auto [radius, centre] = sphereOf(field);
-    EXPECT_NEAR(radius, ball.radius, 0.5) << format;
-    EXPECT_NEAR((centre - ball.centre).length(), 0.0, 0.5)
-        << format << " centre " << centre << " expected " << ball.centre;
 }
 
 TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
@@ -317,37 +263,6 @@ TEST(ScanImport, BadScansAreRefusedNamingTheFile)
     expectError([&] { scanToLevelSet(scan, 500.0, 1.0); }, "outside the samples' range");
 }
 
-/// A DICOM series of the synthetic ball: axial slices 2 apart, written in shuffled file order,
-/// with patient orientation (x along rows, y down columns).
-std::vector<std::filesystem::path> writeBallSeries(const std::filesystem::path& dir, const SyntheticBall& ball,
-                                                   const std::string& seriesUid = "1.2.3")
-{
-    std::vector<std::filesystem::path> files;
-    for (int k = 0; k < ball.dims.z(); ++k) {
-        test::DicomSliceSpec slice;
-        slice.rows = ball.dims.y();
-        slice.columns = ball.dims.x();
-        slice.rowSpacing = ball.spacing.y();
-        slice.columnSpacing = ball.spacing.x();
-        slice.sliceThickness = ball.spacing.z();
-        slice.position = ball.origin + openvdb::Vec3d(0, 0, k * ball.spacing.z());
-        slice.instanceNumber = k + 1;
-        slice.seriesUid = seriesUid;
-        for (int r = 0; r < slice.rows; ++r) {
-            for (int c = 0; c < slice.columns; ++c) {
-                const openvdb::Vec3d world =
-                    slice.position + openvdb::Vec3d(c * ball.spacing.x(), r * ball.spacing.y(), 0);
-                const double d = (world - ball.centre).length() - ball.radius;
-                slice.pixels.push_back(std::uint16_t(std::clamp(100.0 - 40.0 * d, 0.0, 200.0)));
-            }
-        }
-        // File names out of slice order: the reader must sort by position, not by name.
-        files.push_back(dir / ("im" + std::to_string((k * 7) % ball.dims.z() + 100) + ".dcm"));
-        test::writeDicomSlice(files.back(), slice);
-    }
-    return files;
-}
-
 TEST(ScanImport, TruncatedScansAndMissingDataFilesAreRefused)
 {
     test::TempDir dir;
@@ -392,48 +307,6 @@ TEST(ScanImport, TruncatedScansAndMissingDataFilesAreRefused)
         ADD_FAILURE() << "lost.mhd was read";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("lost.raw does not exist"), std::string::npos) << e.what();
-    }
-}
-
-TEST(ScanImport, DicomSeriesKeepsSliceOrderSpacingAndPosition)
-{
-    test::TempDir dir;
-    SyntheticBall ball;
-    ball.centre = ball.origin + openvdb::Vec3d(19.5, 15.0, 26.0);  // off-centre in y and z
-    writeBallSeries(dir.path(), ball);
-    const ScanVolume series = readScan(dir.path());
-    EXPECT_EQ(series.dims(), ball.dims);
-    expectBallAt(series, ball, "DICOM");
-}
-
-TEST(ScanImport, DicomSeriesWithGapsOrMixedSeriesIsRefused)
-{
-    test::TempDir gap, mixed;
-    const SyntheticBall ball;
-    const auto files = writeBallSeries(gap.path(), ball);
-    std::filesystem::remove(files[5]);  // a slice in the middle
-    try {
-        readScan(gap.path());
-        ADD_FAILURE() << "no error for a series with a missing slice";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("missing slices"), std::string::npos) << e.what();
-    }
-    writeBallSeries(mixed.path(), ball, "1.2.3");
-    SyntheticBall other = ball;
-    other.origin = ball.origin + openvdb::Vec3d(0, 0, 1);  // a second series interleaved
-    for (int k = 0; k < 3; ++k) {
-        test::DicomSliceSpec slice;
-        slice.rows = 20;
-        slice.columns = 20;
-        slice.position = other.origin + openvdb::Vec3d(0, 0, 2 * k);
-        slice.pixels.assign(400, 50);
-        test::writeDicomSlice(mixed.path() / ("other" + std::to_string(k) + ".dcm"), slice);
-    }
-    try {
-        readScan(mixed.path());
-        ADD_FAILURE() << "no error for mixed series";
-    } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("mixed series"), std::string::npos) << e.what();
     }
 }
 
