@@ -16,6 +16,7 @@ targets=("$@")
 [ ${#targets[@]} -gt 0 ] || read -r -a targets <<<"$all"
 
 sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+sanitizers+=" -fsanitize-ignorelist=$PWD/tests/sanitizers/ubsan_ignorelist.txt"  # TBB's tagged pointers
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=None -DSCULPT_FUZZ=ON \
   -DSCULPT_BUILD_TESTS=OFF -DSCULPT_BUILD_BENCHMARKS=OFF -DSCULPT_PRECOMPILE_HEADERS=OFF \
   -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only -fsanitize=fuzzer-no-link $sanitizers" \

@@ -297,7 +297,8 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"stl_bin_oom_rc1.stl", "import FILE --voxel-size 0.1"},
                                            Regression{"ply_trunc_segv.ply", "import FILE --voxel-size 0.1"},
                                            Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"},
-                                           Regression{"vdb_8GB_peak.vdb", "offset FILE --distance 1"}),
+                                           Regression{"vdb_8GB_peak.vdb", "offset FILE --distance 1"},
+                                           Regression{"vdb_topology_leak.vdb", "offset FILE --distance 1"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
