@@ -122,24 +122,22 @@ vtkSmartPointer<vtkImageData> decodePixels(const gdcm::Image& image, const std::
     const unsigned frames = image.GetNumberOfDimensions() == 3 ? image.GetDimension(2) : 1;
     if (columns == 0 || rows == 0 || frames == 0) throw InputError(file + ": the image has no pixels");
     const double bytes = double(columns) * rows * frames * vtkDataArray::GetDataTypeSize(type);
-    // GDCM decodes into a buffer of its own before we copy: both are held at once.
+    // Decoded straight into the samples; GDCM's decoders may hold a frame buffer of their own.
     requireMemory(2.0 * bytes, file + " (" + std::to_string(columns) + " x " + std::to_string(rows) + " x " +
                                    std::to_string(frames) + " pixels)");
     if (double(image.GetBufferLength()) != bytes) {
         throw InputError(file + ": the pixel data holds " + std::to_string(image.GetBufferLength()) +
                          " bytes, the image needs " + std::to_string(std::size_t(bytes)));
     }
-    std::vector<char> buffer(image.GetBufferLength());
-    if (!image.GetBuffer(buffer.data())) {
+    auto samples = vtkSmartPointer<vtkImageData>::New();
+    samples->SetDimensions(int(columns), int(rows), int(frames));
+    samples->AllocateScalars(type, 1);
+    if (!image.GetBuffer(static_cast<char*>(samples->GetScalarPointer()))) {
         throw InputError(
             file + ": the pixel data cannot be decoded (transfer syntax " +
             std::string(image.GetTransferSyntax().GetString() ? image.GetTransferSyntax().GetString() : "unknown") +
             ", truncated or corrupt?)");
     }
-    auto samples = vtkSmartPointer<vtkImageData>::New();
-    samples->SetDimensions(int(columns), int(rows), int(frames));
-    samples->AllocateScalars(type, 1);
-    std::copy(buffer.begin(), buffer.end(), static_cast<char*>(samples->GetScalarPointer()));
     return samples;
 }
 
