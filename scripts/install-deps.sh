@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config clang-format clang-tidy
+  cmake g++ make pkg-config ccache clang-format clang-tidy
   libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev zlib1g-dev
   libgdcm-dev libgdcm-tools
   libvtk9-dev libopenexr-dev
@@ -14,6 +14,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   mricron-data libcgal-demo
 )
+
+# --sanitizers: also what scripts/sanitizer-tree.sh builds with (clang and its sanitizer and
+# libFuzzer runtimes).
+if [[ ${1:-} == --sanitizers ]]; then packages+=(clang libclang-rt-14-dev); fi
 
 missing=()
 for package in "${packages[@]}"; do

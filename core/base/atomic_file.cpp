@@ -2,9 +2,13 @@
 
 #include "core/base/errors.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <string>
 
@@ -42,6 +46,21 @@ AtomicFile::AtomicFile(fs::path target) : mTarget(std::move(target))
 {
     checkTarget(mTarget);
     mTemporary = temporarySibling(mTarget);
+    createWithMode();
+}
+
+void AtomicFile::createWithMode()
+{
+    const int fd = open(mTemporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) throw InputError(mTarget.string() + ": cannot write (" + std::strerror(errno) + ")");
+    const fs::path dir = mTarget.has_parent_path() ? mTarget.parent_path() : fs::path(".");
+    struct stat existing {};
+    if (stat(dir.c_str(), &existing) == 0 && (existing.st_mode & 077) == 0) {
+        fchmod(fd, 0600);
+    } else if (stat(mTarget.c_str(), &existing) == 0) {
+        fchmod(fd, existing.st_mode & 07777);
+    }
+    close(fd);
 }
 
 AtomicFile::~AtomicFile()

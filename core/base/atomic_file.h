@@ -5,6 +5,9 @@
 /// Writers write to a temporary sibling (same directory, hence same file system), then
 /// commit() renames it over the target in one step. If commit() is never reached (an exception,
 /// a crash before it), the temporary is removed and the target keeps its previous content.
+/// A file in a private directory (no access for group or others, such as the 0700 state
+/// directory) is written 0600, whatever the umask; elsewhere the new file keeps the permissions
+/// of the one it replaces, so saving never widens who may read a document.
 
 #include <filesystem>
 #include <string>
@@ -29,6 +32,9 @@ public:
     static void checkTarget(const std::filesystem::path& target);
 
 private:
+    /// Creates the empty temporary with the target's permissions: writers then open it in place.
+    void createWithMode();
+
     std::filesystem::path mTarget;
     std::filesystem::path mTemporary;
     bool mCommitted = false;

@@ -2,7 +2,9 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/field/voxel_size.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -17,10 +19,23 @@ openvdb::FloatGrid::Ptr makeLevelSetGrid(const openvdb::math::Transform& xform, 
     return grid;
 }
 
+void requireWithinModelExtent(const openvdb::BBoxd& world, double voxelSize, const std::string& what)
+{
+    double reach = 0.0;
+    for (int a = 0; a < 3; ++a) reach = std::max({reach, std::abs(world.min()[a]), std::abs(world.max()[a])});
+    reach /= voxelSize;
+    if (!(reach <= double(kMaxIndexCoordinate))) {
+        throw InputError(what + " reaches " + formatNumber(reach) + " voxels from the origin at voxel size " +
+                             formatNumber(voxelSize) + ", beyond the largest model (" +
+                             formatNumber(kMaxIndexCoordinate) +
+                             "): choose a coarser voxel size, or move it nearer the origin",
+                         Remedy::CoarserVoxelSize);
+    }
+}
+
 openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxels)
 {
-    return makeLevelSetGrid(*openvdb::math::Transform::createLinearTransform(voxelSize),
-                            float(voxelSize * halfWidthVoxels));
+    return makeLevelSetGrid(*voxelTransform(voxelSize), float(voxelSize * halfWidthVoxels));
 }
 
 namespace {

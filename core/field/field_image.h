@@ -27,6 +27,10 @@ openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxel
 /// coordinate (2^19 either side), less a block's margin.
 constexpr int kMaxIndexCoordinate = (1 << 19) - 128;
 
+/// @throws InputError naming `what` if the world box, at voxel size h, reaches farther than
+///         kMaxIndexCoordinate voxels from the origin (or is not finite): no model may.
+void requireWithinModelExtent(const openvdb::BBoxd& world, double voxelSize, const std::string& what);
+
 class FieldImage {
 public:
     /// Narrow-band half width used by the builders: what WENO5 stencils need.

@@ -97,7 +97,8 @@ void writeMesh(const TriangleMesh& mesh, const fs::path& path)
     const MeshFormat format = meshFormatOf(path);
     AtomicFile out(path);
     std::error_code ec;
-    if (!writeFormat(format, mesh, out.temporaryPath()) || !fs::exists(out.temporaryPath(), ec)) {
+    // The temporary exists from the start (AtomicFile): a writer that wrote nothing left it empty.
+    if (!writeFormat(format, mesh, out.temporaryPath()) || fs::file_size(out.temporaryPath(), ec) == 0 || ec) {
         throw InputError(path.string() + ": the mesh writer failed (disk full or no permission?)");
     }
     out.commit();

@@ -5,6 +5,7 @@
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/base/union_find.h"
+#include "core/field/voxel_size.h"
 #include "core/io/obj_file.h"
 #include "core/io/off_file.h"
 #include "core/io/ply_file.h"
@@ -121,12 +122,16 @@ FieldImage meshToField(const TriangleMesh& mesh, double h, const Progress& progr
     for (size_t i = 0; i < triangles.size(); ++i) {
         const auto& t = mesh.triangles[i];
         triangles[i] = openvdb::Vec3I(t[0], t[1], t[2]);
-        area += 0.5 * double((points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).length());
+        const openvdb::Vec3d a(points[t[0]]), b(points[t[1]]), c(points[t[2]]);  // float would overflow
+        area += 0.5 * (b - a).cross(c - a).length();
     }
+    openvdb::BBoxd bounds;
+    for (const openvdb::Vec3s& p : points) bounds.expand(openvdb::Vec3d(p));
+    requireWithinModelExtent(bounds, h, "the mesh");
     const double halfWidth = FieldImage::kDefaultHalfWidthVoxels;
     // The band holds about area / h^2 x (2 half width) voxels at ~5 bytes each, leaves included.
     requireMemory(area / (h * h) * 2.0 * halfWidth * 8.0, "the mesh at voxel size " + formatNumber(h));
-    auto xform = openvdb::math::Transform::createLinearTransform(h);
+    auto xform = voxelTransform(h);
     std::vector<openvdb::Vec4I> quads;
     ProgressInterrupter interrupter(progress);
     auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(interrupter, *xform, points, triangles, quads,

@@ -6,12 +6,13 @@
 #include "core/base/text_format.h"
 #include "core/field/band_repair.h"
 #include "core/field/grid_checksum.h"
+#include "core/io/bounded_reader.h"
 #include "core/io/vdb_layout.h"
+#include "core/io/vdb_tree_check.h"
 
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -80,11 +81,24 @@ struct DecodedFile {
     openvdb::MetaMap::Ptr metadata;
 };
 
+/// Walks a float grid's tree before OpenVDB reads it (see vdb_tree_check.h).
+void checkTree(const fs::path& path, const VdbGridEntry& grid)
+{
+    std::ifstream file(path, std::ios::binary);
+    throwOnShortReads(file);
+    file.seekg(grid.transformBegin);
+    BoundedReader in(file, grid.end);
+    checkVdbFloatTree(in, grid.coding, /*throughBuffers=*/false);
+    if (grid.buffersBegin != 0 && in.position() != grid.buffersBegin)
+        throw InputError("corrupt (grid '" + grid.name + "' has a topology that does not end where the file says)");
+}
+
 /// Decodes one grid alone: the file's header and metadata, a grid count of one and that grid's
 /// bytes go through OpenVDB's stream reader, so other grids (of types this build may not know)
-/// are never touched.
+/// are never touched. Float grids are walked first; other types go to OpenVDB unchecked.
 DecodedFile decodeOne(const fs::path& path, const VdbLayout& layout, const VdbGridEntry& grid)
 {
+    if (grid.isFloat()) checkTree(path, grid);
     std::ifstream file(path, std::ios::binary);
     throwOnShortReads(file);
     const std::int32_t one = 1;
@@ -99,40 +113,28 @@ DecodedFile decodeOne(const fs::path& path, const VdbLayout& layout, const VdbGr
     return {*stream.getGrids(), stream.getMetadata()};
 }
 
-/// Decodes every grid in order: a streamed file (no offsets) cannot be read grid by grid.
-DecodedFile decodeAll(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    throwOnShortReads(in);
-    openvdb::io::Stream stream(in, /*delayLoad=*/false);
-    return {*stream.getGrids(), stream.getMetadata()};
-}
-
 /// The chosen grid and the others (decoded where this build can), warning of what cannot be kept.
 std::pair<openvdb::FloatGrid::Ptr, VdbCompanions> decodeGrids(const fs::path& path, const VdbLayout& layout,
                                                               const VdbGridEntry& chosen,
                                                               std::vector<std::string>& warnings)
 {
-    DecodedFile file;
-    if (layout.hasGridOffsets) {
-        file = decodeOne(path, layout, chosen);
-        for (const VdbGridEntry& other : layout.grids) {
-            if (&other == &chosen) continue;
-            try {
-                if (!openvdb::GridBase::isRegistered(other.type))
-                    throw std::runtime_error("type " + other.type + " unknown");
-                file.grids.push_back(decodeOne(path, layout, other).grids.front());
-            } catch (const std::exception& e) {
-                warnings.push_back(path.string() + ": grid '" + other.name + "' cannot be read by this build (" +
-                                   e.what() +
-                                   "); it is left out of files saved from this one, which cannot replace this file");
-            }
+    DecodedFile file = decodeOne(path, layout, chosen);
+    for (const VdbGridEntry& other : layout.grids) {
+        if (&other == &chosen) continue;
+        try {
+            if (!openvdb::GridBase::isRegistered(other.type))
+                throw std::runtime_error("type " + other.type + " unknown");
+            if (!other.located()) throw std::runtime_error("a streamed file does not say where it ends");
+            file.grids.push_back(decodeOne(path, layout, other).grids.front());
+        } catch (const std::exception& e) {
+            warnings.push_back(path.string() + ": grid '" + other.name + "' cannot be read by this build (" + e.what() +
+                               "); it is left out of files saved from this one, which cannot replace this file");
         }
-    } else {
-        file = decodeAll(path);
-        const auto it = std::find_if(file.grids.begin(), file.grids.end(),
-                                     [&](const auto& g) { return g->getName() == chosen.name; });
-        std::rotate(file.grids.begin(), it, it + 1);
+    }
+    if (layout.unlocatedGrids > 0) {
+        warnings.push_back(path.string() + ": " + std::to_string(layout.unlocatedGrids) +
+                           " grids after those cannot be located; they are left out of files saved from this one, "
+                           "which cannot replace this file");
     }
     auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.grids.front());
     if (!grid) throw InputError("grid '" + chosen.name + "' is unreadable");
@@ -164,10 +166,14 @@ void refuseToLoseGrids(const fs::path& path)
         return;  // not a readable .vdb: nothing in it could be kept anyway
     }
     for (const VdbGridEntry& grid : layout.grids) {
-        if (!openvdb::GridBase::isRegistered(grid.type)) {
-            throw InputError(path.string() + ": holds grid '" + grid.name + "' of a type this build cannot read (" +
+        if (!openvdb::GridBase::isRegistered(grid.type) || !grid.located()) {
+            throw InputError(path.string() + ": holds grid '" + grid.name + "' that this build cannot read (" +
                              grid.type + "); writing over it would lose that grid: choose another file");
         }
+    }
+    if (layout.unlocatedGrids > 0) {
+        throw InputError(path.string() + ": holds grids this build cannot locate (a streamed file); writing over it "
+                                         "would lose them: choose another file");
     }
 }
 

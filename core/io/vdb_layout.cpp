@@ -1,6 +1,8 @@
 #include "core/io/vdb_layout.h"
 
 #include "core/base/errors.h"
+#include "core/io/bounded_reader.h"
+#include "core/io/vdb_tree_check.h"
 
 #include <openvdb/Grid.h>
 #include <openvdb/io/GridDescriptor.h>
@@ -16,66 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Reads little-endian fields as OpenVDB writes them, refusing any length that runs past the end.
-class BoundedReader {
-public:
-    explicit BoundedReader(const fs::path& path) : mIn(path, std::ios::binary), mSize(std::int64_t(fs::file_size(path)))
-    {
-        mIn.exceptions(std::ios::failbit | std::ios::badbit);
-    }
-
-    std::int64_t size() const { return mSize; }
-    std::int64_t position() { return std::int64_t(mIn.tellg()); }
-    std::int64_t remaining() { return mSize - position(); }
-
-    template <typename T>
-    T read(const char* what)
-    {
-        need(sizeof(T), what);
-        T value;
-        mIn.read(reinterpret_cast<char*>(&value), sizeof(T));
-        return value;
-    }
-
-    std::string readBytes(std::int64_t length, const char* what)
-    {
-        need(length, what);
-        std::string bytes(std::size_t(length), '\0');
-        mIn.read(bytes.data(), std::streamsize(length));
-        return bytes;
-    }
-
-    std::string readString(const char* what) { return readBytes(read<std::uint32_t>(what), what); }
-
-    void skip(std::int64_t bytes, const char* what)
-    {
-        need(bytes, what);
-        mIn.seekg(bytes, std::ios::cur);
-    }
-
-    void seek(std::int64_t at, const char* what)
-    {
-        if (at < position() || at > mSize)
-            throw InputError(std::string("corrupt (") + what + " points outside the file)");
-        mIn.seekg(at);
-    }
-
-private:
-    void need(std::int64_t bytes, const char* what)
-    {
-        const std::int64_t left = remaining();
-        if (bytes < 0 || bytes > left) {
-            throw InputError(std::string("truncated or corrupt (") + what + " needs " + std::to_string(bytes) +
-                             " bytes, " + std::to_string(left) + " remain)");
-        }
-    }
-
-    std::ifstream mIn;
-    std::int64_t mSize;
-};
-
-/// The file header up to the file metadata; returns the format version and whether grids have offsets.
-std::pair<std::uint32_t, bool> readHeader(BoundedReader& in)
+/// The file header up to the file metadata; returns whether grids have offsets.
+bool readHeader(BoundedReader& in)
 {
     if (in.size() < 8 || in.read<std::int64_t>("the header") != openvdb::OPENVDB_MAGIC) {
         throw InputError("not an OpenVDB file");
@@ -85,15 +29,14 @@ std::pair<std::uint32_t, bool> readHeader(BoundedReader& in)
         throw InputError("written by a newer OpenVDB (file format " + std::to_string(version) +
                          ", this build reads up to " + std::to_string(openvdb::OPENVDB_FILE_VERSION) + ")");
     }
-    if (version < openvdb::OPENVDB_FILE_VERSION_FLOAT_FRUSTUM_BBOX) {
+    if (version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) {
         throw InputError("an OpenVDB file of format " + std::to_string(version) +
-                         ", older than OpenVDB reads (221, from 2013)");
+                         ", older than this program reads (222, OpenVDB 2.0 from 2013)");
     }
     in.skip(2 * sizeof(std::uint32_t), "the header");  // library version
     const bool hasOffsets = in.read<char>("the header") != 0;
-    if (version < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.skip(1, "the header");  // compression flag
-    in.skip(36, "the header");                                                                    // uuid
-    return {version, hasOffsets};
+    in.skip(36, "the header");  // uuid
+    return hasOffsets;
 }
 
 /// The entries of a metadata map we use; the others are skipped.
@@ -127,8 +70,9 @@ MetadataSeen readMetadata(BoundedReader& in)
     return seen;
 }
 
-/// A grid's descriptor and, where the file has offsets, its metadata; leaves `in` after the grid.
-VdbGridEntry readGrid(BoundedReader& in, std::uint32_t version, bool hasOffsets)
+/// A grid's descriptor and metadata; leaves `in` after the grid. A streamed file (no offsets)
+/// is walked to the grid's end, which only a float tree's walk can find.
+VdbGridEntry readGrid(BoundedReader& in, bool hasOffsets)
 {
     VdbGridEntry grid;
     grid.begin = in.position();
@@ -138,6 +82,7 @@ VdbGridEntry readGrid(BoundedReader& in, std::uint32_t version, bool hasOffsets)
     if (grid.type.size() > halfSuffix.size() &&
         grid.type.compare(grid.type.size() - halfSuffix.size(), halfSuffix.size(), halfSuffix) == 0) {
         grid.type.resize(grid.type.size() - halfSuffix.size());
+        grid.coding.halfFloat = true;
     }
     grid.instanceOf = openvdb::io::GridDescriptor::stripSuffix(in.readString("a grid's instance parent"));
     const auto gridPos = in.read<std::int64_t>("a grid offset");
@@ -150,13 +95,18 @@ VdbGridEntry readGrid(BoundedReader& in, std::uint32_t version, bool hasOffsets)
         }
         in.seek(gridPos, "a grid offset");
     }
-    if (version >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.skip(4, "a grid's compression");
+    grid.coding.compression = in.read<std::uint32_t>("a grid's compression");
     const MetadataSeen seen = readMetadata(in);
     grid.gridClass = seen.gridClass;
     grid.memoryBytes = seen.memoryBytes;
+    grid.transformBegin = in.position();
     if (hasOffsets) {
         in.seek(endPos, "a grid offset");
+        grid.buffersBegin = blockPos;
         grid.end = endPos;
+    } else if (grid.isFloat() && grid.instanceOf.empty()) {
+        checkVdbFloatTree(in, grid.coding, /*throughBuffers=*/true);
+        grid.end = in.position();
     }
     return grid;
 }
@@ -167,19 +117,24 @@ bool VdbGridEntry::isFloat() const { return type == openvdb::FloatGrid::gridType
 
 VdbLayout scanVdbLayout(const fs::path& path)
 {
-    BoundedReader in(path);
+    std::ifstream file(path, std::ios::binary);
+    file.exceptions(std::ios::failbit | std::ios::badbit);
+    BoundedReader in(file, std::int64_t(fs::file_size(path)));
     VdbLayout layout;
     layout.fileSize = in.size();
-    const auto [version, hasOffsets] = readHeader(in);
-    layout.hasGridOffsets = hasOffsets;
+    const bool hasOffsets = readHeader(in);
     layout.editedGrid = readMetadata(in).editedGrid;
     layout.gridTableOffset = in.position();
     const auto count = in.read<std::int32_t>("the grid count");
     // A descriptor holds at least three 4-byte lengths and three 8-byte offsets.
     if (count < 0 || std::int64_t(count) * 36 > in.remaining()) throw InputError("corrupt (impossible grid count)");
-    // Without offsets, grids after the first cannot be found without decoding it.
-    const std::int32_t scanned = hasOffsets ? count : std::min(count, 1);
-    for (std::int32_t i = 0; i < scanned; ++i) layout.grids.push_back(readGrid(in, version, hasOffsets));
+    for (std::int32_t i = 0; i < count; ++i) {
+        layout.grids.push_back(readGrid(in, hasOffsets));
+        if (!layout.grids.back().located()) {
+            layout.unlocatedGrids = count - i - 1;
+            break;
+        }
+    }
     return layout;
 }
 
@@ -214,6 +169,9 @@ std::string describeGrids(const VdbLayout& layout)
     for (const VdbGridEntry& grid : layout.grids) {
         if (!text.empty()) text += ", ";
         text += "'" + grid.name + "' (" + (grid.gridClass.empty() ? grid.type : grid.gridClass) + ")";
+    }
+    if (layout.unlocatedGrids > 0) {
+        text += " and " + std::to_string(layout.unlocatedGrids) + " more that a streamed file does not locate";
     }
     return text.empty() ? "no grids" : text;
 }

@@ -8,6 +8,8 @@
 /// what the file holds, bounds what OpenVDB is then given, lists the grids for the user, and
 /// lets a reader decode one grid without touching the others.
 
+#include "core/io/vdb_tree_check.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -17,16 +19,22 @@ namespace sculpt {
 
 /// One grid as the file's table describes it.
 struct VdbGridEntry {
-    std::string name;              ///< the grid's name, as OpenVDB tools show it
-    std::string type;              ///< tree type, e.g. "Tree_float_5_4_3"
-    std::string gridClass;         ///< "level set", "fog volume", ..., empty when unstated
-    std::string instanceOf;        ///< the grid whose voxels this one shares, or empty
-    std::int64_t memoryBytes = 0;  ///< in-core size the writer recorded, 0 when unstated
-    std::int64_t begin = 0;        ///< first byte of its descriptor
-    std::int64_t end = 0;          ///< one past its last byte; 0 when the file has no offsets
+    std::string name;                 ///< the grid's name, as OpenVDB tools show it
+    std::string type;                 ///< tree type, e.g. "Tree_float_5_4_3"
+    std::string gridClass;            ///< "level set", "fog volume", ..., empty when unstated
+    std::string instanceOf;           ///< the grid whose voxels this one shares, or empty
+    std::int64_t memoryBytes = 0;     ///< in-core size the writer recorded, 0 when unstated
+    VdbValueCoding coding;            ///< how its values are stored
+    std::int64_t begin = 0;           ///< first byte of its descriptor
+    std::int64_t transformBegin = 0;  ///< first byte of its transform, after its metadata
+    std::int64_t buffersBegin = 0;    ///< first byte of its leaves' values; 0 when the file has no offsets
+    /// One past its last byte; 0 when it cannot be located (a streamed file, without offsets,
+    /// is walked grid by grid, and only float trees can be walked).
+    std::int64_t end = 0;
 
     bool isFloat() const;
     bool isLevelSet() const { return gridClass == "level set"; }
+    bool located() const { return end > 0; }
 };
 
 /// File metadata naming the grid a document edits (written by writeFieldImage).
@@ -36,10 +44,10 @@ struct VdbLayout {
     std::int64_t fileSize = 0;
     /// Where the grid count lies: the header and file metadata are the bytes before it.
     std::int64_t gridTableOffset = 0;
-    /// Whether grids can be found without decoding the ones before them (files written by
-    /// `openvdb::io::File` can; streamed files hold only their first grid in `grids`).
-    bool hasGridOffsets = true;
+    /// The grids up to the first one that cannot be located (see VdbGridEntry::end).
     std::vector<VdbGridEntry> grids;
+    /// Grids after that one: a streamed file's grids are found only by walking those before.
+    int unlocatedGrids = 0;
     /// The file's `sculpt.grid`: the grid our programs edited when they wrote it.
     std::string editedGrid;
 };

@@ -22,20 +22,6 @@ using LeafT = openvdb::FloatTree::LeafNodeType;
 constexpr int kLeafDim = int(LeafT::DIM);
 constexpr int kSamples = kLeafDim + 2;  // the leaf and one voxel around it, for gradients
 
-/// Refuses an influence reaching beyond the largest model: converting it to voxel indices would
-/// overflow, and clipping it would bake something other than the scene.
-void requireIndexRange(const openvdb::BBoxd& box, const openvdb::math::Transform& xform, const std::string& what)
-{
-    const double h = xform.voxelSize()[0];
-    const double reach = std::max(box.min().length(), box.max().length()) / h;
-    if (!(reach < double(kMaxIndexCoordinate))) {
-        throw InputError(what + ": its influence reaches " + formatNumber(reach) +
-                             " voxels from the origin, beyond the largest model (" + formatNumber(kMaxIndexCoordinate) +
-                             "): choose a smaller radius, a position nearer the origin or a coarser voxel size",
-                         Remedy::CoarserVoxelSize);
-    }
-}
-
 /// Leaf origins meeting any primitive's influence (grown by `marginVoxels`), each with the
 /// primitives that reach it.
 std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set, const openvdb::math::Transform& xform,
@@ -44,11 +30,11 @@ std::map<openvdb::Coord, std::vector<int>> leavesToVisit(const PrimitiveSet& set
     std::map<openvdb::Coord, std::vector<int>> leaves;
     for (int i = 0; i < int(set.primitives().size()); ++i) {
         const openvdb::BBoxd box = set.influence(i);
-        requireIndexRange(box, xform, describePrimitive(i, set.primitives()[size_t(i)].name));
+        const std::string name = describePrimitive(i, set.primitives()[size_t(i)].name);
+        requireWithinModelExtent(box, xform.voxelSize()[0], name + "'s influence");
         const openvdb::Coord lo = xform.worldToIndexCellCentered(box.min()).offsetBy(-marginVoxels);
         const openvdb::Coord hi = xform.worldToIndexCellCentered(box.max()).offsetBy(marginVoxels);
-        requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float),
-                      describePrimitive(i, set.primitives()[size_t(i)].name));
+        requireMemory(double(openvdb::CoordBBox(lo, hi).volume()) * sizeof(float), name);
         for (const openvdb::Coord& origin : DirtyRegion::leafOriginsIn(openvdb::CoordBBox(lo, hi))) {
             leaves[origin].push_back(i);
         }

@@ -1,6 +1,7 @@
 #include "core/scan/dicom_file.h"
 
 #include "core/base/errors.h"
+#include "core/base/isolated_call.h"
 #include "core/base/memory_budget.h"
 
 #include <vtkDataArray.h>
@@ -187,6 +188,7 @@ DicomFrames readDicomFile(const fs::path& path)
 {
     quietGdcm();
     const std::string file = path.string();
+    noteIsolatedSubject(file);  // GDCM may abort on a damaged file: name it
     gdcm::ImageReader reader;
     reader.SetFileName(file.c_str());
     if (!reader.Read()) throw InputError(file + ": not a DICOM image (GDCM cannot read it)");

@@ -4,6 +4,7 @@
 #include "core/base/file_extension.h"
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
+#include "core/scan/dicom_directory.h"
 #include "core/scan/dicom_file.h"
 #include "core/scan/vtk_image_scan.h"
 
@@ -37,16 +38,11 @@ struct Slice {
     }
 };
 
-/// The slice files of a directory (DICOMDIR, the index some archives add, and hidden files left out).
-std::vector<fs::path> sliceFiles(const fs::path& dir)
+/// The listing's note as the scan's warnings.
+std::vector<std::string> notes(const fs::path& dir, const DicomDirectoryListing& listing)
 {
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(dir)) {
-        const std::string name = entry.path().filename().string();
-        if (entry.is_regular_file() && name != "DICOMDIR" && name.front() != '.') files.push_back(entry.path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
+    std::string note = listingNote(dir, listing);
+    return note.empty() ? std::vector<std::string>{} : std::vector<std::string>{std::move(note)};
 }
 
 /// Refuses a directory holding several series: which one is meant is for the user to say.
@@ -171,7 +167,7 @@ std::pair<double, double> stepRange(const std::vector<Slice>& slices)
     return {lo, hi};
 }
 
-ScanVolume assemble(const std::vector<DicomFrames>& files, const fs::path& source)
+ScanVolume assemble(const std::vector<DicomFrames>& files, const fs::path& source, std::vector<std::string> warnings)
 {
     requireSameGeometry(files, source);
     const DicomFrames& first = files.front();
@@ -189,7 +185,6 @@ ScanVolume assemble(const std::vector<DicomFrames>& files, const fs::path& sourc
     const double bytesPerSample = std::max(4, first.samples->GetScalarSize());
     requireMemory(double(d[0]) * d[1] * double(slices.size()) * bytesPerSample,
                   source.string() + " (assembling the series)");
-    std::vector<std::string> warnings;
     if (!even) {
         warnings.push_back(source.string() + ": the slices are " + formatNumber(shortest) + " to " +
                            formatNumber(longest) + " apart: each is placed at its own position (resampled to " +
@@ -223,23 +218,25 @@ ScanVolume readDicomSeries(const fs::path& path)
 {
     std::vector<DicomFrames> files;
     if (fs::is_directory(path)) {
-        for (const fs::path& file : sliceFiles(path)) files.push_back(readDicomFile(file));
-        if (files.empty()) throw InputError(path.string() + ": no DICOM files in the directory");
+        const DicomDirectoryListing listing = listDicomDirectory(path);
+        for (const fs::path& file : listing.images) files.push_back(readDicomFile(file));
+        if (files.empty()) throw InputError(path.string() + ": no DICOM images in the directory");
         requireOneSeries(files, path);
-        return assemble(files, path);
+        return assemble(files, path, notes(path, listing));
     }
     DicomFrames chosen = readDicomFile(path);
     if (chosen.positions.size() > 1) {
         files.push_back(std::move(chosen));
-        return assemble(files, path);
+        return assemble(files, path, {});
     }
     // One slice: the series it belongs to, from its directory.
     const fs::path dir = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-    for (const fs::path& file : sliceFiles(dir)) {
+    const DicomDirectoryListing listing = listDicomDirectory(dir);
+    for (const fs::path& file : listing.images) {
         DicomFrames slice = fs::equivalent(file, path) ? chosen : readDicomFile(file);
         if (slice.seriesUid == chosen.seriesUid) files.push_back(std::move(slice));
     }
-    return assemble(files, dir);
+    return assemble(files, dir, notes(dir, listing));
 }
 
 }  // namespace sculpt

@@ -3,9 +3,14 @@
 #include "core/base/enum_names.h"
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
+#include "core/base/isolated_call.h"
+#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
+#include "core/scan/dicom_directory.h"
 #include "core/scan/dicom_series.h"
 #include "core/scan/header_checks.h"
+#include "core/scan/header_text.h"
+#include "core/scan/scan_transfer.h"
 #include "core/scan/vtk_image_scan.h"
 
 #include <vtkDataArray.h>
@@ -17,6 +22,7 @@
 #include <vtkNew.h>
 #include <vtkNrrdReader.h>
 #include <vtkPointData.h>
+#include <vtkSMPTools.h>
 #include <vtkType.h>
 
 #include <algorithm>
@@ -90,32 +96,15 @@ constexpr EnumNames<int, 8> kSampleTypes{{{VTK_UNSIGNED_CHAR, "uint8"},
 /// VTK's scalar type for a raw layout's sample type name.
 int vtkTypeOf(const std::string& type) { return enumFromName(kSampleTypes, type, "sample type"); }
 
-}  // namespace
+enum class ScanFormat { Dicom, Nifti, Nrrd, MetaImage };
 
-bool isScanPath(const fs::path& path)
+ScanFormat formatOf(const fs::path& path)
 {
-    static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
+    if (fs::is_directory(path) || isDicomFile(path) || hasDicomMarker(path)) return ScanFormat::Dicom;
     const std::string ext = lowerExtension(path);
-    return fs::is_directory(path) || isDicomFile(path) || std::find(known.begin(), known.end(), ext) != known.end();
-}
-
-ScanVolume readScan(const fs::path& path)
-{
-    if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
-    if (fs::is_directory(path) || isDicomFile(path)) return readDicomSeries(path);
-    const std::string ext = lowerExtension(path);
-    if (ext == ".nii" || ext == ".nii.gz") {
-        checkNiftiHeader(path);
-        return readNifti(path);
-    }
-    if (ext == ".nrrd" || ext == ".nhdr") {
-        checkNrrdHeader(path);
-        return readWithDirection<vtkNrrdReader>(path);
-    }
-    if (ext == ".mha" || ext == ".mhd") {
-        checkMetaImageHeader(path);
-        return readWithDirection<vtkMetaImageReader>(path);
-    }
+    if (ext == ".nii" || ext == ".nii.gz") return ScanFormat::Nifti;
+    if (ext == ".nrrd" || ext == ".nhdr") return ScanFormat::Nrrd;
+    if (ext == ".mha" || ext == ".mhd") return ScanFormat::MetaImage;
     throw InputError(
         path.string() + ": unknown scan format '" + ext +
             "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM file or a DICOM directory); raw samples "
@@ -123,15 +112,69 @@ ScanVolume readScan(const fs::path& path)
         Remedy::DescribeRawLayout);
 }
 
-ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
+/// Our checks of the header against the file, in this process: they are bounded, and so a
+/// fuzzer sees their coverage.
+void checkHeader(const fs::path& path, ScanFormat format)
+{
+    switch (format) {
+    case ScanFormat::Dicom: return;  // GDCM parses DICOM; the child process contains it
+    case ScanFormat::Nifti: return checkNiftiHeader(path);
+    case ScanFormat::Nrrd: return checkNrrdHeader(path);
+    case ScanFormat::MetaImage: return checkMetaImageHeader(path);
+    }
+}
+
+/// What readScan does in the isolated child: the third-party reader.
+ScanVolume decodeScan(const fs::path& path, ScanFormat format)
+{
+    switch (format) {
+    case ScanFormat::Dicom: return readDicomSeries(path);
+    case ScanFormat::Nifti: return readNifti(path);
+    case ScanFormat::Nrrd: return readWithDirection<vtkNrrdReader>(path);
+    case ScanFormat::MetaImage: return readWithDirection<vtkMetaImageReader>(path);
+    }
+    throw std::logic_error("unknown scan format");
+}
+
+/// The library that decodes the format, for messages.
+std::string readerOf(ScanFormat format)
+{
+    switch (format) {
+    case ScanFormat::Dicom: return "the DICOM reader";
+    case ScanFormat::Nifti: return "the NIfTI reader";
+    case ScanFormat::Nrrd: return "the NRRD reader";
+    case ScanFormat::MetaImage: return "the MetaImage reader";
+    }
+    return "the scan reader";
+}
+
+/// Processor time a scan's decoding may take: a 1000-slice JPEG 2000 CT decodes in about 30 s.
+constexpr int kScanReadCpuSeconds = 300;
+
+/// Runs `decode` in a child process (isolated_call.h) and brings its scan back.
+template <typename Decode>
+ScanVolume readIsolated(const fs::path& path, const std::string& reader, const Decode& decode)
+{
+    IsolationLimits limits;
+    limits.subject = path.string();
+    limits.reader = reader;
+    limits.memoryBytes = availableMemoryBytes();
+    limits.cpuSeconds = kScanReadCpuSeconds;
+    return unpackScan(runIsolated(limits, [&] {
+        vtkSMPTools::SetBackend("Sequential");  // the parent's TBB workers do not exist in the child
+        return packScan(decode());
+    }));
+}
+
+ScanVolume decodeRawScan(const fs::path& path, const RawLayout& layout)
 {
     const int type = vtkTypeOf(layout.type);
     if (layout.dims.x() < 1 || layout.dims.y() < 1 || layout.dims.z() < 1) {
         throw InputError(path.string() + ": raw dimensions must be positive");
     }
+    requireSpacings({layout.spacing[0], layout.spacing[1], layout.spacing[2]}, path.string() + ": ", "the raw spacing");
     for (int a = 0; a < 3; ++a) {
-        if (!(layout.spacing[a] > 0.0) || !std::isfinite(layout.spacing[a]))
-            throw InputError("raw spacing must be positive");
+        if (!(layout.spacing[a] > 0.0)) throw InputError(path.string() + ": the raw spacing must be positive");
     }
     if (!fs::is_regular_file(path)) throw InputError(path.string() + ": no such file");
     const double needed = double(layout.headerBytes) + double(layout.dims.x()) * layout.dims.y() * layout.dims.z() *
@@ -154,6 +197,29 @@ ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
     reader->FileLowerLeftOn();
     vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
     return makeScan(image, placement(image, nullptr), path.string());
+}
+
+}  // namespace
+
+bool isScanPath(const fs::path& path)
+{
+    static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
+    const std::string ext = lowerExtension(path);
+    return fs::is_directory(path) || isDicomFile(path) || std::find(known.begin(), known.end(), ext) != known.end() ||
+           hasDicomMarker(path);
+}
+
+ScanVolume readScan(const fs::path& path)
+{
+    if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
+    const ScanFormat format = formatOf(path);
+    checkHeader(path, format);
+    return readIsolated(path, readerOf(format), [&] { return decodeScan(path, format); });
+}
+
+ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
+{
+    return readIsolated(path, "the raw sample reader", [&] { return decodeRawScan(path, layout); });
 }
 
 }  // namespace sculpt

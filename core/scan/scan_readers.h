@@ -6,7 +6,10 @@
 /// and MetaImage (.mha, .mhd), GDCM's for DICOM (a directory of slices, one slice of a series,
 /// or a multi-frame file: dicom_series.h), and ours for raw samples with a layout given by the
 /// user. Every reader checks what the header claims against
-/// sane limits and the memory available before the samples are allocated.
+/// sane limits and the memory available before the samples are allocated (header_checks.h,
+/// here); the third-party library then decodes in a child process (isolated_call.h), so that
+/// its abort, crash or runaway allocation is one InputError naming the file, never the end of
+/// the program and its document.
 
 #include "core/scan/scan_volume.h"
 

@@ -285,6 +285,7 @@ openvdb::CoordBBox outputBox(const ScanVolume& scan, double h)
 {
     const openvdb::BBoxd world =
         transformedBounds(scan.worldFromIndex(), openvdb::CoordBBox(openvdb::Coord(0), scan.dims().offsetBy(-1)));
+    requireWithinModelExtent(world, h, scan.source());  // before the conversion to int could overflow
     openvdb::CoordBBox box;
     for (int a = 0; a < 3; ++a) {
         box.min()[a] = int(std::floor(world.min()[a] / h)) - 2;

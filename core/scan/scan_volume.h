@@ -16,6 +16,8 @@
 
 namespace sculpt {
 
+struct ChildReply;
+
 class ScanVolume {
 public:
     struct Impl;
@@ -60,7 +62,8 @@ public:
     double otsuThreshold() const;
 
 private:
-    static constexpr double kMinSigmaVoxels = 0.25;  // below, the filter would change nothing visible
+    friend ChildReply packScan(const ScanVolume& scan);  // scan_transfer.h
+    static constexpr double kMinSigmaVoxels = 0.25;      // below, the filter would change nothing visible
     ScanVolume gaussian(const openvdb::Vec3d& sigmaVoxels) const;
 
     std::shared_ptr<const Impl> mImpl;

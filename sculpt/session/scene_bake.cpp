@@ -1,6 +1,8 @@
 #include "sculpt/session/scene_bake.h"
 
+#include "core/base/errors.h"
 #include "core/field/csg_combine.h"
+#include "core/field/voxel_size.h"
 #include "core/local/speck_removal.h"
 #include "core/primitives/primitive_rasterizer.h"
 #include "sculpt/session/model_filter.h"
@@ -20,8 +22,14 @@ FieldImage bakeScene(FieldImage base, const Scene& scene, const std::string& sou
 
 FieldImage bakeScene(const Scene& scene, double voxelSize, const std::string& source)
 {
-    FieldImage field =
-        rasterizePrimitives(scene.primitives, *openvdb::math::Transform::createLinearTransform(voxelSize));
+    const openvdb::math::Transform::Ptr xform = [&] {
+        try {
+            return voxelTransform(voxelSize);
+        } catch (const InputError& e) {
+            throw InputError(source + ": " + e.what(), e.remedy());
+        }
+    }();
+    FieldImage field = rasterizePrimitives(scene.primitives, *xform);
     removeSpecks(field);
     refuseEmptyResult(field, source, "the scene");
     return field;

@@ -27,6 +27,18 @@ void validateSettings(const Stroke& stroke)
     }
 }
 
+/// A stroke's stamps, mirrors included, bounded before any is made: the path over the step,
+/// once more for the first stamp, times the mirror images.
+double stampsNeeded(const Stroke& stroke)
+{
+    double length = 0.0;
+    for (size_t i = 1; i < stroke.samples.size(); ++i)
+        length += (stroke.samples[i].positionWorld - stroke.samples[i - 1].positionWorld).length();
+    const double mirrors =
+        (stroke.symmetry.x ? 2.0 : 1.0) * (stroke.symmetry.y ? 2.0 : 1.0) * (stroke.symmetry.z ? 2.0 : 1.0);
+    return (length / (stroke.spacing * stroke.brush.radiusWorld) + 2.0) * mirrors;
+}
+
 void validateSample(const StrokeSample& s, size_t index)
 {
     const std::string where = "field 'samples[" + std::to_string(index) + "].";
@@ -39,11 +51,25 @@ void validateSample(const StrokeSample& s, size_t index)
 
 }  // namespace
 
+void requireSampleCount(std::size_t samples)
+{
+    if (samples > kMaxStrokeSamples) {
+        throw InputError("field 'samples' holds " + std::to_string(samples) + " samples, more than a stroke may (" +
+                         std::to_string(kMaxStrokeSamples) + "): split it into several strokes");
+    }
+}
+
 void validateStroke(const Stroke& stroke)
 {
     validateSettings(stroke);
     if (stroke.samples.empty()) throw InputError("field 'samples' is empty: a stroke needs at least one");
+    requireSampleCount(stroke.samples.size());
     for (size_t i = 0; i < stroke.samples.size(); ++i) validateSample(stroke.samples[i], i);
+    const double stamps = stampsNeeded(stroke);
+    if (!(stamps <= double(kMaxStrokeStamps))) {
+        throw InputError("the stroke would make " + formatNumber(stamps) + " stamps, more than " +
+                         std::to_string(kMaxStrokeStamps) + ": split it, or use a larger spacing or radius");
+    }
 }
 
 struct SculptSession::LiveStroke {

@@ -87,8 +87,17 @@ private:
     std::size_t mRemeshed = 0;
 };
 
+/// Samples one stroke may hold: a 40 Hz pointer for 40 minutes.
+constexpr std::size_t kMaxStrokeSamples = 100000;
+/// Stamps one stroke may make, mirrors included: about two minutes of stamping.
+constexpr std::size_t kMaxStrokeStamps = 100000;
+
 /// @throws InputError naming the field if a sample is not finite or its pressure not in (0, 1],
-///         there are no samples, the spacing is not in [0.01, 4], or the brush settings are invalid.
+///         there are no samples or more than kMaxStrokeSamples, the stroke needs more than
+///         kMaxStrokeStamps stamps, the spacing is not in [0.01, 4], or the brush settings are invalid.
 void validateStroke(const Stroke& stroke);
+/// @throws InputError if a stroke of `samples` samples is more than one may hold (checked
+///         before they are parsed).
+void requireSampleCount(std::size_t samples);
 
 }  // namespace sculpt

@@ -106,6 +106,19 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
 }
 
+/// Runs `convert`, making sure any refusal names the file: a message from deep in the engine
+/// ("the mesh at voxel size ... needs ...") does not know it.
+template <typename Convert>
+FieldImage namingInput(const fs::path& input, const Convert& convert)
+{
+    try {
+        return convert();
+    } catch (const InputError& e) {
+        if (std::string(e.what()).find(input.string()) != std::string::npos) throw;
+        throw InputError(input.string() + ": " + e.what(), e.remedy());
+    }
+}
+
 }  // namespace
 
 FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report,
@@ -117,8 +130,10 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
     }
     // The conversion is most of the work; the cleanup the rest.
     const Progress converting = scaledProgress(progress, 0.0, options.largestComponent ? 0.8 : 1.0);
-    FieldImage field = isMeshPath(input) && !options.raw ? importMesh(input, options, report, converting)
-                                                         : importScan(input, options, report, converting);
+    FieldImage field = namingInput(input, [&] {
+        return isMeshPath(input) && !options.raw ? importMesh(input, options, report, converting)
+                                                 : importScan(input, options, report, converting);
+    });
     if (options.largestComponent) report.pieces = keepLargestComponent(field, scaledProgress(progress, 0.8, 1.0));
     if (const std::size_t flipped = removeSpecks(field)) {
         report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +

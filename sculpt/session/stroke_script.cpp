@@ -119,6 +119,11 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
     if (brush.tool == BrushTool::Follow) brush.target = parseTarget(field(j, "target", where), where, context);
     const json& samples = field(j, "samples", where);
     if (!samples.is_array()) throw InputError(where + ": field 'samples' must be an array");
+    try {
+        requireSampleCount(samples.size());
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
     for (size_t i = 0; i < samples.size(); ++i) {
         stroke.samples.push_back(parseSample(samples[i], where + ": samples[" + std::to_string(i) + "]"));
     }

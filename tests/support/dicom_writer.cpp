@@ -98,6 +98,14 @@ std::string orientation(const DicomSliceSpec& d)
 }
 std::string pixelSpacing(const DicomSliceSpec& d) { return decimals({d.rowSpacing, d.columnSpacing}); }
 
+/// The 128-byte preamble and the DICM marker every Part 10 file starts with.
+void partTenStart(std::ofstream& out)
+{
+    const std::string preamble(128, '\0');
+    out.write(preamble.data(), 128);
+    out.write("DICM", 4);
+}
+
 /// A classic file holds one frame and its geometry; an enhanced one several, with the geometry in
 /// functional groups (orientation and spacing shared, each frame's position its own).
 void writeImage(const std::filesystem::path& path, const std::vector<const DicomSliceSpec*>& frames)
@@ -105,9 +113,7 @@ void writeImage(const std::filesystem::path& path, const std::vector<const Dicom
     const DicomSliceSpec& d = *frames.front();
     const bool enhanced = frames.size() > 1;
     std::ofstream out(path, std::ios::binary);
-    const std::string preamble(128, '\0');
-    out.write(preamble.data(), 128);
-    out.write("DICM", 4);
+    partTenStart(out);
     Writer w(out);
     w.text(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1");                        // explicit VR little endian
     if (enhanced) w.text(0x0008, 0x0016, "UI", "1.2.840.10008.5.1.4.1.1.4.1");  // enhanced MR
@@ -154,6 +160,28 @@ void writeDicomMultiFrame(const std::filesystem::path& path, const std::vector<D
     std::vector<const DicomSliceSpec*> pointers;
     for (const DicomSliceSpec& f : frames) pointers.push_back(&f);
     writeImage(path, pointers);
+}
+
+void writeDicomdir(const std::filesystem::path& path, const std::vector<std::string>& images)
+{
+    std::ofstream out(path, std::ios::binary);
+    partTenStart(out);
+    Writer w(out);
+    w.text(0x0002, 0x0002, "UI", "1.2.840.10008.1.3.10");  // Media Storage Directory Storage
+    w.text(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1");
+    w.sequenceStart(0x0004, 0x1220);
+    for (const char* type : {"PATIENT", "STUDY", "SERIES"}) {  // the records above the images, as discs have
+        w.itemStart();
+        w.text(0x0004, 0x1430, "CS", type);
+        w.itemEnd();
+    }
+    for (const std::string& image : images) {
+        w.itemStart();
+        w.text(0x0004, 0x1430, "CS", "IMAGE");
+        w.text(0x0004, 0x1500, "CS", image);
+        w.itemEnd();
+    }
+    w.sequenceEnd();
 }
 
 }  // namespace sculpt::test

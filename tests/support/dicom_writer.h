@@ -27,4 +27,8 @@ void writeDicomSlice(const std::filesystem::path& path, const DicomSliceSpec& sl
 /// The frames (one size, orientation and spacing) in one file, each frame at its own position.
 void writeDicomMultiFrame(const std::filesystem::path& path, const std::vector<DicomSliceSpec>& frames);
 
+/// A DICOMDIR listing `images` (paths relative to its directory, components separated by
+/// backslashes, as discs write them) as IMAGE records under a patient, study and series.
+void writeDicomdir(const std::filesystem::path& path, const std::vector<std::string>& images);
+
 }  // namespace sculpt::test

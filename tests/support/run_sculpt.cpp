@@ -20,6 +20,15 @@ std::string slurp(const std::string& path)
 
 }  // namespace
 
+// gcc says __SANITIZE_ADDRESS__, clang (before 15) only __has_feature(address_sanitizer).
+#if defined(__SANITIZE_ADDRESS__)
+#define SCULPT_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#define SCULPT_ADDRESS_SANITIZER __has_feature(address_sanitizer)
+#else
+#define SCULPT_ADDRESS_SANITIZER 0
+#endif
+
 CommandResult runSculpt(const std::string& args, const std::string& workDir)
 {
     return runCommand("'" SCULPT_EXECUTABLE "' " + args, workDir);
@@ -27,7 +36,7 @@ CommandResult runSculpt(const std::string& args, const std::string& workDir)
 
 CommandResult runSculptBounded(const std::string& args, const std::string& workDir, int seconds, int addressSpaceMiB)
 {
-#if defined(__SANITIZE_ADDRESS__)
+#if SCULPT_ADDRESS_SANITIZER
     // AddressSanitizer reserves terabytes of shadow address space: cap its allocations and the
     // resident memory instead.
     const std::string mib = std::to_string(addressSpaceMiB);

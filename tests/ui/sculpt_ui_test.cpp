@@ -9,6 +9,8 @@
 #include "tests/support/vdb_files.h"
 #include "tests/ui/ui_driver.h"
 
+#include <sys/stat.h>
+
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
 #include <vtkImageData.h>
@@ -637,6 +639,43 @@ TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheScene
     EXPECT_GT(reports[2]["volume"].get<double>(), reports[0]["volume"].get<double>() + 100.0);
     EXPECT_EQ(reports[2]["undo"], 1);
     EXPECT_EQ(reports[3]["checksum"], reports[0]["checksum"]);
+}
+
+mode_t modeOf(const fs::path& path)
+{
+    struct stat s {};
+    return stat(path.c_str(), &s) == 0 ? s.st_mode & 07777 : 0;
+}
+
+TEST(SculptUi, ImportingASliceThatMakesGdcmAbortShowsAnErrorAndTheSessionAndDocumentLiveOn)
+{
+    TempDir dir;
+    fs::copy(SCULPT_TESTS_DIR "/bad-inputs/dicom_gdcm_abort", dir / "abort");
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.drag(560, 380, 700, 380).report(r);  // unsaved work
+    events.key("I", {"ctrl"}).text((dir / "abort").string()).key("Enter").untilJobEnds().report(r);
+    events.key("Enter");                        // dismisses the error
+    events.drag(560, 420, 700, 420).report(r);  // and sculpting goes on
+    const mode_t saved = umask(0);              // the widest: the state must be private whatever the user's umask
+    const CommandResult run = play(dir, events);
+    umask(saved);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_NE(reports[1]["error"].get<std::string>().find("slice_2.dcm: the DICOM reader failed on this file"),
+              std::string::npos)
+        << reports[1].dump();
+    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);
+    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);
+    // The work was autosaved before the file was read; the state is the user's alone.
+    EXPECT_EQ(modeOf(dir / "state"), 0700u);
+    EXPECT_EQ(modeOf(dir / "state" / "recovery"), 0700u);
+    std::vector<fs::path> copies;
+    for (const auto& entry : fs::directory_iterator(dir / "state" / "recovery")) copies.push_back(entry.path());
+    ASSERT_EQ(copies.size(), 1u);
+    EXPECT_EQ(modeOf(copies[0]), 0600u) << copies[0];
 }
 
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)

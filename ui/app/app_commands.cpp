@@ -304,6 +304,7 @@ void SculptApp::startFilter(const ModelFilter& filter)
 void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 {
     if (busy()) return;
+    autosaveBeforeReading();
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string label = "morph to " + target.filename().string();
     startJob<MorphRun>(
@@ -322,6 +323,7 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 void SculptApp::startOpen(const fs::path& path, const std::string& grid)
 {
     if (busy()) return;
+    autosaveBeforeReading();
     if (grid.empty()) {
         // A file of several level sets and none to take by default: ask which (a damaged
         // file is left for the job to report).
@@ -368,6 +370,7 @@ void SculptApp::startExport(const fs::path& path)
 void SculptApp::startLoadTarget(const fs::path& path)
 {
     if (busy()) return;
+    autosaveBeforeReading();
     auto warnings = std::make_shared<std::vector<std::string>>();
     startJob<FieldImage>(
         "load target " + path.filename().string(),
@@ -385,6 +388,7 @@ void SculptApp::startLoadTarget(const fs::path& path)
 void SculptApp::startImportRead(const fs::path& path)
 {
     if (busy()) return;
+    autosaveBeforeReading();
     startJob<ImportDraft>(
         "read " + path.filename().string(),
         [path](const Progress&) {
@@ -424,6 +428,7 @@ void SculptApp::applyImport()
     ImportDraft& draft = *mImport;
     const bool replaces = draft.result == ImportDraft::Result::NewDocument;
     if (replaces && !guardUnsaved(Command::ApplyImport)) return;
+    autosaveBeforeReading();
     ImportOptions options = draft.options;
     if (!replaces) options.voxelSize = mDocument->session().field().voxelSize();  // the document's lattice
     const fs::path path = draft.file().path();

@@ -309,6 +309,14 @@ void SculptApp::autosave()
     if (!error.empty()) mDialogs.notice = error;
 }
 
+void SculptApp::autosaveBeforeReading()
+{
+    std::string error;
+    if (mAutosave.save(*mDocument, error))
+        std::cout << "sculpt-ui: autosaved to " << mAutosave.recoveryFile(mDocument->path()).string() << std::endl;
+    if (!error.empty()) mDialogs.notice = error;
+}
+
 int SculptApp::run()
 {
     frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here

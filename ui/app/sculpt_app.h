@@ -154,6 +154,8 @@ private:
     void frame();
     bool idle() const;
     void autosave();
+    /// Before a file is read: a reader that takes the process down must not take unsaved work.
+    void autosaveBeforeReading();
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);

@@ -1,6 +1,7 @@
 #include "ui/document/autosave.h"
 
 #include "core/base/errors.h"
+#include "core/base/private_directory.h"
 #include "core/io/vdb_file.h"
 #include "ui/document/document.h"
 
@@ -43,13 +44,16 @@ fs::path Autosave::recoveryFile(const fs::path& documentPath) const
 
 bool Autosave::tick(const Document& document, double nowSeconds, bool strokeActive, std::string& error)
 {
-    if (strokeActive || !document.modified()) return false;
-    if (mWrittenOnce && document.revision() == mWrittenRevision) return false;
-    if (nowSeconds - mLastWrite < mInterval) return false;
+    if (strokeActive || nowSeconds - mLastWrite < mInterval || !needsWrite(document)) return false;
     mLastWrite = nowSeconds;  // a failing disk is retried at the next interval, not every frame
+    return save(document, error);
+}
+
+bool Autosave::save(const Document& document, std::string& error)
+{
+    if (!needsWrite(document)) return false;
     try {
-        std::error_code ec;
-        fs::create_directories(mDir / "recovery", ec);
+        makePrivateDirectory(mDir / "recovery");
         writeFieldImage(document.session().field(), recoveryFile(document.path()), document.companions());
     } catch (const InputError& e) {
         error = std::string("autosave failed: ") + e.what();
@@ -58,6 +62,11 @@ bool Autosave::tick(const Document& document, double nowSeconds, bool strokeActi
     mWrittenRevision = document.revision();
     mWrittenOnce = true;
     return true;
+}
+
+bool Autosave::needsWrite(const Document& document) const
+{
+    return document.modified() && !(mWrittenOnce && document.revision() == mWrittenRevision);
 }
 
 std::optional<fs::path> Autosave::pending(const fs::path& documentPath) const

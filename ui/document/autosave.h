@@ -27,6 +27,9 @@ public:
     /// Writes the recovery file when the document changed since the last one and the interval
     /// has passed. @return true if it wrote. A failure (disk full) is reported, never thrown.
     bool tick(const Document& document, double nowSeconds, bool strokeActive, std::string& error);
+    /// Writes the recovery file now if the document changed since the last one (before work
+    /// that could end the session, such as reading a file). @return true if it wrote.
+    bool save(const Document& document, std::string& error);
 
     /// The recovery file of the document at `documentPath` (empty: untitled).
     std::filesystem::path recoveryFile(const std::filesystem::path& documentPath) const;
@@ -38,6 +41,8 @@ public:
     double intervalSeconds() const { return mInterval; }
 
 private:
+    bool needsWrite(const Document& document) const;
+
     std::filesystem::path mDir;
     double mInterval;
     double mLastWrite = 0.0;

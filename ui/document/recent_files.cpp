@@ -1,6 +1,7 @@
 #include "ui/document/recent_files.h"
 
 #include "core/base/atomic_file.h"
+#include "core/base/private_directory.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,7 +33,7 @@ void RecentFiles::add(const fs::path& path)
     nlohmann::json list = nlohmann::json::array();
     for (const fs::path& entry : mEntries) list.push_back(entry.string());
     try {
-        fs::create_directories(mFile.parent_path(), ec);
+        makePrivateDirectory(mFile.parent_path());
         writeFileAtomically(mFile, list.dump(1) + "\n");
     } catch (const std::exception&) {
         // Not being able to remember recent files must not stop a save.

@@ -42,9 +42,10 @@ void histogramPlot(ImportDraft& draft)
     const ImVec2 size(kPanelWidth - 20.f, 70.f);
     ImGui::PlotHistogram("##histogram", heights.data(), int(heights.size()), 0, nullptr, 0.f, FLT_MAX, size);
     const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-    const auto [first, last] = draft.file().range(draft.options);
+    const std::pair<double, double> range = draft.file().range(draft.options);
     const auto mark = [&](double value, ImU32 colour) {
-        const float x = lo.x + float((value - first) / (last - first)) * (hi.x - lo.x);
+        const double along = (value - range.first) / (range.second - range.first);
+        const float x = lo.x + float(along) * (hi.x - lo.x);
         ImGui::GetWindowDrawList()->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), colour, 2.f);
     };
     mark(draft.file().otsuThreshold(draft.options), IM_COL32(255, 90, 80, 255));

@@ -6,6 +6,7 @@
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/progress_log.h"
 #include "tests/support/temp_dir.h"
@@ -19,7 +20,6 @@
 #include <vtkTriangleFilter.h>
 
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -223,8 +223,7 @@ TEST(MeshImport, TruncatedPlyAndStlFilesAreRefused)
     stl->Write();
     for (const char* name : {"ball.ply", "text.ply", "ball.stl"}) {
         ASSERT_NO_THROW(readMesh(dir / name)) << name;
-        std::ifstream in(dir / name, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string bytes = test::fileBytes(dir / name);
         for (const double share : {0.1, 0.5, 0.9}) {
             const std::string cut = "cut_" + std::to_string(int(share * 100)) + "_" + name;
             std::ofstream(dir / cut, std::ios::binary) << bytes.substr(0, std::size_t(share * double(bytes.size())));
@@ -252,8 +251,7 @@ TEST(MeshImport, BinaryPlyFacesNamingNoVertexOrHugeListsAreRefused)
     tetra.triangles.assign({{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}});
     writeMesh(tetra, dir / "tetra.ply");
     ASSERT_EQ(readMesh(dir / "tetra.ply").triangles.size(), 4u);
-    std::ifstream in(dir / "tetra.ply", std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = test::fileBytes(dir / "tetra.ply");
     const std::size_t face = firstFaceOffset(bytes, 12, 4);
     ASSERT_EQ(bytes[face], char(3));
     std::map<std::string, std::string> damaged{{"index.ply", bytes}, {"negative.ply", bytes}, {"list.ply", bytes}};

@@ -6,6 +6,7 @@
 #include "core/io/vdb_layout.h"
 #include "core/mesh/field_measures.h"
 #include "core/primitives/analytic_shapes.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vdb_files.h"
 
@@ -13,25 +14,15 @@
 #include <openvdb/io/File.h>
 
 #include <cmath>
-#include <fstream>
 #include <random>
 
 namespace sculpt {
 namespace {
 
 namespace fs = std::filesystem;
+using test::fileBytes;
 using test::TempDir;
-
-std::string readBytes(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
-void writeBytes(const fs::path& path, const std::string& bytes)
-{
-    std::ofstream(path, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-}
+using test::writeFileBytes;
 
 void expectInputErrorNaming(const fs::path& path)
 {
@@ -111,9 +102,9 @@ TEST(VdbFile, RefusesMissingNotVdbAndDirectory)
 {
     TempDir dir;
     expectInputErrorNaming(dir / "missing.vdb");
-    writeBytes(dir / "text.vdb", "this is not a vdb file\n");
+    writeFileBytes(dir / "text.vdb", "this is not a vdb file\n");
     expectInputErrorNaming(dir / "text.vdb");
-    writeBytes(dir / "empty.vdb", "");
+    writeFileBytes(dir / "empty.vdb", "");
     expectInputErrorNaming(dir / "empty.vdb");
     expectInputErrorNaming(dir.path());
 }
@@ -122,11 +113,11 @@ TEST(VdbFile, RefusesEveryTruncation)
 {
     TempDir dir;
     writeFieldImage(makeSphere(10.0, 0.5), dir / "whole.vdb");
-    const std::string bytes = readBytes(dir / "whole.vdb");
+    const std::string bytes = fileBytes(dir / "whole.vdb");
     for (double fraction : {0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.9999}) {
         SCOPED_TRACE(std::to_string(fraction) + " of " + std::to_string(bytes.size()) + " bytes");
         const fs::path cut = dir / "cut.vdb";
-        writeBytes(cut, bytes.substr(0, size_t(double(bytes.size()) * fraction)));
+        writeFileBytes(cut, bytes.substr(0, size_t(double(bytes.size()) * fraction)));
         expectInputErrorNaming(cut);
     }
 }
@@ -135,7 +126,7 @@ TEST(VdbFile, RefusesCorruptedBytes)
 {
     TempDir dir;
     writeFieldImage(makeSphere(10.0, 0.5), dir / "whole.vdb");
-    const std::string bytes = readBytes(dir / "whole.vdb");
+    const std::string bytes = fileBytes(dir / "whole.vdb");
     std::mt19937 random(20261122);
     for (int trial = 0; trial < 20; ++trial) {
         std::string damaged = bytes;
@@ -145,7 +136,7 @@ TEST(VdbFile, RefusesCorruptedBytes)
             damaged[at] = char(damaged[at] ^ (1 + random() % 255));
         }
         SCOPED_TRACE("trial " + std::to_string(trial));
-        writeBytes(dir / "bad.vdb", damaged);
+        writeFileBytes(dir / "bad.vdb", damaged);
         expectInputErrorNaming(dir / "bad.vdb");
     }
 }
@@ -258,19 +249,19 @@ TEST(VdbFile, AGridOfATypeThisBuildCannotReadIsLeftOutWithAWarning)
     const fs::path path = dir / "cache.vdb";
     openvdb::io::File(path.string()).write({points, surface});
     // Rename the vector grid's type to one no build registers, as a newer writer's would be.
-    std::string bytes = readBytes(path);
+    std::string bytes = fileBytes(path);
     const std::string type = openvdb::Vec3SGrid::gridType();
     const auto at = bytes.find(type);
     ASSERT_NE(at, std::string::npos);
     bytes.replace(at, type.size(), std::string(type.size(), 'Q'));
-    writeBytes(path, bytes);
+    writeFileBytes(path, bytes);
 
     const VdbDocument document = readVdbDocument(path);
     EXPECT_EQ(gridChecksum(document.field.grid()), gridChecksum(*surface));
     EXPECT_TRUE(document.companions.grids.empty());
     // Nothing we write may replace that file: the grid would be lost.
     EXPECT_THROW(writeFieldImage(document.field, path, document.companions), InputError);
-    EXPECT_EQ(readBytes(path), bytes);
+    EXPECT_EQ(fileBytes(path), bytes);
     writeFieldImage(document.field, dir / "elsewhere.vdb", document.companions);
     ASSERT_EQ(document.warnings.size(), 1u);
     EXPECT_NE(document.warnings[0].find("'points'"), std::string::npos) << document.warnings[0];
@@ -319,12 +310,12 @@ TEST(VdbFile, RefusesLengthsBeyondTheFileBeforeAllocating)
 {
     TempDir dir;
     writeFieldImage(makeSphere(5.0, 1.0), dir / "whole.vdb");
-    std::string bytes = readBytes(dir / "whole.vdb");
+    std::string bytes = fileBytes(dir / "whole.vdb");
     // The first metadata name's length (after the 8+4+8+1+36-byte header and the 4-byte count).
     const std::size_t at = 8 + 4 + 8 + 1 + 36 + 4;
     const std::uint32_t huge = 0x7fffffff;
     std::memcpy(bytes.data() + at, &huge, sizeof huge);
-    writeBytes(dir / "huge.vdb", bytes);
+    writeFileBytes(dir / "huge.vdb", bytes);
     try {
         readFieldImage(dir / "huge.vdb");
         FAIL() << "expected an InputError";

@@ -7,16 +7,17 @@
 #include "core/scan/scan_readers.h"
 #include "core/scan/scan_to_level_set.h"
 #include "tests/support/dicom_writer.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/synthetic_scan.h"
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <random>
 
 namespace sculpt {
@@ -164,8 +165,7 @@ void convertSeries(const fs::path& from, const fs::path& to, const std::string& 
 
 bool holds(const fs::path& file, const std::string& text)
 {
-    std::ifstream in(file, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {}).find(text) != std::string::npos;
+    return test::fileBytes(file).find(text) != std::string::npos;
 }
 
 TEST(DicomSeries, CompressedSeriesGiveTheSameGrid)
@@ -246,6 +246,84 @@ TEST(DicomSeries, MixedSizesInOneSeriesAreRefused)
     writeSeries(dir.path(), slices);
     const std::string message = messageOf([&] { readScan(dir.path()); });
     EXPECT_NE(message.find("mixed series"), std::string::npos) << message;
+}
+
+TEST(DicomSeries, FilesThatAreNotDicomImagesAreSkippedWithOneWarning)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    writeSeries(dir.path(), ballSlices(ball, ballSample(ball)));
+    std::ofstream(dir / "README.txt") << "Images of patient X. Open them with the viewer on this disc.\n";
+    std::ofstream(dir / "autorun.inf") << "[autorun]\nopen=viewer.exe\n";
+    test::writeDicomdir(dir / "DICOMDIR", {});  // an index of nothing: the files themselves are read
+    const ScanVolume series = readScan(dir.path());
+    ASSERT_EQ(series.warnings().size(), 1u);
+    EXPECT_NE(series.warnings()[0].find("skipped 3 files that are not a DICOM image (DICOMDIR, README.txt, "
+                                        "autorun.inf)"),
+              std::string::npos)
+        << series.warnings()[0];
+    test::expectBallAt(series, ball, "a series beside other files");
+}
+
+TEST(DicomSeries, ADiscsDicomdirNamesItsImagesInFoldersOfAnyCase)
+{
+    test::TempDir dir;
+    const SyntheticBall ball;
+    const std::vector<DicomSliceSpec> slices = ballSlices(ball, ballSample(ball));
+    // As a disc mounted in lower case shows the upper-case names its DICOMDIR gives.
+    fs::create_directories(dir / "disc" / "dicom" / "st000001");
+    std::vector<std::string> listed;
+    for (std::size_t k = 0; k < slices.size(); ++k) {
+        const std::string name = "im" + std::to_string(100 + k);
+        test::writeDicomSlice(dir / "disc" / "dicom" / "st000001" / name, slices[k]);  // no extension
+        listed.push_back("DICOM\\ST000001\\IM" + std::to_string(100 + k));
+    }
+    test::writeDicomdir(dir / "disc" / "DICOMDIR", listed);
+    std::ofstream(dir / "disc" / "README.txt") << "a viewer's notes\n";
+    const ScanVolume series = readScan(dir / "disc");
+    ASSERT_EQ(series.warnings().size(), 1u);
+    EXPECT_NE(series.warnings()[0].find("read the 22 images its DICOMDIR lists"), std::string::npos)
+        << series.warnings()[0];
+    test::expectBallAt(series, ball, "a disc's DICOMDIR");
+    // One of its files, named without an extension, opens its series.
+    expectSameScan(series, readScan(dir / "disc" / "dicom" / "st000001" / "im103"), "one file of the disc");
+
+    listed.push_back("DICOM\\ST000001\\IM999");
+    test::writeDicomdir(dir / "disc" / "DICOMDIR", listed);
+    const std::string message = messageOf([&] { readScan(dir / "disc"); });
+    EXPECT_NE(message.find("IM999, which is not on the disc"), std::string::npos) << message;
+}
+
+/// A copy of `dir` (the slices of one series) with one slice's bytes replaced.
+fs::path seriesWithSlice(const fs::path& dir, const fs::path& into, const std::string& name, const std::string& bytes)
+{
+    fs::copy(dir, into, fs::copy_options::recursive);
+    test::writeFileBytes(into / name, bytes);
+    return into;
+}
+
+TEST(DicomSeries, ASliceThatMakesGdcmAbortIsRefusedNamingItAndTheProgramLivesOn)
+{
+    test::TempDir dir;
+    const fs::path shared = SCULPT_TESTS_DIR "/bad-inputs/dicom_gdcm_abort";
+    fs::copy(shared, dir / "abort");
+    const std::string message = messageOf([&] { readScan(dir / "abort"); });
+    EXPECT_NE(message.find("slice_2.dcm: the DICOM reader failed on this file"), std::string::npos) << message;
+
+    // The same class made here: each length in a good slice's meta group made absurd.
+    const SyntheticBall ball;
+    const auto files = writeSeries(dir / "good", ballSlices(ball, ballSample(ball)));
+    const std::string good = test::fileBytes(files[3]);
+    const std::size_t lengthAt = 128 + 4 + 6;  // (0002,0010) UI: tag, VR, then its 2-byte length
+    for (const std::uint16_t length :
+         {std::uint16_t(0xFFFF), std::uint16_t(0x8001), std::uint16_t(3), std::uint16_t(0)}) {
+        std::string bytes = good;
+        std::memcpy(bytes.data() + lengthAt, &length, sizeof length);
+        const fs::path series = seriesWithSlice(dir / "good", dir / ("meta_" + std::to_string(length)),
+                                                files[3].filename().string(), bytes);
+        const std::string refused = messageOf([&] { readScan(series); });
+        EXPECT_NE(refused.find(series.string()), std::string::npos) << refused;
+    }
 }
 
 }  // namespace

@@ -10,6 +10,12 @@
 #include <random>
 #include <vector>
 
+// Clang and GCC mangle this signature differently (the dependent Ptr inside the allocator), so
+// the sanitizer tree (clang) cannot link against the instantiation in Debian's GCC-built
+// libopenvdb; instantiating it here serves both compilers.
+template void openvdb::tools::extractActiveVoxelSegmentMasks<openvdb::BoolTree>(const openvdb::BoolTree&,
+                                                                                std::vector<openvdb::BoolTree::Ptr>&);
+
 namespace sculpt {
 namespace {
 

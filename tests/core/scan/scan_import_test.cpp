@@ -8,6 +8,7 @@
 #include "core/scan/largest_component.h"
 #include "core/scan/scan_readers.h"
 #include "core/scan/scan_to_level_set.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/progress_log.h"
 #include "tests/support/synthetic_scan.h"
@@ -31,7 +32,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <random>
 
 namespace sculpt {
@@ -285,10 +285,7 @@ TEST(ScanImport, TruncatedScansAndMissingDataFilesAreRefused)
     }
     for (const char* name : {"ball.mha", "ball.nrrd", "ball.nii", "ball.nii.gz"}) {
         ASSERT_NO_THROW(readScan(dir / name)) << name;
-        const std::string bytes = [&] {
-            std::ifstream in(dir / name, std::ios::binary);
-            return std::string(std::istreambuf_iterator<char>(in), {});
-        }();
+        const std::string bytes = test::fileBytes(dir / name);
         for (const double share : {0.1, 0.5, 0.9}) {
             const std::string cut = std::string("cut_") + std::to_string(int(share * 100)) + "_" + name;
             std::ofstream(dir / cut, std::ios::binary) << bytes.substr(0, std::size_t(share * double(bytes.size())));

@@ -3,6 +3,7 @@
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_layout.h"
 #include "core/primitives/analytic_shapes.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/mesh_checks.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
@@ -19,21 +20,15 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 
 namespace sculpt {
 namespace {
 
+using test::fileBytes;
 using test::runSculpt;
 using test::TempDir;
 constexpr double kPi = 3.14159265358979323846;
-
-std::string fileBytes(const std::filesystem::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-}
 
 nlohmann::json infoJson(const TempDir& dir, const std::string& file)
 {
@@ -298,7 +293,8 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"ply_trunc_segv.ply", "import FILE --voxel-size 0.1"},
                                            Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"},
                                            Regression{"vdb_8GB_peak.vdb", "offset FILE --distance 1"},
-                                           Regression{"vdb_topology_leak.vdb", "offset FILE --distance 1"}),
+                                           Regression{"vdb_topology_leak.vdb", "offset FILE --distance 1"},
+                                           Regression{"dicom_gdcm_abort", "import FILE --iso 100"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
 
 Imath::V3f exrCameraPosition(const std::filesystem::path& path)
@@ -386,6 +382,21 @@ TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("do not overlap"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
+}
+
+TEST(SculptCli, AScenesVoxelSizeTooFineForItsExtentIsOneLineNamingTheScene)
+{
+    TempDir dir;
+    std::string scene = fileBytes(SCULPT_DATA_DIR "/scenes/snowman.json");
+    const auto at = scene.find("\"voxel_size\": 0.5");
+    ASSERT_NE(at, std::string::npos);
+    scene.replace(at, 18, "\"voxel_size\": 1e-6");
+    test::writeFileBytes(dir / "fine.json", scene);
+    const auto r = test::runSculptBounded("build fine.json -o out.vdb", dir.path(), 30, 4096);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("sculpt: fine.json", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.vdb"));
 }
 
 TEST(SculptCli, BuildBakesScenesAloneAndIntoADocument)

@@ -21,6 +21,7 @@
 #include <tbb/global_control.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <random>
@@ -426,6 +427,21 @@ TEST(StrokeScript, ReplayNamesTheEventThatCannotBeApplied)
                   std::string::npos)
             << e.what();
     }
+}
+
+TEST(StrokeScript, StrokesOfAMillionSamplesOrTooManyStampsAreRefusedBeforeAnyStamp)
+{
+    std::string samples;
+    for (int i = 0; i < 1000000; ++i) samples += (i ? ",[" : "[") + std::to_string(i % 7) + ",0,0]";
+    const auto start = std::chrono::steady_clock::now();
+    const std::string many = parseError(R"([{"tool": "add", "radius": 1, "samples": [)" + samples + "]}]");
+    EXPECT_EQ(many, "s.json: events[0] ('add' stroke): field 'samples' holds 1000000 samples, more than a stroke may "
+                    "(100000): split it into several strokes");
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+    // Two samples 20 apart at a spacing of 0.01 x 0.01 radii: 200,000 stamps.
+    const std::string far =
+        parseError(R"([{"tool": "add", "radius": 0.01, "spacing": 0.01, "samples": [[0, 0, 0], [20, 0, 0]]}])");
+    EXPECT_NE(far.find("the stroke would make 200002 stamps, more than 100000"), std::string::npos) << far;
 }
 
 }  // namespace
