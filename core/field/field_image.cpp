@@ -28,7 +28,7 @@ void requireWithinModelExtent(const openvdb::BBoxd& world, double voxelSize, con
         throw InputError(what + " reaches " + formatNumber(reach) + " voxels from the origin at voxel size " +
                              formatNumber(voxelSize) + ", beyond the largest model (" +
                              formatNumber(kMaxIndexCoordinate) +
-                             "): choose a coarser voxel size, or move it nearer the origin",
+                             "): move it nearer the origin, or choose a coarser voxel size",
                          Remedy::CoarserVoxelSize);
     }
 }

@@ -140,6 +140,7 @@ private:
             (mCoding.compression & io::COMPRESS_ACTIVE_MASK) && metadata != io::NO_MASK_AND_ALL_VALS;
         const std::size_t count = activeOnly ? valueMask.countOn() : valueMask.entries();
         const std::size_t bytes = count * (mCoding.halfFloat ? 2 : sizeof(float));
+        if (mCoding.halfFloat && count == 0) return;  // OpenVDB's half writer stores no chunk at all
         if (mCoding.compression & (io::COMPRESS_BLOSC | io::COMPRESS_ZIP)) {
             chunk(bytes, what);
         } else {
@@ -195,6 +196,7 @@ private:
 
 void checkVdbFloatTree(BoundedReader& in, const VdbValueCoding& coding, bool throughBuffers)
 {
+    openvdb::initialize();  // the map registry names the transform types
     TreeWalk walk(in, coding);
     walk.transform();
     walk.topology();

@@ -195,7 +195,10 @@ void SculptApp::answerUnsaved(bool save, bool discard)
     else if (*then == Command::New) mDialogs.prompt = Dialogs::Prompt::New;
     else if (*then == Command::Open)
         mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
-    if (discard) mAutosave.discard(mDocument->path());
+    if (discard) {
+        mAutosave.discard(mDocument->path());
+        mUnsavedDiscarded = *then == Command::Quit;
+    }
 }
 
 void SculptApp::saveTo(const fs::path& path)
@@ -304,7 +307,7 @@ void SculptApp::startFilter(const ModelFilter& filter)
 void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 {
     if (busy()) return;
-    autosaveBeforeReading();
+    autosaveNow();
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string label = "morph to " + target.filename().string();
     startJob<MorphRun>(
@@ -323,7 +326,7 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
 void SculptApp::startOpen(const fs::path& path, const std::string& grid)
 {
     if (busy()) return;
-    autosaveBeforeReading();
+    autosaveNow();
     if (grid.empty()) {
         // A file of several level sets and none to take by default: ask which (a damaged
         // file is left for the job to report).
@@ -370,7 +373,7 @@ void SculptApp::startExport(const fs::path& path)
 void SculptApp::startLoadTarget(const fs::path& path)
 {
     if (busy()) return;
-    autosaveBeforeReading();
+    autosaveNow();
     auto warnings = std::make_shared<std::vector<std::string>>();
     startJob<FieldImage>(
         "load target " + path.filename().string(),
@@ -388,7 +391,7 @@ void SculptApp::startLoadTarget(const fs::path& path)
 void SculptApp::startImportRead(const fs::path& path)
 {
     if (busy()) return;
-    autosaveBeforeReading();
+    autosaveNow();
     startJob<ImportDraft>(
         "read " + path.filename().string(),
         [path](const Progress&) {
@@ -428,7 +431,7 @@ void SculptApp::applyImport()
     ImportDraft& draft = *mImport;
     const bool replaces = draft.result == ImportDraft::Result::NewDocument;
     if (replaces && !guardUnsaved(Command::ApplyImport)) return;
-    autosaveBeforeReading();
+    autosaveNow();
     ImportOptions options = draft.options;
     if (!replaces) options.voxelSize = mDocument->session().field().voxelSize();  // the document's lattice
     const fs::path path = draft.file().path();

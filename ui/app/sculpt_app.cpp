@@ -309,7 +309,7 @@ void SculptApp::autosave()
     if (!error.empty()) mDialogs.notice = error;
 }
 
-void SculptApp::autosaveBeforeReading()
+void SculptApp::autosaveNow()
 {
     std::string error;
     if (mAutosave.save(*mDocument, error))
@@ -354,7 +354,9 @@ int SculptApp::run()
         if (replaying || !idle()) frame();
     }
     if (!mOptions.record.empty()) writeInputEvents(mRecording, mOptions.record.string());
-    mAutosave.discard(mDocument->path());  // a clean quit: nothing to recover
+    // A clean quit leaves nothing to recover; unsaved work nobody discarded (a replay's end) stays.
+    if (mDocument->modified() && !mUnsavedDiscarded) autosaveNow();
+    else mAutosave.discard(mDocument->path());
     return mExitStatus;
 }
 

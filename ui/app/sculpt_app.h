@@ -154,8 +154,9 @@ private:
     void frame();
     bool idle() const;
     void autosave();
-    /// Before a file is read: a reader that takes the process down must not take unsaved work.
-    void autosaveBeforeReading();
+    /// Writes the recovery copy now: before a file is read (a reader that takes the process down
+    /// must not take unsaved work) and on a quit that leaves unsaved work.
+    void autosaveNow();
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
@@ -261,6 +262,7 @@ private:
 
     // Frame bookkeeping.
     bool mQuit = false;
+    bool mUnsavedDiscarded = false;  // the user quit dropping the unsaved changes
     int mExitStatus = 0;
     double mLastFrame = 0.0, mPlayStart = -1.0, mLastInput = 0.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;

@@ -114,8 +114,9 @@ TEST_P(SculptCliBadInput, ExitsTwoWithOneLineAndWritesNothing)
     std::ofstream(dir / "s_field.json") << R"({"events": [{"tool": "add", "radius": 1}]})";
     std::ofstream(dir / "s_inf.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, -1e400]]}]})";
     std::ofstream(dir / "s_radius.json") << R"({"events": [{"tool": "carve", "radius": 0, "samples": [[5, 0, 0]]}]})";
-    // A sample at 10^6 (a million stamps on the way) and a spacing that piles stamps up.
-    std::ofstream(dir / "s_far.json")
+    // A sample at 10^6, a path of a million stamps, and a spacing that piles stamps up.
+    std::ofstream(dir / "s_far.json") << R"({"events": [{"tool": "add", "radius": 1, "samples": [[1e6, 0, 0]]}]})";
+    std::ofstream(dir / "s_long.json")
         << R"({"events": [{"tool": "add", "radius": 1, "samples": [[5, 0, 0], [1e6, 0, 0]]}]})";
     std::ofstream(dir / "s_spacing.json")
         << R"({"events": [{"tool": "add", "radius": 1, "spacing": 0.0001, "samples": [[5, 0, 0]]}]})";
@@ -188,11 +189,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"offset good.vdb --distance -100 -o out.vdb", "good.vdb: offset -100 leaves nothing of the model"},
         BadCall{"smooth good.vdb --iterations 2000 -o out.vdb", "good.vdb: smooth 2000 leaves nothing of the model"},
         BadCall{"build eat_all.json --into good.vdb -o out.vdb", "combining the scene into good.vdb leaves nothing"},
-        BadCall{"build huge_blob.json -o out.vdb", "primitive 0: its influence reaches 3.4641e+30 voxels"},
+        BadCall{"build huge_blob.json -o out.vdb", "primitive 0's influence reaches 2e+30 voxels from the origin"},
         BadCall{"build far_blob.json -o out.vdb", "beyond the largest model"},
         BadCall{"build huge_blob.json --voxel-size 0 -o out.vdb", "--voxel-size: must be a positive number (got 0)"},
         // Work without bound from absurd numbers: refused with the limit.
-        BadCall{"apply good.vdb s_far.json -o out.vdb", "field 'samples[1].position' lies 999992 from the model"},
+        BadCall{"apply good.vdb s_far.json -o out.vdb", "field 'samples[0].position' lies 999992 from the model"},
+        BadCall{"apply good.vdb s_long.json -o out.vdb", "the stroke would make 3.99998e+06 stamps, more than 100000"},
         BadCall{"apply good.vdb s_spacing.json -o out.vdb", "field 'spacing' must be in [0.01, 4] radii"},
         BadCall{"smooth good.vdb --iterations 2000000000 -o out.vdb", "smoothing takes 1 to 10000 iterations"},
         BadCall{"offset good.vdb --distance 1e9 -o out.vdb", "an offset of 1e+09 is larger than the model"},
