@@ -669,13 +669,12 @@ TEST(SculptUi, ImportingASliceThatMakesGdcmAbortShowsAnErrorAndTheSessionAndDocu
     EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);
     EXPECT_TRUE(reports[1]["modified"].get<bool>());
     EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);
-    // The work was autosaved before the file was read; the state is the user's alone.
+    // The work was autosaved before the file was read (the clean quit then removed the copy;
+    // its mode is ui_unit_tests' Autosave case); the state is the user's alone.
+    EXPECT_NE(run.out.find("sculpt-ui: autosaved to " + (dir / "state" / "recovery").string()), std::string::npos)
+        << run.out;
     EXPECT_EQ(modeOf(dir / "state"), 0700u);
     EXPECT_EQ(modeOf(dir / "state" / "recovery"), 0700u);
-    std::vector<fs::path> copies;
-    for (const auto& entry : fs::directory_iterator(dir / "state" / "recovery")) copies.push_back(entry.path());
-    ASSERT_EQ(copies.size(), 1u);
-    EXPECT_EQ(modeOf(copies[0]), 0600u) << copies[0];
 }
 
 TEST(SculptUi, BadInputIsOneLineAndExitTwo)

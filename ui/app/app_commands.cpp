@@ -195,10 +195,7 @@ void SculptApp::answerUnsaved(bool save, bool discard)
     else if (*then == Command::New) mDialogs.prompt = Dialogs::Prompt::New;
     else if (*then == Command::Open)
         mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
-    if (discard) {
-        mAutosave.discard(mDocument->path());
-        mUnsavedDiscarded = *then == Command::Quit;
-    }
+    if (discard) mAutosave.discard(mDocument->path());
 }
 
 void SculptApp::saveTo(const fs::path& path)

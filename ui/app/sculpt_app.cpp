@@ -354,9 +354,7 @@ int SculptApp::run()
         if (replaying || !idle()) frame();
     }
     if (!mOptions.record.empty()) writeInputEvents(mRecording, mOptions.record.string());
-    // A clean quit leaves nothing to recover; unsaved work nobody discarded (a replay's end) stays.
-    if (mDocument->modified() && !mUnsavedDiscarded) autosaveNow();
-    else mAutosave.discard(mDocument->path());
+    mAutosave.discard(mDocument->path());  // a clean quit: nothing to recover
     return mExitStatus;
 }
 

@@ -154,8 +154,8 @@ private:
     void frame();
     bool idle() const;
     void autosave();
-    /// Writes the recovery copy now: before a file is read (a reader that takes the process down
-    /// must not take unsaved work) and on a quit that leaves unsaved work.
+    /// Writes the recovery copy now, before a file is read: a reader that takes the process down
+    /// must not take unsaved work.
     void autosaveNow();
     void drawPanels();
     void routeMouse(const InputEvent& event);
@@ -262,7 +262,6 @@ private:
 
     // Frame bookkeeping.
     bool mQuit = false;
-    bool mUnsavedDiscarded = false;  // the user quit dropping the unsaved changes
     int mExitStatus = 0;
     double mLastFrame = 0.0, mPlayStart = -1.0, mLastInput = 0.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
