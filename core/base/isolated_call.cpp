@@ -67,6 +67,8 @@ void sendPart(int fd, const void* data, std::uint64_t bytes)
     writeAll(fd, data, bytes);
 }
 
+ChildReply textReply(std::string text) { return ChildReply{std::move(text), nullptr, 0, nullptr}; }
+
 void send(int fd, char kind, const ChildReply& reply)
 {
     writeAll(fd, &kind, 1);
@@ -86,13 +88,13 @@ void send(int fd, char kind, const ChildReply& reply)
     try {
         send(fd, kReplied, work());
     } catch (const InputError& e) {
-        send(fd, kRefused, {e.what()});
+        send(fd, kRefused, textReply(e.what()));
     } catch (const std::bad_alloc&) {
-        send(fd, kOutOfMemory, {});
+        send(fd, kOutOfMemory, textReply({}));
     } catch (const std::exception& e) {
-        send(fd, kFailed, {e.what()});
+        send(fd, kFailed, textReply(e.what()));
     } catch (...) {
-        send(fd, kFailed, {"an unknown exception"});
+        send(fd, kFailed, textReply("an unknown exception"));
     }
     _exit(0);
 }

@@ -2,6 +2,7 @@
 
 #include <openvdb/io/Compression.h>
 #include <openvdb/math/Maps.h>
+#include <openvdb/openvdb.h>
 
 #include <bitset>
 #include <cstring>
