@@ -26,8 +26,9 @@ declare -A uiAllowed=(
   [document]=""
   [jobs]=""
   [sculpting]="view document input"
-  [panels]="app"
-  [app]="app document input jobs panels sculpting view window"
+  [panels]="app document modes"
+  [modes]="app document jobs panels sculpting view"
+  [app]="app document input jobs modes panels sculpting view window"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }

@@ -67,7 +67,9 @@ void sendPart(int fd, const void* data, std::uint64_t bytes)
     writeAll(fd, data, bytes);
 }
 
-ChildReply textReply(std::string text) { return ChildReply{std::move(text), nullptr, 0, nullptr}; }
+/// The wall clock a child may take: twice its processor time and half a minute more, since on
+/// a loaded machine a busy child gets less than a core.
+int wallSeconds(const IsolationLimits& limits) { return 2 * limits.cpuSeconds + 30; }
 
 void send(int fd, char kind, const ChildReply& reply)
 {
@@ -88,13 +90,13 @@ void send(int fd, char kind, const ChildReply& reply)
     try {
         send(fd, kReplied, work());
     } catch (const InputError& e) {
-        send(fd, kRefused, textReply(e.what()));
+        send(fd, kRefused, {e.what()});
     } catch (const std::bad_alloc&) {
-        send(fd, kOutOfMemory, textReply({}));
+        send(fd, kOutOfMemory, {});
     } catch (const std::exception& e) {
-        send(fd, kFailed, textReply(e.what()));
+        send(fd, kFailed, {e.what()});
     } catch (...) {
-        send(fd, kFailed, textReply("an unknown exception"));
+        send(fd, kFailed, {"an unknown exception"});
     }
     _exit(0);
 }
@@ -154,7 +156,7 @@ private:
 /// Why the child ended without a whole reply, in the user's words.
 std::string deathOf(int status, bool timedOut, const IsolationLimits& limits)
 {
-    if (timedOut) return "took longer than " + std::to_string(2 * limits.cpuSeconds) + " s";
+    if (timedOut) return "took longer than " + std::to_string(wallSeconds(limits)) + " s";
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
         return "took more than " + std::to_string(limits.cpuSeconds) + " s of processor time";
     if (WIFSIGNALED(status)) return std::string("crashed: ") + strsignal(WTERMSIG(status));
@@ -205,7 +207,7 @@ IsolatedBytes runIsolated(const IsolationLimits& limits, const std::function<Chi
         runChild(fds[1], limits, work);
     }
     close(fds[1]);
-    ReplyReader reader(fds[0], std::chrono::steady_clock::now() + std::chrono::seconds(2 * limits.cpuSeconds));
+    ReplyReader reader(fds[0], std::chrono::steady_clock::now() + std::chrono::seconds(wallSeconds(limits)));
     IsolatedBytes reply;
     char kind = 0;
     const bool whole = reader.readKind(kind) && reader.readPart(kHeaderLimit, reply.header) &&

@@ -26,7 +26,7 @@ struct IsolationLimits {
     std::string subject;            ///< the file or directory read, for messages
     std::string reader;             ///< "the DICOM reader", for messages
     std::uint64_t memoryBytes = 0;  ///< address space the child may add to what it inherits
-    int cpuSeconds = 300;           ///< processor time; the wall clock allows twice that
+    int cpuSeconds = 300;           ///< processor time; the wall clock allows twice that and 30 s
 };
 
 /// What the child hands back: a short header and a body of any size. The body is malloc'ed,
@@ -42,7 +42,7 @@ struct ChildReply {
     std::string header;
     const void* body = nullptr;
     std::size_t bodyBytes = 0;
-    std::shared_ptr<const void> owner;  ///< keeps the body alive until it is sent
+    std::shared_ptr<const void> owner = nullptr;  ///< keeps the body alive until it is sent
 };
 
 /// Runs `work` in a child process and returns its reply. An InputError the child throws is

@@ -127,7 +127,9 @@ double ambientOcclusion(Tracer& tracer, const Scene& scene, const Vec3d& point, 
     int blocked = 0;
     for (int i = 0; i < scene.occlusionRaysPerHit; ++i) {
         const double u1 = random.next(), u2 = random.next();
-        const Ray ray(point + n * scene.escapeWorld, cosineDirection(n, u1, u2), 0.0, scene.occlusionReachWorld);
+        // OpenVDB's rays start past t = 0 (Ray asserts t0 > 0): the smallest time it allows.
+        const Ray ray(point + n * scene.escapeWorld, cosineDirection(n, u1, u2), openvdb::math::Delta<double>::value(),
+                      scene.occlusionReachWorld);
         if (tracer.intersector.intersectsWS(ray)) ++blocked;
     }
     return 1.0 - double(blocked) / scene.occlusionRaysPerHit;

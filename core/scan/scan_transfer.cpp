@@ -75,9 +75,7 @@ ChildReply packScan(const ScanVolume& scan)
     header.put(scan.source());
     header.put(std::uint64_t(scan.warnings().size()));
     for (const std::string& warning : scan.warnings()) header.put(warning);
-    ChildReply reply{header.take(), image->GetScalarPointer(), scan.denseBytes()};
-    reply.owner = scan.mImpl;
-    return reply;
+    return ChildReply{header.take(), image->GetScalarPointer(), scan.denseBytes(), scan.mImpl};
 }
 
 ScanVolume unpackScan(IsolatedBytes bytes)

@@ -14,7 +14,10 @@ using test::TempDir;
 
 std::uint64_t checksumOf(const Document& document) { return gridChecksum(document.session().field().grid()); }
 
-FieldImage ballOfRadius(double radius) { return Document::create(NewShape{0, radius, 0.5}).session().field().deepCopy(); }
+FieldImage ballOfRadius(double radius)
+{
+    return Document::create(NewShape{0, radius, 0.5}).session().field().deepCopy();
+}
 
 TEST(Document, UndoAndRedoRestoreTheGridAndTheModifiedMarkFollowsTheSavedState)
 {

@@ -77,10 +77,10 @@ void SculptApp::pressButton(const InputEvent& event)
         mDrag = Drag::None;  // a click keeps the new size
         return;
     }
-    if (event.button == kLeftButton && !(event.mods & kAlt) && mPrimitives) {
-        if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // place the selected primitive
-            mPrimitives->moveSelectedTo({hit->position.x, hit->position.y, hit->position.z});
-            mDrag = Drag::Primitive;
+    if (event.button == kLeftButton && !(event.mods & kAlt) && mMode) {
+        const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+        if (hit && mMode->press(*hit)) {  // a primitive placed, say
+            mDrag = Drag::Mode;
             return;
         }
     }
@@ -124,9 +124,8 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
 {
     switch (mDrag) {
     case Drag::Stroke: extendStroke(event); break;
-    case Drag::Primitive:
-        if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y))
-            mPrimitives->moveSelectedTo({hit->position.x, hit->position.y, hit->position.z});
+    case Drag::Mode:
+        if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;
     case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = arrival(event); break;
     case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = arrival(event); break;
@@ -175,12 +174,6 @@ void SculptApp::routeKey(const InputEvent& event)
         mDrag = Drag::None;
         return;
     }
-    if (mJob && event.key == GLFW_KEY_ESCAPE) return cancelJob();
-    if (mMorph && event.key == GLFW_KEY_ESCAPE) return closeMorph();
-    if (mImport && event.key == GLFW_KEY_ESCAPE) return closeImport();
-    if (mPrimitives && event.key == GLFW_KEY_ESCAPE) return closePrimitives();
-    if (mPrimitives && (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER)) return bakePrimitives();
-    if (mImport && (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER)) return applyImport();
     Command command;
     if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
 }

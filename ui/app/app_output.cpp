@@ -93,33 +93,16 @@ void SculptApp::writeReport(const fs::path& path)
     r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
     r["prompt"] = promptName(mDialogs.prompt);
     r["error"] = mDialogs.error;
-    r["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
+    const BackgroundJob* job = mJobs.job();
+    r["job"] = job ? nlohmann::json{{"label", job->label()}, {"progress", job->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
     r["target"] = mBrush.target.path.string();
     r["xray"] = mLook.xray();
-    if (mPrimitives) {
-        r["primitives"] = {{"count", mPrimitives->primitives.size()},
-                           {"selected", mPrimitives->selected},
-                           {"problem", mPrimitives->problem()},
-                           {"preview_triangles", mPrimitivePreview.triangleCount()}};
-    }
-    if (mImport) {
-        r["import"] = {{"file", mImport->file().path().string()},
-                       {"iso", mImport->file().isScan() ? mImport->iso() : 0.0},
-                       {"otsu", mImport->file().isScan() ? mImport->file().otsuThreshold(mImport->options) : 0.0},
-                       {"result", importResultName(mImport->result)},
-                       {"preview_voxel_size", mImport->file().previewVoxelSize()},
-                       {"preview_ms", mImport->previewMs()},
-                       {"problem", mImport->problem()},
-                       {"preview_triangles", mPreview.triangleCount()}};
-    }
-    r["morph"] = mMorph ? nlohmann::json{{"frames", mMorph->count()},
-                                         {"shown", mMorph->shown()},
-                                         {"checksum", formatChecksum(gridChecksum(mMorph->shownField().grid()))},
-                                         {"converged", mMorph->run().summary.converged}}
-                        : nlohmann::json();
+    r["morph"] = nullptr;  // read by replays whether or not frames are on show
+    if (mMode) r[mMode->name()] = mMode->report();
+    r["notice"] = mDialogs.notice;
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
     r["frame_ms"] = mStatus.frameMs;

@@ -4,11 +4,28 @@
 
 #include <GLFW/glfw3.h>
 
+#include <utility>
+
 namespace sculpt::ui {
 
 namespace {
 
 constexpr int kCtrlShift = kControl | kShift;
+
+/// A key as menus and Help show it: "[" rather than the recordings' "LeftBracket".
+std::string shownKeyName(int key)
+{
+    static const std::vector<std::pair<std::string, std::string>> shown = {{"LeftBracket", "["},
+                                                                           {"RightBracket", "]"},
+                                                                           {"KPDecimal", "Numpad ."},
+                                                                           {"KPEnter", "Numpad Enter"},
+                                                                           {"Escape", "Esc"}};
+    const std::string name = keyName(key);
+    for (const auto& [recorded, display] : shown) {
+        if (name == recorded) return display;
+    }
+    return name;
+}
 
 }  // namespace
 
@@ -90,6 +107,9 @@ const std::vector<KeyBinding>& keyBindings()
         {GLFW_KEY_Z, kAlt, Command::ToggleXRay},
         {GLFW_KEY_R, kShift, Command::ToggleTrackball},
         {GLFW_KEY_F1, 0, Command::ToggleHelp},
+        {GLFW_KEY_ENTER, 0, Command::Confirm},
+        {GLFW_KEY_KP_ENTER, 0, Command::Confirm},
+        {GLFW_KEY_ESCAPE, 0, Command::Cancel},
     };
     return bindings;
 }
@@ -169,6 +189,9 @@ const std::vector<CommandInfo>& allCommands()
         {Command::ToggleGhost, "Target Ghost", "Show or hide the target shape, drawn translucent"},
         {Command::ToggleTrackball, "Trackball Orbit", "Free rotation instead of turntable"},
         {Command::ToggleHelp, "Help", "Keys and mouse"},
+        {Command::Confirm, "Apply", "Applies the open panel: the import, the primitives' bake, the morph frame shown"},
+        {Command::Cancel, "Cancel",
+         "Cancels the running job, else closes the open panel (the document stays as it was)"},
     };
     return commands;
 }
@@ -190,8 +213,7 @@ std::string shortcutText(Command command)
         if (b.mods & kControl) text += "Ctrl+";
         if (b.mods & kShift) text += "Shift+";
         if (b.mods & kAlt) text += "Alt+";
-        const std::string name = keyName(b.key);
-        text += name == "LeftBracket" ? "[" : name == "RightBracket" ? "]" : name == "KPDecimal" ? "Numpad ." : name;
+        text += shownKeyName(b.key);
     }
     return text;
 }

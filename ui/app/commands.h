@@ -72,6 +72,8 @@ enum class Command {
     ToggleXRay,
     ToggleTrackball,
     ToggleHelp,
+    Confirm,
+    Cancel,
 };
 
 struct KeyBinding {

@@ -47,10 +47,8 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
       mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()),
-      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPreview(mViewport.renderer(), ShapeStyle::preview()),
-      mPrimitivePreview(mViewport.renderer(), ShapeStyle::primitives()), mSkeletons(mViewport.overlay()),
-      mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport),
-      mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
+      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
+      mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     setDocument(openOrCreate(mOptions.document, mOptions.grid), true);
@@ -132,7 +130,7 @@ void SculptApp::updateCursor()
         mHover = mDrag == Drag::None || mDrag == Drag::Stroke ? pickAt(mMouseX, mMouseY) : std::nullopt;
         mHoverValid = true;
     }
-    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse && !mMorph;  // no brush on a frame
+    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift).
     const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
@@ -181,12 +179,12 @@ void SculptApp::frame()
     const std::size_t remeshed = session.remeshedBlocks();
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
-    if (mMorph) mMorph->tick(now);
-    const IncrementalMesher& shown = mMorph ? mMorph->mesher() : *session.mesher();
+    if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
+    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
+    const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
     mDisplay.sync(shown, session.field().voxelSize());
     mScales.sync(shown, session.field().voxelSize());
-    syncImportPreview();
-    syncPrimitives();
+    mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
@@ -236,9 +234,7 @@ void SculptApp::drawPanels()
     drawStatusBar(*this);
     drawDialogs(*this);
     drawJobPanel(*this);
-    drawMorphPanel(*this);
-    drawImportPanel(*this);
-    drawPrimitivesPanel(*this);
+    drawModePanel();
     if (mDialogs.help) drawHelpPanel(*this);
     if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
@@ -293,8 +289,7 @@ void SculptApp::finishReplay()
 bool SculptApp::idle() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
-    const bool playing = mMorph && mMorph->playing();
-    return mDrag == Drag::None && !mJob && !playing && mWindow.time() - mLastInput > kSettleSeconds &&
+    return mDrag == Drag::None && !holdsReplay() && mWindow.time() - mLastInput > kSettleSeconds &&
            mPendingScreenshots.empty() && mPendingReports.empty();
 }
 

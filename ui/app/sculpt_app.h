@@ -4,23 +4,23 @@
 ///        panels; every input, live or replayed, enters through handle().
 
 #include "core/mesh/surface_statistics.h"
+#include "core/motion/morph.h"
+#include "core/primitives/skeleton.h"
 #include "sculpt/session/model_filter.h"
 #include "ui/app/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
-#include "ui/document/import_draft.h"
-#include "ui/document/morph_frames.h"
-#include "ui/document/primitive_draft.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
-#include "ui/jobs/background_job.h"
+#include "ui/jobs/job_runner.h"
+#include "ui/modes/mode.h"
+#include "ui/modes/mode_host.h"
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
 #include "ui/view/model_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/shape_display.h"
-#include "ui/view/skeleton_display.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/symmetry_planes.h"
 #include "ui/view/viewport.h"
@@ -34,6 +34,7 @@
 namespace sculpt::ui {
 
 class AppWindow;
+class PrimitivesMode;
 
 struct AppOptions {
     std::filesystem::path document;                       ///< empty: the default clay ball
@@ -96,7 +97,7 @@ struct Dialogs {
     bool focusField = false;
 };
 
-class SculptApp {
+class SculptApp : private ModeHost {
 public:
     SculptApp(AppWindow& window, AppOptions options);
     ~SculptApp();
@@ -108,7 +109,7 @@ public:
     /// A command from a key, a menu or a button.
     void execute(Command command);
 
-    Document& document() { return *mDocument; }
+    Document& document() override { return *mDocument; }
     BrushOptions& brush() { return mBrush; }
     SurfaceLook& look() { return mLook; }
     CameraControl& camera() { return mCamera; }
@@ -119,28 +120,18 @@ public:
     bool scalesShown() const { return mScales.shown(); }
     bool ghostShown() const { return mGhost.shown(); }
     /// The whole-model job running, or nullptr.
-    const BackgroundJob* job() const { return mJob.get(); }
-    /// Asks the running job to stop; the document stays as it was.
-    void cancelJob();
-    /// A finished morph's frames on show (Morph panel), or nullptr.
-    MorphFrames* morphFrames() { return mMorph ? &*mMorph : nullptr; }
-    /// Back to the document from the morph's frames.
-    void closeMorph();
-    /// The scan or mesh on the Import panel, or nullptr.
-    ImportDraft* importDraft() { return mImport ? &*mImport : nullptr; }
-    /// Imports with the panel's settings as a job; the result becomes the document or joins it.
-    void applyImport();
-    /// Closes the Import panel; the document stays as it was.
-    void closeImport();
-    /// The primitives being placed (Primitives panel), or nullptr.
-    PrimitiveDraft* primitiveDraft() { return mPrimitives ? &*mPrimitives : nullptr; }
+    const BackgroundJob* job() const { return mJobs.job(); }
+    /// The open mode if it is an M (a MorphMode, an ImportMode...), else nullptr.
+    template <typename M>
+    M* mode()
+    {
+        return dynamic_cast<M*>(mMode.get());
+    }
+    /// The open mode's panel, if one is open.
+    void drawModePanel();
     /// Adds a primitive of `type` where the pointer is on the surface (else at the view's centre),
     /// opening the Primitives panel.
     void addPrimitive(SkeletonType type);
-    /// Bakes the panel's primitives into the model as a job (one undo step), closing the panel.
-    void bakePrimitives();
-    /// Closes the Primitives panel, its primitives discarded.
-    void closePrimitives();
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -156,7 +147,22 @@ private:
     void autosave();
     /// Writes the recovery copy now, before a file is read: a reader that takes the process down
     /// must not take unsaved work.
-    void autosaveNow();
+    void autosaveNow() override;
+    void notify(std::string notice) override { mDialogs.notice = std::move(notice); }
+    void startEdit(ModelEdit edit) override;
+    void startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed) override;
+    /// Opens `mode` in place of the one open; the status bar shows its hint.
+    void openMode(std::unique_ptr<Mode> mode);
+    /// Drops the open mode and what it shows; the document stays as it was.
+    void closeMode();
+    /// Enter: the open mode hands its result over and closes (an error keeps it open).
+    void acceptMode();
+    /// Accepts the open mode if it is an M (the menus' Apply Import, Bake Primitives, Keep Frame).
+    template <typename M>
+    void acceptModeOf()
+    {
+        if (mode<M>()) acceptMode();
+    }
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
@@ -171,7 +177,7 @@ private:
     void updateTitle();
     void refreshStatus(bool topology);
     void setDocument(std::unique_ptr<Document> document, bool frameIt);
-    bool guardUnsaved(Command command);
+    bool guardUnsaved(Command again) override;
     void saveTo(const std::filesystem::path& path);
     void showError(const std::string& message);
     bool modalOpen() const;
@@ -186,7 +192,11 @@ private:
     /// Runs `work` (Progress -> Result) as the background job; once it succeeded, `land`
     /// (Result) takes its result on the UI thread: the document's new field, frames, a target.
     template <typename Result, typename WorkFn, typename LandFn>
-    void startJob(std::string label, WorkFn work, LandFn land);
+    void startJob(std::string label, WorkFn work, LandFn land)
+    {
+        mDialogs.notice = label + "...";
+        mJobs.start<Result>(std::move(label), std::move(work), std::move(land));
+    }
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
     /// Opens the document at `path` as a job; the old one stays if it fails.
@@ -197,18 +207,17 @@ private:
     void startLoadTarget(const std::filesystem::path& path);
     /// Reads the scan or mesh at `path` for the Import panel, as a job.
     void startImportRead(const std::filesystem::path& path);
-    /// The import's preview on screen, the document hidden when the import would replace it.
-    void syncImportPreview();
-    /// The primitives' skeletons and blended surface on screen, the clay see-through.
-    void syncPrimitives();
+    /// The Primitives panel, opened if it is not.
+    PrimitivesMode& primitivesMode();
+    /// Opens the primitives in the scene file at `path` in the Primitives panel.
+    void loadScene(const std::filesystem::path& path);
     /// Starts a morph of a copy of the model into the file at `target` as a background job.
     void startMorph(const std::filesystem::path& target, const MorphOptions& options);
-    void keepMorphFrame();
-    /// Lands a finished job's result as one undo step (or reports why there is none).
+    /// Lands a finished job's result (or reports why there is none).
     void pollJob();
-    /// True (with a notice) if a job runs or a morph's frames are on show, so an edit must wait.
+    /// True (with a notice) if a job runs or a mode is open, so an edit of the document must wait.
     bool busy();
-    /// What a replay's wait event waits for: a job, or a morph playing.
+    /// What a replay's wait event waits for: a job, or a mode (a morph playing).
     bool holdsReplay() const;
 
     AppWindow& mWindow;
@@ -217,10 +226,7 @@ private:
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
-    ShapeDisplay mGhost;    // the follow target
-    ShapeDisplay mPreview;  // an import's
-    ShapeDisplay mPrimitivePreview;
-    SkeletonDisplay mSkeletons;
+    ShapeDisplay mGhost;  // the follow target
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;
@@ -234,14 +240,11 @@ private:
     Dialogs mDialogs;
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
-    std::unique_ptr<BackgroundJob> mJob;
-    std::function<void()> mLandJob;  // hands the finished job's result to its landing
-    std::optional<MorphFrames> mMorph;
-    std::optional<ImportDraft> mImport;
-    std::optional<PrimitiveDraft> mPrimitives;
-    int mSkeletonsSelected = -1;         // the selection the skeletons were last drawn with
+    JobRunner mJobs;
+    std::unique_ptr<Mode> mMode;         // after the viewport and the look: it draws into them
+    bool mUnsavedAnswered = false;       // "save changes?" was answered: the command it held runs
     double mLastEventArrival = 0.0;      // when the latest input was due (its replay time, if replayed)
-    double mPreviewPendingSince = -1.0;  // the import's options changed then, the preview not yet on screen
+    double mPreviewPendingSince = -1.0;  // a mode's settings changed then, its preview not yet on screen
     std::string mLastJob;                // how the last job ended: "finished", "cancelled", "failed"
     double mWaitingSince = -1.0;         // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
@@ -252,7 +255,7 @@ private:
     int mHeldMods = 0;    // modifier keys held down
     int mStrokeMods = 0;  // the modifiers the current stroke began with
     std::string mTitle;
-    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Primitive };
+    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     std::optional<SurfaceHit> mHover;
@@ -280,16 +283,5 @@ private:
     SurfaceStatistics::Topology mTopology;
     std::uint64_t mFramesDrawn = 0;
 };
-
-template <typename Result, typename WorkFn, typename LandFn>
-void SculptApp::startJob(std::string label, WorkFn work, LandFn land)
-{
-    // Written by the job's thread before it reports finished, read after: no lock needed.
-    auto result = std::make_shared<std::optional<Result>>();
-    mJob = std::make_unique<BackgroundJob>(
-        std::move(label), [result, work = std::move(work)](const Progress& p) { result->emplace(work(p)); });
-    mLandJob = [result, land = std::move(land)] { land(std::move(**result)); };
-    mDialogs.notice = mJob->label() + "...";
-}
 
 }  // namespace sculpt::ui

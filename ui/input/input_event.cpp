@@ -27,6 +27,7 @@ const std::vector<std::pair<int, const char*>>& namedKeys()
             {GLFW_KEY_SPACE, "Space"},
             {GLFW_KEY_ESCAPE, "Escape"},
             {GLFW_KEY_ENTER, "Enter"},
+            {GLFW_KEY_KP_ENTER, "KPEnter"},
             {GLFW_KEY_TAB, "Tab"},
             {GLFW_KEY_BACKSPACE, "Backspace"},
             {GLFW_KEY_DELETE, "Delete"},

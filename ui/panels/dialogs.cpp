@@ -1,4 +1,5 @@
 #include "ui/app/sculpt_app.h"
+#include "ui/document/morph_frames.h"
 #include "ui/panels/panels.h"
 
 #include <GLFW/glfw3.h>
@@ -168,28 +169,26 @@ void morphDialog(SculptApp& app)
 
 }  // namespace
 
-void drawMorphPanel(SculptApp& app)
+void drawMorphPanel(SculptApp& app, MorphFrames& frames)
 {
-    MorphFrames* frames = app.morphFrames();
-    if (!frames) return;
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::Begin("Morph", nullptr, kDialogFlags);
-    int shown = frames->shown();
+    int shown = frames.shown();
     ImGui::SetNextItemWidth(360.f);
-    if (ImGui::SliderInt("frame", &shown, 0, frames->count() - 1)) frames->show(shown);
+    if (ImGui::SliderInt("frame", &shown, 0, frames.count() - 1)) frames.show(shown);
     const auto button = [&app](const char* label, Command command) {
         if (ImGui::Button(label)) app.execute(command);
         commandTooltip(int(command));
         ImGui::SameLine();
     };
     button("<", Command::StepUp);
-    button(frames->playing() ? "Pause" : "Play", Command::MorphPlay);
+    button(frames.playing() ? "Pause" : "Play", Command::MorphPlay);
     button(">", Command::StepDown);
     button("Keep frame", Command::MorphKeep);
     button("Export frames...", Command::MorphExport);
-    if (ImGui::Button("Close (Esc)")) app.closeMorph();
-    const MorphSummary& s = frames->run().summary;
+    if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
+    const MorphSummary& s = frames.run().summary;
     ImGui::TextDisabled("%d steps, final distance %.3g%s", s.steps, s.finalDistanceWorld,
                         s.converged ? " (converged)" : " (NOT converged)");
     ImGui::End();
@@ -205,7 +204,7 @@ void drawJobPanel(SculptApp& app)
     ImGui::Text("%s%s", job->label().c_str(), job->cancelRequested() ? ": cancelling..." : "");
     ImGui::ProgressBar(float(job->progress()), ImVec2(320.f, 0.f));
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.cancelJob();
+    if (ImGui::Button("Cancel (Esc)")) app.execute(Command::Cancel);
     ImGui::End();
 }
 

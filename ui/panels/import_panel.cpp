@@ -1,4 +1,5 @@
 #include "ui/app/sculpt_app.h"
+#include "ui/document/import_draft.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -139,26 +140,24 @@ void resultControls(SculptApp& app, ImportDraft& draft)
 
 }  // namespace
 
-void drawImportPanel(SculptApp& app)
+void drawImportPanel(SculptApp& app, ImportDraft& draft)
 {
-    ImportDraft* draft = app.importDraft();
-    if (!draft) return;
     beginSidePanel("Import", kPanelWidth);
-    ImGui::TextUnformatted(draft->file().path().filename().string().c_str());
-    if (draft->file().isScan()) scanControls(*draft);
-    else meshFacts(*draft);
-    resultControls(app, *draft);
+    ImGui::TextUnformatted(draft.file().path().filename().string().c_str());
+    if (draft.file().isScan()) scanControls(draft);
+    else meshFacts(draft);
+    resultControls(app, draft);
     ImGui::Separator();
-    if (!draft->problem().empty()) {
-        warningText(draft->problem(), kPanelWidth - 20.f);
+    if (!draft.problem().empty()) {
+        warningText(draft.problem(), kPanelWidth - 20.f);
     } else {
-        ImGui::TextDisabled("preview at voxel size %.3g, made in %.0f ms", draft->file().previewVoxelSize(),
-                            draft->previewMs());
+        ImGui::TextDisabled("preview at voxel size %.3g, made in %.0f ms", draft.file().previewVoxelSize(),
+                            draft.previewMs());
     }
-    if (ImGui::Button("Apply (Enter)")) app.applyImport();
+    if (ImGui::Button("Apply (Enter)")) app.execute(Command::Confirm);
     commandTooltip(int(Command::ApplyImport));
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.closeImport();
+    if (ImGui::Button("Cancel (Esc)")) app.execute(Command::Cancel);
     ImGui::End();
 }
 

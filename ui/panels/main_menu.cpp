@@ -1,4 +1,5 @@
 #include "ui/app/sculpt_app.h"
+#include "ui/modes/primitives_mode.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -53,11 +54,11 @@ void drawMainMenu(SculptApp& app)
     }
     if (ImGui::BeginMenu("Primitives")) {
         item(Command::AddPrimitive, !app.job());
-        item(Command::RemovePrimitive, app.primitiveDraft() != nullptr);
-        item(Command::BakePrimitives, app.primitiveDraft() != nullptr && !app.job());
+        item(Command::RemovePrimitive, app.mode<PrimitivesMode>() != nullptr);
+        item(Command::BakePrimitives, app.mode<PrimitivesMode>() != nullptr && !app.job());
         ImGui::Separator();
         item(Command::LoadScene, !app.job());
-        item(Command::SaveScene, app.primitiveDraft() != nullptr);
+        item(Command::SaveScene, app.mode<PrimitivesMode>() != nullptr);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Filters")) {

@@ -7,6 +7,9 @@
 
 namespace sculpt::ui {
 
+class ImportDraft;
+class MorphFrames;
+class PrimitiveDraft;
 class SculptApp;
 
 void drawMainMenu(SculptApp& app);
@@ -18,13 +21,13 @@ void drawHelpPanel(SculptApp& app);
 /// The running job's progress bar and Cancel button, if a job runs.
 void drawJobPanel(SculptApp& app);
 /// A finished morph's frames: slider, play/pause, step, keep, export, close.
-void drawMorphPanel(SculptApp& app);
+void drawMorphPanel(SculptApp& app, MorphFrames& frames);
 /// The scan or mesh being imported: what it holds, the iso-value over its histogram, crop,
 /// smoothing, cleanup, voxel size and what the result becomes; Apply or Cancel.
-void drawImportPanel(SculptApp& app);
+void drawImportPanel(SculptApp& app, ImportDraft& draft);
 /// The primitives being placed: their list, the selected one's skeleton and kernel, the scene's
 /// iso-value and operation; Bake, Load and Save.
-void drawPrimitivesPanel(SculptApp& app);
+void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft);
 
 /// A fixed window under the brush palette (the Import and Primitives panels); End() closes it.
 void beginSidePanel(const char* title, float width);

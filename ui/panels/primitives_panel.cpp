@@ -1,4 +1,5 @@
 #include "ui/app/sculpt_app.h"
+#include "ui/document/primitive_draft.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -106,27 +107,25 @@ void selectedFields(SculptApp& app, PrimitiveDraft& draft)
 
 }  // namespace
 
-void drawPrimitivesPanel(SculptApp& app)
+void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft)
 {
-    PrimitiveDraft* draft = app.primitiveDraft();
-    if (!draft) return;
     beginSidePanel("Primitives", kPanelWidth);
     addButtons(app);
-    primitiveList(*draft);
-    selectedFields(app, *draft);
+    primitiveList(draft);
+    selectedFields(app, draft);
     ImGui::Separator();
-    float iso = float(draft->iso);
+    float iso = float(draft.iso);
     ImGui::SetNextItemWidth(120.f);
-    if (ImGui::SliderFloat("iso-value", &iso, 0.05f, 0.95f, "%.2f")) draft->iso = iso;
-    int operation = int(draft->operation);
+    if (ImGui::SliderFloat("iso-value", &iso, 0.05f, 0.95f, "%.2f")) draft.iso = iso;
+    int operation = int(draft.operation);
     ImGui::SetNextItemWidth(120.f);
     if (ImGui::Combo("into the model", &operation, kOperations, int(std::size(kOperations))))
-        draft->operation = CsgOperation(operation);
-    if (!draft->problem().empty()) warningText(draft->problem(), kPanelWidth - 20.f);
+        draft.operation = CsgOperation(operation);
+    if (!draft.problem().empty()) warningText(draft.problem(), kPanelWidth - 20.f);
     ImGui::PushTextWrapPos(kPanelWidth - 10.f);
     ImGui::TextDisabled("click or drag on the surface moves the selected one");
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("Bake (Enter)")) app.bakePrimitives();
+    if (ImGui::Button("Bake (Enter)")) app.execute(Command::Confirm);
     commandTooltip(int(Command::BakePrimitives));
     ImGui::SameLine();
     if (ImGui::Button("Save...")) app.execute(Command::SaveScene);
@@ -135,7 +134,7 @@ void drawPrimitivesPanel(SculptApp& app)
     if (ImGui::Button("Load...")) app.execute(Command::LoadScene);
     commandTooltip(int(Command::LoadScene));
     ImGui::SameLine();
-    if (ImGui::Button("Close (Esc)")) app.closePrimitives();
+    if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
     ImGui::End();
 }
 

@@ -1,0 +1,194 @@
+// SculptApp: the work that runs off the UI thread (whole-model edits, documents opened or
+// imported, exports, targets, morphs) and how its result lands.
+
+#include "core/base/errors.h"
+#include "core/io/mesh_file.h"
+#include "core/io/vdb_layout.h"
+#include "sculpt/session/morph_run.h"
+#include "sculpt/session/shape_import.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/document/import_draft.h"
+#include "ui/modes/import_mode.h"
+#include "ui/modes/morph_mode.h"
+#include "ui/window/app_window.h"
+
+#include <chrono>
+
+namespace sculpt::ui {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The scan or mesh at `path` read for the Import panel, with a first preview.
+ImportDraft readForImport(const fs::path& path)
+{
+    auto file = std::make_shared<ImportPreview>(path);
+    // Sensible defaults for a printable model: the largest piece only, at the file's resolution.
+    ImportOptions defaults;
+    defaults.largestComponent = true;
+    const auto start = std::chrono::steady_clock::now();
+    FieldImage first = file->surface(defaults);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return ImportDraft(file, std::move(first), ms, defaults);
+}
+
+}  // namespace
+
+bool SculptApp::busy()
+{
+    if (mJobs.running()) mDialogs.notice = "wait for " + mJobs.job()->label() + " to finish, or press Esc to cancel it";
+    else if (mMode) mDialogs.notice = mMode->waitNotice();
+    return mJobs.running() || mMode;
+}
+
+bool SculptApp::holdsReplay() const { return mJobs.running() || (mMode && mMode->holdsReplay()); }
+
+void SculptApp::pollJob()
+{
+    const JobRunner::Outcome outcome = mJobs.poll();
+    switch (outcome.ending) {
+    case JobRunner::Ending::Running: return;
+    case JobRunner::Ending::Finished: mLastJob = "finished"; break;
+    case JobRunner::Ending::Cancelled:
+        mDialogs.notice = outcome.label + " cancelled: the model is as it was";
+        mLastJob = "cancelled";
+        break;
+    case JobRunner::Ending::Failed:
+        showError(outcome.error);
+        mLastJob = "failed";
+        break;
+    }
+    mHoverValid = false;
+    mLastInput = mWindow.time();  // show the notice
+}
+
+void SculptApp::startEdit(ModelEdit edit)
+{
+    // The job works on its own copy: the document stays as it is until the result lands.
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
+    const std::string label = edit.label;
+    startJob<FieldImage>(
+        label, [copy, work = std::move(edit.work)](const Progress& p) { return work(std::move(*copy), p); },
+        [this, label, summary = std::move(edit.summary)](FieldImage result) {
+            mDocument->replaceField(std::move(result), label);
+            const std::string extra = summary ? summary() : std::string();
+            mDialogs.notice = label + " done" + (extra.empty() ? "" : ": " + extra) + " (Ctrl+Z undoes it)";
+        });
+}
+
+void SculptApp::startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed)
+{
+    startJob<std::unique_ptr<Document>>(std::move(label), std::move(make),
+                                        [this, landed = std::move(landed)](std::unique_ptr<Document> document) {
+                                            setDocument(std::move(document), true);
+                                            mDialogs.notice = landed();
+                                        });
+}
+
+void SculptApp::startFilter(const ModelFilter& filter)
+{
+    if (busy()) return;
+    const std::string source = mDocument->path().empty() ? std::string("the model") : mDocument->path().string();
+    startEdit({filterLabel(filter),
+               [filter, source](FieldImage model, const Progress& p) {
+                   return applyFilter(std::move(model), filter, source, p);
+               },
+               {}});
+}
+
+void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
+{
+    if (busy()) return;
+    autosaveNow();
+    auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
+    const std::string label = "morph to " + target.filename().string();
+    startJob<MorphRun>(
+        label, [copy, target, options](const Progress& p) { return morphInto(*copy, target, options, p); },
+        [this, label, target](MorphRun run) {
+            // The target becomes the loaded one: its ghost shows where the frames go.
+            mBrush.target = {target, run.target};
+            mGhost.set(run.target.get());
+            openMode(std::make_unique<MorphMode>(label, std::move(run)));
+        });
+}
+
+void SculptApp::startOpen(const fs::path& path, const std::string& grid)
+{
+    if (busy()) return;
+    autosaveNow();
+    if (grid.empty()) {
+        // A file of several level sets and none to take by default: ask which (a damaged
+        // file is left for the job to report).
+        try {
+            const VdbLayout layout = scanVdbLayout(path);
+            if (!defaultGrid(layout) && levelSetNames(layout).size() > 1) {
+                mDialogs.gridChoice = Dialogs::GridChoice{path, levelSetNames(layout)};
+                return;
+            }
+        } catch (const InputError&) {}
+    }
+    // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    startDocument(
+        "open " + path.filename().string(),
+        [path, warnings, grid](const Progress& p) {
+            return std::make_unique<Document>(Document::open(path, p, warnings.get(), grid));
+        },
+        [this, path, warnings] {
+            mRecent.add(path);
+            return "opened " + path.string() + (warnings->empty() ? "" : " (" + warnings->front() + ")");
+        });
+}
+
+void SculptApp::startExport(const fs::path& path)
+{
+    if (busy()) return;
+    meshFormatOf(path);  // refuse an unknown extension before welding
+    // Welded here (the mesher is the UI's), written on the job's thread.
+    auto mesh = std::make_shared<TriangleMesh>(mDocument->session().mesher()->weldedMesh());
+    startJob<std::size_t>(
+        "export " + path.filename().string(),
+        [mesh, path](const Progress&) {
+            writeMesh(*mesh, path);
+            return mesh->triangles.size();
+        },
+        [this, path](std::size_t triangles) {
+            mDialogs.notice = "exported " + path.string() + " (" + std::to_string(triangles) + " triangles)";
+        });
+}
+
+void SculptApp::startLoadTarget(const fs::path& path)
+{
+    if (busy()) return;
+    autosaveNow();
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    startJob<FieldImage>(
+        "load target " + path.filename().string(),
+        [path, warnings](const Progress& p) { return loadShape(path, std::nullopt, *warnings, p); },
+        [this, path, warnings](FieldImage shape) {
+            mBrush.target = {path, std::make_shared<const FieldImage>(std::move(shape))};
+            mGhost.set(mBrush.target.shape.get());
+            mGhost.setShown(true);
+            mDialogs.notice =
+                "target " + path.filename().string() + " loaded: O is the follow brush, H hides the ghost";
+            if (!warnings->empty()) mDialogs.notice += " (" + warnings->front() + ")";
+        });
+}
+
+void SculptApp::startImportRead(const fs::path& path)
+{
+    if (busy()) return;
+    autosaveNow();
+    startJob<ImportDraft>(
+        "read " + path.filename().string(), [path](const Progress&) { return readForImport(path); },
+        [this](ImportDraft draft) {
+            const openvdb::CoordBBox box = draft.preview()->grid().evalActiveVoxelBoundingBox();
+            const auto& xform = draft.preview()->grid().transform();
+            const openvdb::Vec3d lo = xform.indexToWorld(box.min()), hi = xform.indexToWorld(box.max());
+            openMode(std::make_unique<ImportMode>(mViewport.renderer(), std::move(draft)));
+            mCamera.frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
+        });
+}
+
+}  // namespace sculpt::ui

@@ -1,0 +1,68 @@
+// SculptApp: the one mode that may own the view (import, primitives, morph frames), opened,
+// accepted and closed here whatever it is.
+
+#include "core/base/errors.h"
+#include "core/primitives/scene_file.h"
+#include "ui/app/sculpt_app.h"
+#include "ui/modes/primitives_mode.h"
+
+namespace sculpt::ui {
+
+void SculptApp::openMode(std::unique_ptr<Mode> mode)
+{
+    closeMode();
+    mMode = std::move(mode);
+    mDialogs.notice = mMode->hint();
+    mHoverValid = false;
+}
+
+void SculptApp::closeMode()
+{
+    if (!mMode) return;
+    if (mDialogs.notice == mMode->hint()) mDialogs.notice.clear();  // a hint outliving its panel misleads
+    if (mDrag == Drag::Mode) mDrag = Drag::None;
+    mMode.reset();
+    mHoverValid = false;
+}
+
+void SculptApp::acceptMode()
+{
+    if (!mMode || mJobs.running()) return;
+    try {
+        if (mMode->accept(*this)) closeMode();
+    } catch (const InputError& e) {  // the mode stays open, as it was
+        showError(e.what());
+    }
+}
+
+void SculptApp::drawModePanel()
+{
+    if (mMode) mMode->drawPanel(*this);
+}
+
+PrimitivesMode& SculptApp::primitivesMode()
+{
+    if (!mode<PrimitivesMode>()) {
+        openMode(std::make_unique<PrimitivesMode>(mViewport.renderer(), mViewport.overlay(), mLook,
+                                                  mDocument->session().field().grid().transform().copy()));
+    }
+    return *mode<PrimitivesMode>();
+}
+
+void SculptApp::addPrimitive(SkeletonType type)
+{
+    if (!mode<PrimitivesMode>() && busy()) return;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const glm::dvec3 at = hit ? hit->position : mCamera.focalPoint();
+    // A soft object crosses iso 0.5 near half its reach: twice the brush gives a blob its size.
+    primitivesMode().draft().add(type, {at.x, at.y, at.z}, 2.0 * mBrush.radius);
+}
+
+void SculptApp::loadScene(const std::filesystem::path& path)
+{
+    const Scene scene = readScene(path);  // an error leaves the panel as it was
+    primitivesMode().draft().load(scene);
+    mDialogs.notice = "loaded " + path.string() + ": Enter bakes it into the model, Esc discards it";
+}
+
+}  // namespace sculpt::ui
