@@ -5,7 +5,6 @@
 #include "core/primitives/scene_file.h"
 #include "sculpt/session/morph_run.h"
 #include "ui/app/sculpt_app.h"
-#include "ui/modes/import_mode.h"
 #include "ui/modes/morph_mode.h"
 #include "ui/modes/primitives_mode.h"
 #include "ui/window/app_window.h"
@@ -18,150 +17,32 @@ namespace sculpt::ui {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-void toggle(bool& flag) { flag = !flag; }
-
-}  // namespace
-
 void SculptApp::execute(Command command)
 {
     if (mStroke.active()) return;  // nothing interrupts a stroke
-    const auto tool = [this](BrushTool t) { mBrush.tool = t; };
-    switch (command) {
-    case Command::ToolAdd: tool(BrushTool::Add); break;
-    case Command::ToolCarve: tool(BrushTool::Carve); break;
-    case Command::ToolInflate: tool(BrushTool::Inflate); break;
-    case Command::ToolDeflate: tool(BrushTool::Deflate); break;
-    case Command::ToolSmooth: tool(BrushTool::Smooth); break;
-    case Command::ToolFlatten: tool(BrushTool::Flatten); break;
-    case Command::ToolGrab: tool(BrushTool::Grab); break;
-    case Command::ToolPinch: tool(BrushTool::Pinch); break;
-    case Command::ToolFollow:
-        tool(BrushTool::Follow);
-        if (!mBrush.target.shape) mDialogs.notice = "the follow brush needs a target: File > Load Target (Ctrl+T)";
-        break;
-    case Command::ToolPrimitive: tool(BrushTool::Primitive); break;
-    case Command::RadiusDrag: mDrag = Drag::Radius, mDragStartX = mMouseX, mDragStartValue = mBrush.radius; break;
-    case Command::StrengthDrag: mDrag = Drag::Strength, mDragStartX = mMouseX, mDragStartValue = mBrush.strength; break;
-    case Command::RadiusSmaller:
-        mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(), mBrush.radius * 0.8);
-        break;
-    case Command::RadiusLarger: mBrush.radius *= 1.25; break;
-    case Command::SymmetryX: toggle(mBrush.symmetry.x); break;
-    case Command::SymmetryY: toggle(mBrush.symmetry.y); break;
-    case Command::SymmetryZ: toggle(mBrush.symmetry.z); break;
-    case Command::Undo:
-        if (!busy() && !mDocument->undo()) mDialogs.notice = "nothing to undo";
-        break;
-    case Command::Redo:
-        if (!busy() && !mDocument->redo()) mDialogs.notice = "nothing to redo";
-        break;
-    case Command::New:
-        if (!busy() && guardUnsaved(command)) mDialogs.prompt = Dialogs::Prompt::New;
-        break;
-    case Command::Open:
-        if (!busy() && guardUnsaved(command))
-            mDialogs.prompt = Dialogs::Prompt::Open, mDialogs.path.clear(), mDialogs.focusField = true;
-        break;
-    case Command::Save:
-        if (mDocument->path().empty()) execute(Command::SaveAs);
-        else saveTo(mDocument->path());
-        break;
-    case Command::SaveAs:
-        mDialogs.prompt = Dialogs::Prompt::SaveAs, mDialogs.path = mDocument->path().string(),
-        mDialogs.focusField = true;
-        break;
-    case Command::MorphTo:
-        if (busy()) break;
-        mDialogs.prompt = Dialogs::Prompt::Morph, mDialogs.path = mBrush.target.path.string(),
-        mDialogs.focusField = true;
-        break;
-    case Command::LoadTarget:
-        if (busy()) break;
-        mDialogs.prompt = Dialogs::Prompt::Target, mDialogs.path = mBrush.target.path.string(),
-        mDialogs.focusField = true;
-        break;
-    case Command::MorphPlay:
-        if (MorphMode* morph = mode<MorphMode>()) morph->frames().togglePlay(mWindow.time());
-        break;
-    case Command::StepUp:
-    case Command::StepDown:
-        if (mMode) mMode->step(command == Command::StepUp ? 1 : -1);
-        break;
-    case Command::Import:
-        if (busy()) break;
-        mDialogs.prompt = Dialogs::Prompt::Import, mDialogs.path.clear(), mDialogs.focusField = true;
-        break;
-    case Command::ApplyImport: acceptModeOf<ImportMode>(); break;
-    case Command::AddPrimitive: addPrimitive(SkeletonType::Point); break;
-    case Command::RemovePrimitive:
-        if (PrimitivesMode* primitives = mode<PrimitivesMode>()) primitives->draft().removeSelected();
-        break;
-    case Command::BakePrimitives: acceptModeOf<PrimitivesMode>(); break;
-    case Command::LoadScene:
-        if (mode<PrimitivesMode>() || !busy())
-            mDialogs.prompt = Dialogs::Prompt::LoadScene, mDialogs.path.clear(), mDialogs.focusField = true;
-        break;
-    case Command::SaveScene:
-        if (mode<PrimitivesMode>())
-            mDialogs.prompt = Dialogs::Prompt::SaveScene, mDialogs.path = "scene.json", mDialogs.focusField = true;
-        else mDialogs.notice = "no primitives to save: Shift+A adds one";
-        break;
-    case Command::ToggleXRay: mLook.setXRay(!mLook.xray()); break;
-    case Command::MorphKeep: acceptModeOf<MorphMode>(); break;
-    case Command::MorphExport:
-        if (mode<MorphMode>())
-            mDialogs.prompt = Dialogs::Prompt::MorphExport, mDialogs.path = "morph", mDialogs.focusField = true;
-        break;
-    case Command::ExportMesh:
-        mDialogs.prompt = Dialogs::Prompt::ExportMesh, mDialogs.focusField = true;
-        mDialogs.path =
-            mDocument->path().empty() ? "sculpt.ply" : fs::path(mDocument->path()).replace_extension(".ply").string();
-        break;
-    case Command::SaveStrokes:
-        mDialogs.prompt = Dialogs::Prompt::SaveStrokes, mDialogs.focusField = true;
-        mDialogs.path = mDocument->path().empty()
-                            ? "strokes.json"
-                            : fs::path(mDocument->path()).replace_extension(".strokes.json").string();
-        break;
-    case Command::Quit:
-        if (guardUnsaved(command)) mQuit = true;  // a running job is cancelled on the way out
-        break;
-    case Command::SmoothModel:
-    case Command::OffsetModel:
-        if (busy()) break;
-        mDialogs.filter.kind = command == Command::SmoothModel ? ModelFilter::Kind::Smooth : ModelFilter::Kind::Offset;
-        mDialogs.prompt = command == Command::SmoothModel ? Dialogs::Prompt::SmoothModel : Dialogs::Prompt::OffsetModel;
-        mDialogs.focusField = true;
-        break;
-    case Command::FrameModel: frameModel(); break;
-    case Command::ViewFront: mCamera.axisView(AxisView::Front); break;
-    case Command::ViewBack: mCamera.axisView(AxisView::Back); break;
-    case Command::ViewRight: mCamera.axisView(AxisView::Right); break;
-    case Command::ViewLeft: mCamera.axisView(AxisView::Left); break;
-    case Command::ViewTop: mCamera.axisView(AxisView::Top); break;
-    case Command::ViewBottom: mCamera.axisView(AxisView::Bottom); break;
-    case Command::OrbitLeft: mCamera.orbitDegrees(-15.0, 0.0); break;
-    case Command::OrbitRight: mCamera.orbitDegrees(15.0, 0.0); break;
-    case Command::OrbitUp: mCamera.orbitDegrees(0.0, -15.0); break;
-    case Command::OrbitDown: mCamera.orbitDegrees(0.0, 15.0); break;
-    case Command::ZoomIn: mCamera.zoom(1.25); break;
-    case Command::ZoomOut: mCamera.zoom(0.8); break;
-    case Command::NextShading: mLook.setShading(Shading((int(mLook.shading()) + 1) % 4)); break;
-    case Command::ToggleFlat: mLook.setFlat(!mLook.flat()); break;
-    case Command::ToggleWireframe: mLook.setWireframe(!mLook.wireframe()); break;
-    case Command::ToggleScales: mScales.setShown(!mScales.shown()); break;
-    case Command::ToggleGhost: mGhost.setShown(!mGhost.shown()); break;
-    case Command::ToggleTrackball: toggle(mCamera.trackball); break;
-    case Command::ToggleHelp: toggle(mDialogs.help); break;
-    case Command::Confirm: acceptMode(); break;
-    case Command::Cancel:
-        if (mJobs.running()) mJobs.cancel();
-        else closeMode();
-        break;
-    }
+    const std::string blocked = whyNot(command);
+    if (blocked.empty()) commandRow(command).run(*this);
+    else mDialogs.notice = blocked;
     mHoverValid = false;
+}
+
+std::string SculptApp::whyNot(Command command) const
+{
+    const CommandRow& row = commandRow(command);
+    return row.blocked ? row.blocked(*this) : std::string();
+}
+
+void SculptApp::openPrompt(Dialogs::Prompt prompt, std::string path)
+{
+    mDialogs.prompt = prompt;
+    mDialogs.path = std::move(path);
+    mDialogs.focusField = true;
+}
+
+std::string SculptApp::besideDocument(const char* extension, const char* fallback) const
+{
+    if (mDocument->path().empty()) return fallback;
+    return fs::path(mDocument->path()).replace_extension(extension).string();
 }
 
 bool SculptApp::guardUnsaved(Command again)
@@ -208,8 +89,7 @@ void SculptApp::saveTo(const fs::path& path)
 void SculptApp::openRecent(const fs::path& path)
 {
     if (!guardUnsaved(Command::Open)) return;
-    mDialogs.path = path.string();
-    mDialogs.prompt = Dialogs::Prompt::Open;
+    openPrompt(Dialogs::Prompt::Open, path.string());
     confirmPrompt();
 }
 

@@ -77,17 +77,16 @@ void SculptApp::pressButton(const InputEvent& event)
         mDrag = Drag::None;  // a click keeps the new size
         return;
     }
-    if (event.button == kLeftButton && !(event.mods & kAlt) && mMode) {
-        const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
-        if (hit && mMode->press(*hit)) {  // a primitive placed, say
-            mDrag = Drag::Mode;
-            return;
-        }
-    }
-    if (event.button == kLeftButton && !(event.mods & kAlt) && !busy()) {
+    if (event.button == kLeftButton && !(event.mods & kAlt)) {
         if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
-            beginStroke(event, *hit);
-            return;
+            if (mMode && mMode->press(*hit)) {                                 // a primitive placed, say
+                mDrag = Drag::Mode;
+                return;
+            }
+            if (!busy()) {
+                beginStroke(event, *hit);
+                return;
+            }
         }
     }
     // Navigation: middle (Blender), right (SculptGL), Alt+left (touchpads), left off the model.
@@ -169,13 +168,16 @@ void SculptApp::routeKey(const InputEvent& event)
     // WantTextInput lags a frame (it still claims keys for a prompt just closed): ask instead
     // whether an item was active when the last frame ended.
     if (modalOpen() || mItemActive) return;
+    // Esc over an open menu is meant for the menu, not for the panel behind it.
+    const bool menuOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+    if (menuOpen && event.key == GLFW_KEY_ESCAPE) return;
     if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
         if (event.key == GLFW_KEY_ESCAPE) (mDrag == Drag::Radius ? mBrush.radius : mBrush.strength) = mDragStartValue;
         mDrag = Drag::None;
         return;
     }
-    Command command;
-    if (mDrag == Drag::None && commandForKey(event.key, event.mods, command)) execute(command);
+    if (mDrag != Drag::None) return;
+    if (const std::optional<Command> command = commandForKey(event.key, event.mods)) execute(*command);
 }
 
 }  // namespace sculpt::ui

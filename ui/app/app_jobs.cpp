@@ -35,11 +35,17 @@ ImportDraft readForImport(const fs::path& path)
 
 }  // namespace
 
+std::string SculptApp::waitReason() const
+{
+    if (mJobs.running()) return "wait for " + mJobs.job()->label() + " to finish, or press Esc to cancel it";
+    return mMode ? mMode->waitNotice() : std::string();
+}
+
 bool SculptApp::busy()
 {
-    if (mJobs.running()) mDialogs.notice = "wait for " + mJobs.job()->label() + " to finish, or press Esc to cancel it";
-    else if (mMode) mDialogs.notice = mMode->waitNotice();
-    return mJobs.running() || mMode;
+    const std::string reason = waitReason();
+    if (!reason.empty()) mDialogs.notice = reason;
+    return !reason.empty();
 }
 
 bool SculptApp::holdsReplay() const { return mJobs.running() || (mMode && mMode->holdsReplay()); }

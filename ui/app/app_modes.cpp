@@ -19,7 +19,8 @@ void SculptApp::openMode(std::unique_ptr<Mode> mode)
 void SculptApp::closeMode()
 {
     if (!mMode) return;
-    if (mDialogs.notice == mMode->hint()) mDialogs.notice.clear();  // a hint outliving its panel misleads
+    // Its hint, or why edits waited for it, would mislead once it is gone.
+    if (mDialogs.notice == mMode->hint() || mDialogs.notice == mMode->waitNotice()) mDialogs.notice.clear();
     if (mDrag == Drag::Mode) mDrag = Drag::None;
     mMode.reset();
     mHoverValid = false;

@@ -1,12 +1,16 @@
 #pragma once
 /// @file commands.h
-/// @brief Everything a key, a menu item or a button can ask for, and the keys bound to each:
-///        one table feeds the key handling, the menus' hints, the tooltips and the Help panel.
+/// @brief Everything a key, a menu item or a button can ask for, each registered once in a
+///        table (ui/app/command_table.cpp) that feeds the keys, the menus (and when they are
+///        greyed out), the tooltips, the Help panel and SculptApp::execute.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace sculpt::ui {
+
+class SculptApp;
 
 enum class Command {
     ToolAdd,
@@ -73,28 +77,37 @@ enum class Command {
     ToggleTrackball,
     ToggleHelp,
     Confirm,
-    Cancel,
+    Cancel,  // the last: kCommandCount counts up to it
 };
 
-struct KeyBinding {
-    int key;   ///< GLFW key code
-    int mods;  ///< exactly these modifiers (Shift, Ctrl, Alt)
-    Command command;
+/// The number of commands: every value below it has one row in the table.
+constexpr int kCommandCount = int(Command::Cancel) + 1;
+
+/// A key with exactly these modifiers (Shift, Ctrl, Alt).
+struct Chord {
+    int key;  ///< GLFW key code
+    int mods = 0;
 };
 
-struct CommandInfo {
+/// One command, registered once: what menus, tooltips and Help show, its keys, when it can run
+/// (the menus grey it out by the same rule) and what it does.
+struct CommandRow {
     Command command;
     const char* label;
     const char* help;
+    std::vector<Chord> chords;
+    /// Why it cannot run now ("nothing to undo"), or "" when it can; nullptr: it always can.
+    std::string (*blocked)(const SculptApp& app);
+    void (*run)(SculptApp& app);
 };
 
-/// Every binding; a command may have several (Ctrl+Shift+Z and Ctrl+Y redo).
-const std::vector<KeyBinding>& keyBindings();
-const CommandInfo& commandInfo(Command command);
-const std::vector<CommandInfo>& allCommands();
+/// Every command, one row each.
+const std::vector<CommandRow>& commandTable();
+/// The row of `command`; a command without one is a programming error (std::logic_error).
+const CommandRow& commandRow(Command command);
 /// "Ctrl+Shift+Z, Ctrl+Y" for a command; "" if it has no key.
 std::string shortcutText(Command command);
 /// The command bound to this key and modifiers, if any.
-bool commandForKey(int key, int mods, Command& command);
+std::optional<Command> commandForKey(int key, int mods);
 
 }  // namespace sculpt::ui

@@ -106,8 +106,12 @@ public:
     int run();
     /// One input, live or replayed.
     void handle(const InputEvent& event);
-    /// A command from a key, a menu or a button.
+    /// A command from a key, a menu or a button; if it cannot run now, the status bar says why.
     void execute(Command command);
+    /// Why `command` cannot run now ("nothing to undo"), or "" when it can: menus grey it out.
+    std::string whyNot(Command command) const;
+    /// The command table's rows (commandTable()): their actions reach the app's insides.
+    static const std::vector<CommandRow>& commands();
 
     Document& document() override { return *mDocument; }
     BrushOptions& brush() { return mBrush; }
@@ -126,6 +130,11 @@ public:
     M* mode()
     {
         return dynamic_cast<M*>(mMode.get());
+    }
+    template <typename M>
+    const M* mode() const
+    {
+        return dynamic_cast<const M*>(mMode.get());
     }
     /// The open mode's panel, if one is open.
     void drawModePanel();
@@ -215,8 +224,14 @@ private:
     void startMorph(const std::filesystem::path& target, const MorphOptions& options);
     /// Lands a finished job's result (or reports why there is none).
     void pollJob();
-    /// True (with a notice) if a job runs or a mode is open, so an edit of the document must wait.
+    /// Why an edit of the document must wait (a job runs, a mode is open), or "".
+    std::string waitReason() const;
+    /// True (with waitReason as the notice) if an edit of the document must wait.
     bool busy();
+    /// Opens `prompt` with `path` in its field, the field focused.
+    void openPrompt(Dialogs::Prompt prompt, std::string path = {});
+    /// The document's path with `extension` ("doc.ply"), or `fallback` for an unnamed document.
+    std::string besideDocument(const char* extension, const char* fallback) const;
     /// What a replay's wait event waits for: a job, or a mode (a morph playing).
     bool holdsReplay() const;
 

@@ -179,7 +179,7 @@ void drawMorphPanel(SculptApp& app, MorphFrames& frames)
     if (ImGui::SliderInt("frame", &shown, 0, frames.count() - 1)) frames.show(shown);
     const auto button = [&app](const char* label, Command command) {
         if (ImGui::Button(label)) app.execute(command);
-        commandTooltip(int(command));
+        commandTooltip(app, command);
         ImGui::SameLine();
     };
     button("<", Command::StepUp);

@@ -23,11 +23,13 @@ constexpr const char* kMouse[][2] = {
 
 void drawHelpPanel(SculptApp& app)
 {
-    ImGui::SetNextWindowSize(ImVec2(520, 560), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(720, 600), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(260, 40), ImGuiCond_FirstUseEver);
     if (!ImGui::Begin("Help", &app.dialogs().help)) return ImGui::End();
     ImGui::TextUnformatted("Mouse");
     if (ImGui::BeginTable("mouse", 2, ImGuiTableFlags_RowBg)) {
+        ImGui::TableSetupColumn("input", ImGuiTableColumnFlags_WidthFixed, 220.f);
+        ImGui::TableSetupColumn("does", ImGuiTableColumnFlags_WidthStretch);
         for (const auto& row : kMouse) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
@@ -40,7 +42,11 @@ void drawHelpPanel(SculptApp& app)
     ImGui::Separator();
     ImGui::TextUnformatted("Keys");
     if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg)) {
-        for (const CommandInfo& info : allCommands()) {
+        // Keys and names fixed, the help wrapped to what is left: nothing is cut off.
+        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 160.f);
+        ImGui::TableSetupColumn("command", ImGuiTableColumnFlags_WidthFixed, 130.f);
+        ImGui::TableSetupColumn("help", ImGuiTableColumnFlags_WidthStretch);
+        for (const CommandRow& info : commandTable()) {
             const std::string keys = shortcutText(info.command);
             if (keys.empty()) continue;
             ImGui::TableNextRow();
@@ -49,7 +55,9 @@ void drawHelpPanel(SculptApp& app)
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(info.label);
             ImGui::TableNextColumn();
-            ImGui::TextDisabled("%s", info.help);
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("%s", info.help);
+            ImGui::PopStyleColor();
         }
         ImGui::EndTable();
     }

@@ -18,10 +18,10 @@ void drawHistoryPanel(SculptApp& app)
                 formatBytes(double(history.memoryBytes())).c_str());
     if (history.droppedCount() > 0) ImGui::TextDisabled("%zu oldest forgotten (memory budget)", history.droppedCount());
     if (ImGui::Button("Undo")) app.execute(Command::Undo);
-    commandTooltip(int(Command::Undo));
+    commandTooltip(app, Command::Undo);
     ImGui::SameLine();
     if (ImGui::Button("Redo")) app.execute(Command::Redo);
-    commandTooltip(int(Command::Redo));
+    commandTooltip(app, Command::Redo);
     ImGui::Separator();
     ImGui::BeginChild("strokes");
     ImGui::TextDisabled("(opened)");

@@ -155,7 +155,7 @@ void drawImportPanel(SculptApp& app, ImportDraft& draft)
                             draft.previewMs());
     }
     if (ImGui::Button("Apply (Enter)")) app.execute(Command::Confirm);
-    commandTooltip(int(Command::ApplyImport));
+    commandTooltip(app, Command::ApplyImport);
     ImGui::SameLine();
     if (ImGui::Button("Cancel (Esc)")) app.execute(Command::Cancel);
     ImGui::End();

@@ -1,31 +1,31 @@
 #include "ui/app/sculpt_app.h"
-#include "ui/modes/primitives_mode.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
 
 namespace sculpt::ui {
 
-void commandMenuItem(SculptApp& app, int command, bool enabled)
+void commandMenuItem(SculptApp& app, Command command)
 {
-    const Command c = Command(command);
-    const std::string keys = shortcutText(c);
-    if (ImGui::MenuItem(commandInfo(c).label, keys.empty() ? nullptr : keys.c_str(), false, enabled)) app.execute(c);
-    commandTooltip(command);
+    const std::string keys = shortcutText(command);
+    const bool enabled = app.whyNot(command).empty();  // the rule execute() checks
+    if (ImGui::MenuItem(commandRow(command).label, keys.empty() ? nullptr : keys.c_str(), false, enabled))
+        app.execute(command);
+    commandTooltip(app, command);
 }
 
-void commandTooltip(int command)
+void commandTooltip(const SculptApp& app, Command command)
 {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
-    const Command c = Command(command);
-    const std::string keys = shortcutText(c);
-    ImGui::SetTooltip("%s%s%s", commandInfo(c).help, keys.empty() ? "" : "\nKey: ", keys.c_str());
+    const std::string keys = shortcutText(command), blocked = app.whyNot(command);
+    ImGui::SetTooltip("%s%s%s%s%s", commandRow(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
+                      blocked.empty() ? "" : "\nNot now: ", blocked.c_str());
 }
 
 void drawMainMenu(SculptApp& app)
 {
     if (!ImGui::BeginMainMenuBar()) return;
-    const auto item = [&app](Command c, bool enabled = true) { commandMenuItem(app, int(c), enabled); };
+    const auto item = [&app](Command c) { commandMenuItem(app, c); };
     if (ImGui::BeginMenu("File")) {
         item(Command::New);
         item(Command::Open);
@@ -35,37 +35,37 @@ void drawMainMenu(SculptApp& app)
             }
             ImGui::EndMenu();
         }
-        item(Command::Import, !app.job());
+        item(Command::Import);
         ImGui::Separator();
         item(Command::Save);
         item(Command::SaveAs);
         item(Command::ExportMesh);
         item(Command::SaveStrokes);
         ImGui::Separator();
-        item(Command::LoadTarget, !app.job());
+        item(Command::LoadTarget);
         ImGui::Separator();
         item(Command::Quit);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Edit")) {
-        item(Command::Undo, !app.job() && app.document().session().history().undoCount() > 0);
-        item(Command::Redo, !app.job() && app.document().session().history().redoCount() > 0);
+        item(Command::Undo);
+        item(Command::Redo);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Primitives")) {
-        item(Command::AddPrimitive, !app.job());
-        item(Command::RemovePrimitive, app.mode<PrimitivesMode>() != nullptr);
-        item(Command::BakePrimitives, app.mode<PrimitivesMode>() != nullptr && !app.job());
+        item(Command::AddPrimitive);
+        item(Command::RemovePrimitive);
+        item(Command::BakePrimitives);
         ImGui::Separator();
-        item(Command::LoadScene, !app.job());
-        item(Command::SaveScene, app.mode<PrimitivesMode>() != nullptr);
+        item(Command::LoadScene);
+        item(Command::SaveScene);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Filters")) {
-        item(Command::SmoothModel, !app.job());
-        item(Command::OffsetModel, !app.job());
+        item(Command::SmoothModel);
+        item(Command::OffsetModel);
         ImGui::Separator();
-        item(Command::MorphTo, !app.job());
+        item(Command::MorphTo);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -83,7 +83,7 @@ void drawMainMenu(SculptApp& app)
         if (ImGui::MenuItem("X-Ray", shortcutText(Command::ToggleXRay).c_str(), app.look().xray()))
             app.execute(Command::ToggleXRay);
         if (ImGui::MenuItem("Target Ghost", shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
-                            bool(app.brush().target.shape)))
+                            app.whyNot(Command::ToggleGhost).empty()))
             app.execute(Command::ToggleGhost);
         if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
             app.execute(Command::ToggleTrackball);

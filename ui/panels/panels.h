@@ -3,6 +3,8 @@
 /// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,
 ///        the history, the status bar, the dialogs and the help.
 
+#include "ui/app/commands.h"
+
 #include <string>
 
 namespace sculpt::ui {
@@ -34,9 +36,9 @@ void beginSidePanel(const char* title, float width);
 /// Text in the warning colour, wrapped to `width` pixels.
 void warningText(const std::string& text, float width);
 
-/// A menu item running `command`, its keys shown beside it.
-void commandMenuItem(SculptApp& app, int command, bool enabled = true);
-/// The tooltip of the last item: what `command` does and its keys.
-void commandTooltip(int command);
+/// A menu item running `command`, its keys shown beside it, greyed out when it cannot run.
+void commandMenuItem(SculptApp& app, Command command);
+/// The tooltip of the last item: what `command` does, its keys, and why it cannot run now.
+void commandTooltip(const SculptApp& app, Command command);
 
 }  // namespace sculpt::ui

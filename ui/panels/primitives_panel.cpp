@@ -126,13 +126,13 @@ void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft)
     ImGui::TextDisabled("click or drag on the surface moves the selected one");
     ImGui::PopTextWrapPos();
     if (ImGui::Button("Bake (Enter)")) app.execute(Command::Confirm);
-    commandTooltip(int(Command::BakePrimitives));
+    commandTooltip(app, Command::BakePrimitives);
     ImGui::SameLine();
     if (ImGui::Button("Save...")) app.execute(Command::SaveScene);
-    commandTooltip(int(Command::SaveScene));
+    commandTooltip(app, Command::SaveScene);
     ImGui::SameLine();
     if (ImGui::Button("Load...")) app.execute(Command::LoadScene);
-    commandTooltip(int(Command::LoadScene));
+    commandTooltip(app, Command::LoadScene);
     ImGui::SameLine();
     if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
     ImGui::End();

@@ -28,9 +28,9 @@ void toolPalette(SculptApp& app)
     for (int i = 0; i < int(std::size(kTools)); ++i) {
         const bool current = b.tool == kTools[i].tool;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(commandInfo(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
+        if (ImGui::Button(commandRow(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
-        commandTooltip(int(kTools[i].command));
+        commandTooltip(app, kTools[i].command);
         if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
     }
 }
@@ -48,9 +48,9 @@ void drawToolPanel(SculptApp& app)
     float radius = float(b.radius), strength = float(b.strength), spacing = float(b.spacing);
     const float voxel = float(app.document().session().field().voxelSize());
     if (ImGui::DragFloat("radius", &radius, 0.02f * radius, 0.5f * voxel, 400.f * voxel, "%.3g")) b.radius = radius;
-    commandTooltip(int(Command::RadiusDrag));
+    commandTooltip(app, Command::RadiusDrag);
     if (ImGui::SliderFloat("strength", &strength, 0.01f, 1.f, "%.2f")) b.strength = strength;
-    commandTooltip(int(Command::StrengthDrag));
+    commandTooltip(app, Command::StrengthDrag);
     int falloff = int(b.falloff);
     if (ImGui::Combo("falloff", &falloff, kFalloffs, int(std::size(kFalloffs)))) b.falloff = Falloff(falloff);
     if (ImGui::SliderFloat("spacing", &spacing, 0.05f, 1.f, "%.2f r")) b.spacing = spacing;
@@ -58,13 +58,13 @@ void drawToolPanel(SculptApp& app)
     ImGui::Text("mirror");
     ImGui::SameLine();
     ImGui::Checkbox("X", &b.symmetry.x);
-    commandTooltip(int(Command::SymmetryX));
+    commandTooltip(app, Command::SymmetryX);
     ImGui::SameLine();
     ImGui::Checkbox("Y", &b.symmetry.y);
-    commandTooltip(int(Command::SymmetryY));
+    commandTooltip(app, Command::SymmetryY);
     ImGui::SameLine();
     ImGui::Checkbox("Z", &b.symmetry.z);
-    commandTooltip(int(Command::SymmetryZ));
+    commandTooltip(app, Command::SymmetryZ);
     ImGui::Checkbox("pressure from speed", &b.pressureFromSpeed);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A mouse has no pressure: faster strokes press lighter");
     if (b.tool == BrushTool::Smooth) ImGui::Checkbox("keep volume", &b.keepVolume);
