@@ -2,7 +2,7 @@
 /// @file local_patch.h
 /// @brief A small copy of the field around an edit, worked on alone and written back in place.
 ///
-/// OpenVDB's tracker and filters visit every leaf of the grid they are given (DESIGN.md), so a
+/// OpenVDB's tracker and filters visit every leaf of the grid they are given, so a
 /// local edit copies the leaves near its region into a small grid, edits and redistances that,
 /// then writes back only the voxels inside the region: everything outside stays bit for bit, and
 /// the cost follows the region, not the model. The copy reaches a margin beyond the region so

@@ -368,6 +368,7 @@ void LevelSetEvolution::offsetValues(double displacement)
         }
     });
     mMovedSinceRedistance += std::abs(displacement);
+    mField.markDirty(mField.allLeaves());  // every voxel moved: the mesher must see them all
 }
 
 void LevelSetEvolution::applyStep(double dt)

@@ -4,7 +4,7 @@
 ///        (F_T = -alpha clamp(phi_T, -w, w)), growing where the target is larger and shrinking
 ///        where it is smaller, through changes of topology, optionally on a straight line of
 ///        volumes between the two shapes. phi_T is the target's distance widened beyond its band
-///        over the whole source (target_distance.h): far parts travel at the full speed alpha w
+///        over the whole source (wide_distance.h): far parts travel at the full speed alpha w
 ///        and the morph sees them approach, so it stops only once the shapes meet or the
 ///        distance stops falling, whatever their placement.
 

@@ -270,7 +270,7 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     first.write(dir / "first.json");
     const std::string args = shellQuoted(dir / "ball.vdb") + " --play " + shellQuoted(dir / "first.json") +
                              " --state-dir " + shellQuoted(state) + " --autosave-seconds 0.5 --stay";
-    runCommand(uiCommand(args) + " & echo started", dir.path().string());
+    BackgroundUi ui(args, dir.path());
     fs::path recovery;
     const auto reported = [&] {  // a whole line: the report is written once its frame is drawn
         std::ifstream in(dir / "first.jsonl");
@@ -290,9 +290,7 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     }
     ASSERT_FALSE(recovery.empty()) << "no autosave within a minute";
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    // The program only (its command line starts with it): xvfb-run then stops its X server.
-    runCommand("pkill -KILL -f -- " + shellQuoted("^" SCULPT_UI_EXECUTABLE " .*" + state.string()),
-               dir.path().string());
+    ASSERT_TRUE(ui.killProgram()) << "the sculpt-ui this test started is not running";
     const auto firstReports = readReports(dir / "first.jsonl");
     ASSERT_EQ(firstReports.size(), 1u);
     ASSERT_TRUE(fs::exists(recovery)) << "a killed program leaves its autosave";
@@ -331,6 +329,23 @@ TEST(SculptUi, NewAndQuitWithUnsavedChangesAskFirst)
     EXPECT_TRUE(reports[4]["asking_unsaved"].get<bool>());
     EXPECT_FALSE(reports[5]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
     EXPECT_TRUE(reports[5]["modified"].get<bool>());
+}
+
+TEST(SculptUi, ClosingTheWindowMidStrokeKeepsTheStrokeAndAsksToSaveIt)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r).move(560, 380).press();
+    for (int i = 1; i <= 10; ++i) events.move(560 + 14 * i, 380);
+    events.quit().report(r);  // the window closed with the button still held
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 2u);
+    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports[1]["undo"], 1) << "the stroke ends as one undo step";
+    EXPECT_TRUE(reports[1]["asking_unsaved"].get<bool>()) << "closing was ignored mid-stroke";
 }
 
 TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothing)

@@ -1,5 +1,7 @@
 #include "tests/ui/ui_driver.h"
 
+#include <sys/types.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <vtkImageData.h>
@@ -7,6 +9,8 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <signal.h>
+#include <sstream>
 
 namespace sculpt::test {
 
@@ -79,6 +83,45 @@ std::string uiCommand(const std::string& args)
     static int runs = 0;
     const int start = 100 + int(getpid() % 400) * 8 + (runs++ % 8);
     return "xvfb-run -a -n " + std::to_string(start) + " -s '-screen 0 1280x800x24' '" SCULPT_UI_EXECUTABLE "' " + args;
+}
+
+BackgroundUi::BackgroundUi(const std::string& args, const std::filesystem::path& workDir)
+{
+    const std::string command = "cd '" + workDir.string() + "' && exec " + uiCommand(args) + " >/dev/null 2>&1";
+    const pid_t child = fork();
+    if (child == 0) {
+        setpgid(0, 0);
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    setpgid(child, child);  // as the child does: whichever runs first
+    mGroup = int(child);
+}
+
+BackgroundUi::~BackgroundUi()
+{
+    if (mGroup <= 0) return;
+    kill(-mGroup, SIGKILL);
+    waitpid(mGroup, nullptr, 0);
+}
+
+bool BackgroundUi::killProgram()
+{
+    // The group's members from /proc: "PID (COMM) STATE PPID PGRP ...".
+    for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+        std::ifstream stat(entry.path() / "stat");
+        std::string line;
+        if (!std::getline(stat, line)) continue;
+        const std::size_t close = line.rfind(')');
+        if (close == std::string::npos || line.find("(sculpt-ui)") == std::string::npos) continue;
+        std::istringstream rest(line.substr(close + 2));
+        char state = 0;
+        int parent = 0, group = 0;
+        rest >> state >> parent >> group;
+        if (group != mGroup) continue;
+        return kill(pid_t(std::stoi(entry.path().filename().string())), SIGKILL) == 0;
+    }
+    return false;
 }
 
 CommandResult runUi(const std::string& args, const std::string& workDir)

@@ -48,6 +48,24 @@ CommandResult runUi(const std::string& args, const std::string& workDir);
 /// The command line of that, for running it in the background.
 std::string uiCommand(const std::string& args);
 
+/// sculpt-ui started in the background (uiCommand) in a process group of its own: the test keeps
+/// that group's id, and the destructor kills what is left of it, so an ASSERT that returns early
+/// leaves no window or X server running. Nothing is ever looked up by name.
+class BackgroundUi {
+public:
+    BackgroundUi(const std::string& args, const std::filesystem::path& workDir);
+    ~BackgroundUi();
+    BackgroundUi(const BackgroundUi&) = delete;
+    BackgroundUi& operator=(const BackgroundUi&) = delete;
+
+    /// Kills the program alone with SIGKILL, as a crash would end it (xvfb-run then stops its X
+    /// server). @return false if the group holds no sculpt-ui.
+    bool killProgram();
+
+private:
+    int mGroup = -1;  // the process group's id: the pid of the shell started first in it
+};
+
 /// The JSON lines of a report file.
 std::vector<nlohmann::json> readReports(const std::filesystem::path& path);
 

@@ -32,7 +32,10 @@ void SculptApp::handle(const InputEvent& event)
     mLastEventArrival = arrival(event);
     switch (event.type) {
     case EventType::Resize: mViewport.resize(event.width, event.height); break;
-    case EventType::Quit: execute(Command::Quit); break;
+    case EventType::Quit:
+        if (mDrag == Drag::Stroke) endStroke();  // closing the window ends the stroke, kept, then asks
+        execute(Command::Quit);
+        break;
     case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
     case EventType::Report: mPendingReports.emplace_back(event.text); break;
     case EventType::Key: routeKey(event); break;
@@ -111,12 +114,16 @@ void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
 
 void SculptApp::releaseButton(const InputEvent& event)
 {
-    if (mDrag == Drag::Stroke && event.button == kLeftButton) {
-        mStroke.end(*mDocument);
-        mPicker.thaw();
-        mHoverValid = false;
-    }
+    if (mDrag == Drag::Stroke && event.button == kLeftButton) endStroke();
     if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
+}
+
+void SculptApp::endStroke()
+{
+    mStroke.end(*mDocument);
+    mPicker.thaw();
+    mDrag = Drag::None;
+    mHoverValid = false;
 }
 
 void SculptApp::dragTo(const InputEvent& event, double dx, double dy)

@@ -181,6 +181,8 @@ private:
     void beginStroke(const InputEvent& event, const SurfaceHit& hit);
     void dragTo(const InputEvent& event, double dx, double dy);
     void extendStroke(const InputEvent& event);
+    /// The stroke ends as one undo step.
+    void endStroke();
     void trackModifiers(const InputEvent& event);
     void updateCursor();
     void updateTitle();

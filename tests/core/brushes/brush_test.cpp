@@ -1,4 +1,4 @@
-// Brushes (core/brush.h): each tool's effect against what it promises, on analytic shapes.
+// Brushes (core/brushes/brush.h): each tool's effect against what it promises, on analytic shapes.
 
 #include "core/base/errors.h"
 #include "core/brushes/brush.h"
@@ -381,8 +381,15 @@ TEST(Brush, TwoHundredRandomAddAndCarveStampsWithHardFalloffsKeepOneShell)
 
 TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
 {
-    for (const BrushTool tool : {BrushTool::Add, BrushTool::Carve, BrushTool::Inflate, BrushTool::Smooth,
-                                 BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch, BrushTool::Follow}) {
+    Primitive blob;
+    blob.skeleton.type = SkeletonType::Point;
+    blob.kernel.type = KernelType::SoftObject;
+    blob.kernel.radius = 6.0;
+    const auto stamp =
+        std::make_shared<PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
+    for (const BrushTool tool :
+         {BrushTool::Add, BrushTool::Carve, BrushTool::Inflate, BrushTool::Deflate, BrushTool::Smooth,
+          BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch, BrushTool::Follow, BrushTool::Primitive}) {
         FieldImage field = makeSphere(12.0, 0.5);
         const FieldImage original(field.grid().deepCopy());
         LeafJournal journal;
@@ -391,9 +398,12 @@ TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
             const Vec3d previous(12.0 * std::cos(0.3 * (i - 1)), 12.0 * std::sin(0.3 * (i - 1)), 0.0);
             BrushSettings settings = brush(tool, 4.0, 0.7);
             settings.target = std::make_shared<const FieldImage>(makeBox(10.0, 0.5));
+            settings.primitive = stamp;
             applyStamp(field, settings, stampAt(at, i ? previous : at), &journal);
         }
         const FieldImage edited(field.grid().deepCopy());
+        // A brush that did nothing would pass the rest: the stroke must have changed the grid.
+        ASSERT_NE(gridChecksum(edited.grid()), gridChecksum(original.grid())) << brushToolName(tool);
         journal.swap(field);
         EXPECT_EQ(gridChecksum(field.grid()), gridChecksum(original.grid())) << brushToolName(tool);
         journal.swap(field);

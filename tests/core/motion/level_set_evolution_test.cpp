@@ -150,5 +150,19 @@ TEST(LevelSetEvolution, RejectsBadCoefficients)
     EXPECT_THROW(offset(field, std::nan("")), InputError);
 }
 
+TEST(LevelSetEvolution, SettlingTheVolumeMarksEveryLeafItMovedDirty)
+{
+    FieldImage field = makeSphere(10.0, 0.5);
+    const double target = 4.0 / 3.0 * kPi * 11.0 * 11.0 * 11.0;  // a radius 1 larger: every voxel moves
+    MotionTerms terms;
+    terms.volume = VolumeTerm{target, 1.0};
+    LevelSetEvolution evolution(field, terms);
+    field.takeDirtyRegion();
+    evolution.settleVolume();
+    EXPECT_GT(volumeRadius(field), 10.5);
+    // The mesher re-meshes only what is reported: a uniform offset must report every leaf.
+    EXPECT_EQ(field.takeDirtyRegion().leafCount(), field.allLeaves().leafCount());
+}
+
 }  // namespace
 }  // namespace sculpt
