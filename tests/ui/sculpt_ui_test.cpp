@@ -348,6 +348,34 @@ TEST(SculptUi, ClosingTheWindowMidStrokeKeepsTheStrokeAndAsksToSaveIt)
     EXPECT_TRUE(reports[1]["asking_unsaved"].get<bool>()) << "closing was ignored mid-stroke";
 }
 
+TEST(SculptUi, AnInternalErrorSavesTheWorkSaysSoAndTheWindowGoesOn)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.drag(560, 380, 700, 380).fault("bad_alloc").report(r).key("Enter");
+    events.move(560, 420).press();
+    for (int i = 1; i <= 5; ++i) events.move(560 + 20 * i, 420);
+    events.fault("openvdb").report(r).release().key("Enter");  // mid-stroke
+    events.drag(560, 450, 700, 450).report(r);
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto reports = readReports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    const std::string first = reports[0]["error"];
+    EXPECT_EQ(first.rfind("internal error: out of memory", 0), 0u) << first;
+    EXPECT_NE(first.find("your work is saved in " + (dir / "state" / "recovery").string()), std::string::npos) << first;
+    EXPECT_EQ(reports[0]["undo"], 1);
+    const std::string second = reports[1]["error"];
+    EXPECT_EQ(second.rfind("internal error: ", 0), 0u) << second;
+    EXPECT_NE(second.find("a fault event"), std::string::npos) << second;
+    EXPECT_EQ(reports[1]["undo"], 2) << "the stroke the error cut short is kept";
+    EXPECT_EQ(reports[2]["error"], "");
+    EXPECT_EQ(reports[2]["undo"], 3) << "the window sculpts on";
+    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);
+    EXPECT_NE(run.err.find("sculpt-ui: internal error"), std::string::npos) << run.err;
+}
+
 TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothing)
 {
     TempDir dir;

@@ -65,6 +65,8 @@ UiEvents& UiEvents::quit() { return add({{"type", "quit"}}); }
 
 UiEvents& UiEvents::untilJobEnds() { return add({{"type", "wait"}}); }
 
+UiEvents& UiEvents::fault(const std::string& kind) { return add({{"type", "fault"}, {"kind", kind}}); }
+
 UiEvents& UiEvents::wait(double seconds)
 {
     mTime += seconds;

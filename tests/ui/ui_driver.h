@@ -35,6 +35,8 @@ public:
     /// The replay holds until the running job (a filter, a morph) has ended, or a morph's
     /// frames have played to the end.
     UiEvents& untilJobEnds();
+    /// An internal error of `kind` (bad_alloc, openvdb, runtime) raised on the UI thread.
+    UiEvents& fault(const std::string& kind);
     void write(const std::filesystem::path& path) const;
 
 private:

@@ -7,9 +7,12 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <openvdb/Exceptions.h>
 
 #include <algorithm>
 #include <cmath>
+#include <new>
+#include <stdexcept>
 
 namespace sculpt::ui {
 
@@ -21,8 +24,8 @@ constexpr double kWheelZoomStep = 1.15;
 
 void SculptApp::handle(const InputEvent& event)
 {
-    const bool scripted =
-        event.type == EventType::Screenshot || event.type == EventType::Report || event.type == EventType::WaitForJob;
+    const bool scripted = event.type == EventType::Screenshot || event.type == EventType::Report ||
+                          event.type == EventType::WaitForJob || event.type == EventType::Fault;
     if (!mOptions.record.empty() && !scripted) {
         mRecording.push_back(event);
     }
@@ -43,8 +46,16 @@ void SculptApp::handle(const InputEvent& event)
     case EventType::WaitForJob:
         if (holdsReplay()) mWaitingSince = mWindow.time();
         break;
+    case EventType::Fault: raiseFault(event.text); break;
     default: routeMouse(event); break;
     }
+}
+
+void SculptApp::raiseFault(const std::string& kind)
+{
+    if (kind == "bad_alloc") throw std::bad_alloc();
+    if (kind == "openvdb") throw openvdb::RuntimeError("a fault event");
+    throw std::runtime_error("a fault event");
 }
 
 void SculptApp::routeMouse(const InputEvent& event)

@@ -92,11 +92,11 @@ int main(int argc, char** argv)
     } catch (const InputError& e) {
         std::cerr << "sculpt-ui: " << e.what() << "\n";
         return 2;
-    } catch (const std::runtime_error& e) {
+    } catch (const std::exception& e) {  // no window (no display), or an internal error
         const char* display = std::getenv("DISPLAY");
         std::cerr << "sculpt-ui: " << e.what()
                   << ((display && *display) ? "" : " (DISPLAY is not set: run it under xvfb-run -a, see the README)")
                   << "\n";
-        return 2;
+        return 1;
     }
 }

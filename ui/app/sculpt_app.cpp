@@ -18,6 +18,7 @@
 #include <cmath>
 #include <fstream>
 #include <iostream>
+#include <new>
 
 namespace sculpt::ui {
 
@@ -312,6 +313,49 @@ void SculptApp::autosaveNow()
     if (!error.empty()) mDialogs.notice = error;
 }
 
+void SculptApp::loopOnce(bool& replayDone)
+{
+    if (mWaitingSince >= 0.0 && !holdsReplay()) {  // the replay resumes, later events as far apart as recorded
+        mPlayStart += mWindow.time() - mWaitingSince;
+        mWaitingSince = -1.0;
+    }
+    const bool waiting = mWaitingSince >= 0.0;  // for a job or playback (wait event): frames go on
+    const bool replaying = mPlayer && (!mPlayer->finished() || waiting);
+    if (replaying) {
+        for (const InputEvent& event :
+             waiting ? std::vector<InputEvent>{} : mPlayer->take(mWindow.time() - mPlayStart)) {
+            if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
+            handle(event);
+        }
+        mWindow.pollEvents(0.0);
+    } else {
+        if (mPlayer && !replayDone) {
+            replayDone = true;
+            finishReplay();
+            if (mQuit) return;
+        }
+        // Idle (no input for a while): sleep until an event, waking to autosave.
+        mWindow.pollEvents(idle() ? 0.25 : 0.0);
+    }
+    autosave();
+    if (replaying || !idle()) frame();
+}
+
+void SculptApp::recoverFromInternalError(const std::string& what)
+{
+    abandonImGuiFrame();
+    std::string saved;
+    try {  // what failed may have been a stroke: end it, so that it is kept and saved
+        if (mDrag == Drag::Stroke) endStroke();
+        mDrag = Drag::None;
+        std::string error;
+        if (mAutosave.save(*mDocument, error)) saved = mAutosave.recoveryFile(mDocument->path()).string();
+    } catch (const std::exception&) {  // out of memory, say: the message below still goes out
+    }
+    showError("internal error: " + what + (saved.empty() ? std::string() : "; your work is saved in " + saved + ",") +
+              " save it under a new name before going on; if the view misbehaves, restart Sculpt and recover it");
+}
+
 int SculptApp::run()
 {
     frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here
@@ -323,30 +367,13 @@ int SculptApp::run()
     mPlayStart = mWindow.time();
     bool replayDone = false;
     while (!mQuit) {
-        if (mWaitingSince >= 0.0 && !holdsReplay()) {  // the replay resumes, later events as far apart as recorded
-            mPlayStart += mWindow.time() - mWaitingSince;
-            mWaitingSince = -1.0;
+        try {
+            loopOnce(replayDone);
+        } catch (const std::bad_alloc&) {
+            recoverFromInternalError("out of memory");
+        } catch (const std::exception& e) {
+            recoverFromInternalError(e.what());
         }
-        const bool waiting = mWaitingSince >= 0.0;  // for a job or playback (wait event): frames go on
-        const bool replaying = mPlayer && (!mPlayer->finished() || waiting);
-        if (replaying) {
-            for (const InputEvent& event :
-                 waiting ? std::vector<InputEvent>{} : mPlayer->take(mWindow.time() - mPlayStart)) {
-                if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
-                handle(event);
-            }
-            mWindow.pollEvents(0.0);
-        } else {
-            if (mPlayer && !replayDone) {
-                replayDone = true;
-                finishReplay();
-                if (mQuit) break;
-            }
-            // Idle (no input for a while): sleep until an event, waking to autosave.
-            mWindow.pollEvents(idle() ? 0.25 : 0.0);
-        }
-        autosave();
-        if (replaying || !idle()) frame();
     }
     if (!mOptions.record.empty()) writeInputEvents(mRecording, mOptions.record.string());
     mAutosave.discard(mDocument->path());  // a clean quit: nothing to recover

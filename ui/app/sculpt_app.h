@@ -152,6 +152,13 @@ public:
 
 private:
     void frame();
+    /// One pass of the loop: input (live or replayed), autosave, a frame.
+    void loopOnce(bool& replayDone);
+    /// An exception no handler expected (out of memory, a bug, an OpenVDB error) reached the
+    /// loop: the work is saved as a recovery copy, the error shown, and the window goes on.
+    void recoverFromInternalError(const std::string& what);
+    /// A fault event's internal error (tests of that recovery).
+    [[noreturn]] static void raiseFault(const std::string& kind);
     bool idle() const;
     void autosave();
     /// Writes the recovery copy now, before a file is read: a reader that takes the process down

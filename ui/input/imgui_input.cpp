@@ -2,6 +2,7 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the frame-scope flag and the error recovery, for abandonImGuiFrame
 
 namespace sculpt::ui {
 
@@ -65,6 +66,14 @@ void beginImGuiFrame(int width, int height, double deltaSeconds)
     io.DisplaySize = ImVec2(float(width), float(height));
     io.DisplayFramebufferScale = ImVec2(1.f, 1.f);
     io.DeltaTime = float(deltaSeconds > 1e-4 ? deltaSeconds : 1e-4);
+}
+
+void abandonImGuiFrame()
+{
+    const ImGuiContext* context = ImGui::GetCurrentContext();
+    if (!context || !context->WithinFrameScope) return;
+    ImGui::ErrorCheckEndFrameRecover(nullptr);
+    ImGui::EndFrame();
 }
 
 }  // namespace sculpt::ui

@@ -18,5 +18,7 @@ void setUpImGuiKeys();
 void feedImGui(const InputEvent& event, int heldMods);
 /// Display size and time step for the coming frame.
 void beginImGuiFrame(int width, int height, double deltaSeconds);
+/// Ends a frame an exception cut short (windows left open included), so the next starts clean.
+void abandonImGuiFrame();
 
 }  // namespace sculpt::ui

@@ -6,6 +6,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <utility>
@@ -80,6 +81,7 @@ const std::vector<std::pair<EventType, const char*>> kTypeNames = {
     {EventType::Report, "report"},
     {EventType::Quit, "quit"},
     {EventType::WaitForJob, "wait"},
+    {EventType::Fault, "fault"},
 };
 const std::vector<std::pair<int, const char*>> kModNames = {
     {kShift, "shift"}, {kControl, "ctrl"}, {kAlt, "alt"}, {kSuper, "super"}};
@@ -178,6 +180,11 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         e.text = textOr(j, "path", "", where);
         if (e.text.empty()) throw InputError(where + ": field 'path' is missing");
         break;
+    case EventType::Fault:
+        e.text = textOr(j, "kind", "", where);
+        if (std::find(std::begin(kFaultKinds), std::end(kFaultKinds), e.text) == std::end(kFaultKinds))
+            throw InputError(where + ": field 'kind' is \"" + e.text + "\" (expected bad_alloc, openvdb or runtime)");
+        break;
     case EventType::Quit:
     case EventType::WaitForJob: break;
     }
@@ -211,6 +218,7 @@ json eventJson(const InputEvent& e)
     case EventType::Resize: j["width"] = e.width, j["height"] = e.height; break;
     case EventType::Screenshot:
     case EventType::Report: j["path"] = e.text; break;
+    case EventType::Fault: j["kind"] = e.text; break;
     case EventType::Quit:
     case EventType::WaitForJob: break;
     }

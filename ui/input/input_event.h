@@ -23,7 +23,11 @@ enum class EventType {
     Report,       ///< path: the state (checksum, pick, uploads, ...) appended as a JSON line
     Quit,         ///< as closing the window
     WaitForJob,   ///< the replay holds until the running job has ended (or a morph's playback)
+    Fault,        ///< text: an internal error to raise on the UI thread (tests of the recovery)
 };
+
+/// The internal errors a fault event may raise: out of memory, an OpenVDB error, any other.
+inline constexpr const char* kFaultKinds[] = {"bad_alloc", "openvdb", "runtime"};
 
 /// GLFW's modifier bits (GLFW_MOD_SHIFT, ...), repeated so this header needs no GLFW.
 enum Modifier : int { kShift = 0x1, kControl = 0x2, kAlt = 0x4, kSuper = 0x8 };
