@@ -9,5 +9,9 @@ cmake --build build-sanitize -j"$(nproc)"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp"
+# The two replays of the sculpted face take about a minute in Release and over 15 under the
+# sanitizers; keep-volume smoothing, their subject, is covered here by LevelSetEvolution's
+# KeepVolumeSmoothing shapes and Brush.SmoothWithKeepVolumeHoldsTheVolume.
+heavy='KeepVolumeSmoothingHoldsTheFacesMeshVolume|KeepVolumeSmoothingOfTheSculptedFaceHoldsItsMeshVolume'
 cd build-sanitize
-ctest --output-on-failure -j"$(nproc)" --timeout 900 "$@"
+ctest --output-on-failure -j"$(nproc)" --timeout 900 -E "$heavy" "$@"
