@@ -180,6 +180,21 @@ struct SharedPage {
     ~SharedPage() { munmap(bytes, kSubjectPageBytes); }
 };
 
+bool gIsolation = true;
+
+/// What runIsolated returns, from `work` run here: its exceptions propagate as they are.
+IsolatedBytes runInProcess(const std::function<ChildReply()>& work)
+{
+    const ChildReply made = work();
+    IsolatedBytes reply;
+    reply.header = made.header;
+    reply.body.reset(static_cast<char*>(std::malloc(std::max<std::size_t>(made.bodyBytes, 1))));
+    if (!reply.body) throw std::bad_alloc();
+    if (made.bodyBytes > 0) std::memcpy(reply.body.get(), made.body, made.bodyBytes);
+    reply.bodyBytes = made.bodyBytes;
+    return reply;
+}
+
 }  // namespace
 
 void noteIsolatedSubject(const std::string& subject)
@@ -190,8 +205,11 @@ void noteIsolatedSubject(const std::string& subject)
     gSubjectPage[n] = '\0';
 }
 
+void setIsolation(bool enabled) { gIsolation = enabled; }
+
 IsolatedBytes runIsolated(const IsolationLimits& limits, const std::function<ChildReply()>& work)
 {
+    if (!gIsolation) return runInProcess(work);
     SharedPage page;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) throw std::runtime_error("cannot open a pipe to a child process");

@@ -45,6 +45,11 @@ struct ChildReply {
     std::shared_ptr<const void> owner = nullptr;  ///< keeps the body alive until it is sent
 };
 
+/// Whether runIsolated forks (the default) or runs `work` in this process. A fuzzer turns it
+/// off: it must see a decoder's crash in its own process, where a child would turn it into a
+/// refusal (and its fork under libFuzzer's threads can deadlock).
+void setIsolation(bool enabled);
+
 /// Runs `work` in a child process and returns its reply. An InputError the child throws is
 /// thrown here with its message; a crash, signal or limit becomes an InputError naming
 /// `limits.subject` (or the file the child last named with noteIsolatedSubject) and the reader.

@@ -47,6 +47,23 @@ TEST(IsolatedCall, TheChildsHeaderAndBodyArriveWhole)
     EXPECT_EQ(std::memcmp(bytes.body.get(), samples->data(), bytes.bodyBytes), 0);
 }
 
+TEST(IsolatedCall, WithIsolationOffTheWorkRunsHereAndItsReplyArrivesTheSame)
+{
+    setIsolation(false);  // as the fuzz targets run
+    int ranHere = 0;      // a child's write would never reach this process
+    const std::string body = "samples";
+    const IsolatedBytes bytes = runIsolated(limits(), [&] {
+        ++ranHere;
+        return ChildReply{"header", body.data(), body.size()};
+    });
+    EXPECT_THROW(runIsolated(limits(), []() -> ChildReply { throw InputError("scan.dcm: bad"); }), InputError);
+    setIsolation(true);
+    EXPECT_EQ(ranHere, 1);
+    EXPECT_EQ(bytes.header, "header");
+    ASSERT_EQ(bytes.bodyBytes, body.size());
+    EXPECT_EQ(std::string(bytes.body.get(), bytes.bodyBytes), body);
+}
+
 TEST(IsolatedCall, AnInputErrorInTheChildIsThrownWithItsMessage)
 {
     EXPECT_EQ(refusal([]() -> ChildReply { throw InputError("scan.dcm: no image orientation"); }),
