@@ -8,6 +8,7 @@
 /// The voxel size is uniform. Every edit reports the leaves it touched (markDirty), which the
 /// mesher and the undo journal consume.
 
+#include "core/base/unique_id.h"
 #include "core/field/dirty_region.h"
 
 #include <openvdb/openvdb.h>
@@ -60,6 +61,9 @@ public:
     openvdb::FloatGrid::ConstPtr gridPtr() const { return mGrid; }
     /// The grid's shared pointer with write access, to hand the whole grid on (an undo record).
     openvdb::FloatGrid::Ptr mutableGridPtr() { return mGrid; }
+    /// Never the same for two field images of this process, a copy's or an assigned one's
+    /// included: with a version, what a cache of it (a picker) is keyed on.
+    std::uint64_t id() const { return mId.value(); }
 
     /// Adds leaves to the region touched since the last takeDirtyRegion().
     void markDirty(const DirtyRegion& region) { mDirty.merge(region); }
@@ -77,6 +81,7 @@ public:
     bool enclosesSomething() const;
 
 private:
+    UniqueId mId;
     openvdb::FloatGrid::Ptr mGrid;
     std::string mUnits;
     double mVoxelSize = 0.0;

@@ -11,6 +11,7 @@
 /// closed mesh by their exact global edge keys (Ferley et al., "Practical volumetric sculpting").
 
 #include "core/base/progress.h"
+#include "core/base/unique_id.h"
 #include "core/field/dirty_region.h"
 #include "core/field/field_image.h"
 #include "core/mesh/block_mesh.h"
@@ -36,6 +37,9 @@ public:
 
     /// Incremented by every rebuild() and update().
     std::uint64_t version() const { return mVersion; }
+    /// Never the same for two meshers of this process (an address is: a freed mesher's is reused),
+    /// so (id, version) names what a viewer shows.
+    std::uint64_t id() const { return mId.value(); }
 
     /// Blocks changed after `version`: re-meshed ones (present) and dropped ones (gone).
     struct Changes {
@@ -58,6 +62,7 @@ private:
     void remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins, const Progress& progress = {});
 
     int mBlockVoxels;
+    UniqueId mId;
     std::uint64_t mVersion = 0;
     std::map<openvdb::Coord, BlockMesh> mBlocks;
     std::map<openvdb::Coord, std::uint64_t> mRemoved;  // origin -> version when dropped

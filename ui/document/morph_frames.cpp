@@ -10,10 +10,8 @@ void MorphFrames::show(int index)
 {
     index = std::clamp(index, 0, count() - 1);
     if (index == mShown && mMesher) return;
-    // Made before the old one is freed: a new address tells the display to upload it all.
-    auto next = std::make_unique<IncrementalMesher>();
-    next->rebuild(mRun.frames[std::size_t(index)]);
-    mMesher = std::move(next);
+    mMesher = std::make_unique<IncrementalMesher>();  // a new id: the display uploads it all
+    mMesher->rebuild(mRun.frames[std::size_t(index)]);
     mShown = index;
 }
 

@@ -16,7 +16,7 @@ void SurfacePicker::reset()
 {
     mIntersector.reset();
     mFrozen.reset();
-    mField = nullptr;
+    mFieldId = 0;
 }
 
 void SurfacePicker::freeze(const FieldImage& field)
@@ -34,9 +34,9 @@ void SurfacePicker::thaw()
 std::optional<SurfaceHit> SurfacePicker::pick(const FieldImage& field, std::uint64_t fieldVersion, const Ray& ray)
 {
     if (field.grid().tree().activeVoxelCount() == 0) return std::nullopt;
-    if (!mFrozen && (!mIntersector || mField != &field || mVersion != fieldVersion)) {
+    if (!mFrozen && (!mIntersector || mFieldId != field.id() || mVersion != fieldVersion)) {
         mIntersector = std::make_unique<Intersector>(field.grid());
-        mField = &field;
+        mFieldId = field.id();
         mVersion = fieldVersion;
     }
     const openvdb::math::Ray<double> r(openvdb::Vec3d(ray.origin.x, ray.origin.y, ray.origin.z),

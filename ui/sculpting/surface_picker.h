@@ -39,7 +39,7 @@ private:
     struct Intersector;
     std::unique_ptr<Intersector> mIntersector;
     openvdb::FloatGrid::Ptr mFrozen;
-    const FieldImage* mField = nullptr;
+    std::uint64_t mFieldId = 0;  // FieldImage::id of what the intersector was made from
     std::uint64_t mVersion = 0;
 };
 

@@ -117,13 +117,13 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
 {
     mLastUploads = mLastRemovals = mLastBytes = 0;
     IncrementalMesher::Changes changes;
-    if (&mesher != mSource) {
+    if (mesher.id() != mSourceId) {
         while (!mBlocks.empty()) remove(mBlocks.begin()->first);
         for (auto& [origin, chunk] : mChunks) mRenderer->RemoveActor(chunk.actor);
         mChunks.clear();
         mCoarseTriangles = 0;
         for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
-        mSource = &mesher;
+        mSourceId = mesher.id();
         mBlockVoxels = mesher.blockVoxels();
     } else {
         if (mesher.version() == mVersion) return;

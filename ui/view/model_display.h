@@ -61,7 +61,7 @@ private:
     std::map<openvdb::Coord, Block> mBlocks;
     std::map<openvdb::Coord, Chunk> mChunks;
     int mBlockVoxels = IncrementalMesher::kDefaultBlockVoxels;
-    const IncrementalMesher* mSource = nullptr;
+    std::uint64_t mSourceId = 0;  // IncrementalMesher::id of the mesher shown
     std::uint64_t mVersion = 0;
     bool mCoarse = false;
     bool mHidden = false;

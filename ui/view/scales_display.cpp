@@ -76,13 +76,13 @@ void ScalesDisplay::setShown(bool shown)
 
 void ScalesDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
 {
-    if (!mShown || (&mesher == mSource && mesher.version() == mVersion)) return;
+    if (!mShown || (mesher.id() == mSourceId && mesher.version() == mVersion)) return;
     const double cell = kCellVoxels * voxelSize;
     vtkSmartPointer<vtkPolyData> samples = samplesOf(mesher, cell);
     mCount = std::size_t(samples->GetNumberOfPoints());
     mMapper->SetInputData(samples);
     mMapper->SetScaleFactor(0.6 * cell);  // hexagons of 0.6 cell: overlapping scales with gaps
-    mSource = &mesher;
+    mSourceId = mesher.id();
     mVersion = mesher.version();
 }
 

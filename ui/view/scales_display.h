@@ -35,7 +35,7 @@ private:
     vtkRenderer* mRenderer;
     vtkSmartPointer<vtkActor> mActor;
     vtkSmartPointer<vtkGlyph3DMapper> mMapper;
-    const IncrementalMesher* mSource = nullptr;
+    std::uint64_t mSourceId = 0;  // IncrementalMesher::id of the mesher shown
     std::uint64_t mVersion = ~std::uint64_t(0);
     bool mShown = false;
     std::size_t mCount = 0;
