@@ -287,6 +287,7 @@ TEST_P(SculptCliRegression, ExitsTwoWithOneLineInBoundedTimeAndMemoryAndWritesNo
 INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                          ::testing::Values(Regression{"nii_datatype6_segv.nii", "import FILE --iso 100"},
                                            Regression{"nrrd_no_sizes_segv.nrrd", "import FILE --iso 100"},
+                                           Regression{"nrrd_one_size_no_encoding_segv.nrrd", "import FILE --iso 100"},
                                            Regression{"nrrd_nul_in_header_hang.nrrd", "import FILE --iso 100"},
                                            Regression{"nrrd_trunc50_accepted.nrrd", "import FILE --iso 100"},
                                            Regression{"mha_trunc50_accepted.mha", "import FILE --iso 100"},
@@ -296,6 +297,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"strokes_far_sample_hang.json", "apply ball.vdb FILE"},
                                            Regression{"vdb_8GB_peak.vdb", "offset FILE --distance 1"},
                                            Regression{"vdb_topology_leak.vdb", "offset FILE --distance 1"},
+                                           Regression{"vdb_blosc_huge_chunk.vdb", "offset FILE --distance 1"},
                                            Regression{"dicom_gdcm_abort", "import FILE --iso 100"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
 
