@@ -26,6 +26,7 @@ using LeafList = std::vector<std::unique_ptr<Leaf>>;
 constexpr int kBlock = 8;                            // scan samples per edge of a range block
 const openvdb::Coord kTile(32, 32, 16);              // output voxels per tile: 4 x 4 x 2 leaves
 constexpr int kHalo = 5;                             // tile margin: the band (3), marching slack (1), gradient (1)
+constexpr double kMaxDefaultAnisotropy = 16.0;       // coarsest spacing / default voxel size, at most
 constexpr double kMaxBoxVoxels = double(1LL << 37);  // about 5000^3: beyond, ask for a larger voxel size
 
 /// The bounds of an index box's corners mapped by an affine transform (all it reaches).
@@ -308,11 +309,16 @@ std::vector<openvdb::Coord> tileLayer(const openvdb::CoordBBox& box, int z)
 
 double nativeVoxelSize(const ScanVolume& scan)
 {
-    double h = std::numeric_limits<double>::infinity();
+    double finest = std::numeric_limits<double>::infinity(), coarsest = 0.0;
     for (int a = 0; a < 3; ++a) {
-        if (scan.dims()[a] > 1) h = std::min(h, scan.spacing(a));
+        if (scan.dims()[a] < 2) continue;
+        finest = std::min(finest, scan.spacing(a));
+        coarsest = std::max(coarsest, scan.spacing(a));
     }
-    return std::isfinite(h) ? h : 1.0;
+    if (!std::isfinite(finest)) return 1.0;
+    // Finer than that only resamples the coarse axes many times over what they hold, and the
+    // work grows as the cube: a slab spacing of 1/256 would make a 16^3 scan 4096 x 16 x 4096.
+    return std::max(finest, coarsest / kMaxDefaultAnisotropy);
 }
 
 FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double h, const Progress& progress)

@@ -24,7 +24,9 @@ namespace sculpt {
 ///         or the output would not fit in memory; Cancelled if progress says stop.
 FieldImage scanToLevelSet(const ScanVolume& scan, double iso, double voxelSizeWorld, const Progress& progress = {});
 
-/// The smallest distance between neighbouring samples: the scan's native voxel size.
+/// The scan's native voxel size: the smallest distance between neighbouring samples, but no
+/// finer than a sixteenth of the largest (a slab-thin axis would multiply the work by its ratio
+/// cubed for nothing the other axes hold).
 double nativeVoxelSize(const ScanVolume& scan);
 
 }  // namespace sculpt

@@ -113,6 +113,18 @@ std::pair<double, double> distanceError(const openvdb::FloatGrid& grid, const Sy
     return {worst, sum / double(grid.activeVoxelCount())};
 }
 
+TEST(ScanImport, TheDefaultVoxelSizeStaysWithinSixteenTimesTheCoarsestSpacing)
+{
+    // Found by the NIfTI fuzz target: the seed ball with the sform's y spacing 1/256. At its
+    // smallest spacing the conversion ran past a minute (4096 x 16 x 4096 voxels).
+    const ScanVolume scan = readScan(SCULPT_TESTS_DIR "/core/scan/slab_spacing.nii");
+    ASSERT_NEAR(scan.spacing(1), 1.0 / 256.0, 1e-9);
+    EXPECT_DOUBLE_EQ(nativeVoxelSize(scan), 1.0 / 16.0);
+    // The slab is one such voxel thick: no crossing to sample, said at once instead of after minutes.
+    const auto [lo, hi] = scan.range();
+    EXPECT_THROW(scanToLevelSet(scan, 0.5 * (lo + hi), nativeVoxelSize(scan)), InputError);
+}
+
 TEST(ScanImport, BandHoldsTheDistanceToTheSurfaceAcrossTiles)
 {
     // The ball spans several of the converter's tiles (32 x 32 x 16 voxels) in every axis.
