@@ -22,6 +22,26 @@ constexpr int kCtrlShift = kControl | kShift;
 
 void toggle(bool& flag) { flag = !flag; }
 
+// Rows that differ only in their data: a tool to pick, a view to look along, an orbit step.
+template <BrushTool tool>
+CommandRow toolRow(Command command, const char* label, const char* help, int key)
+{
+    return {command, label, help, {{key}}, nullptr, [](SculptApp& a) { a.brush().tool = tool; }};
+}
+
+template <AxisView view>
+CommandRow viewRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
+{
+    return {command, label, help, std::move(chords), nullptr, [](SculptApp& a) { a.camera().axisView(view); }};
+}
+
+template <int yawDegrees, int pitchDegrees>
+CommandRow orbitRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
+{
+    void (*orbit)(SculptApp&) = [](SculptApp& a) { a.camera().orbitDegrees(yawDegrees, pitchDegrees); };
+    return {command, label, help, std::move(chords), nullptr, orbit};
+}
+
 }  // namespace
 
 const std::vector<CommandRow>& SculptApp::commands()
@@ -49,55 +69,28 @@ const std::vector<CommandRow>& SculptApp::commands()
         return a.mMode ? std::string()
                        : std::string("nothing to apply: Enter applies an import, primitives or a frame");
     };
+    static constexpr auto openFilter = +[](App& a, ModelFilter::Kind kind, P prompt) {
+        a.mDialogs.filter.kind = kind;
+        a.openPrompt(prompt, a.mDialogs.path);
+    };
+    static constexpr auto step = +[](App& a, int direction) {
+        if (a.mMode) a.mMode->step(direction);
+    };
     static const std::vector<CommandRow> table = {
-        {Command::ToolAdd,
-         "Add",
-         "Builds clay up (Ctrl: carve)",
-         {{GLFW_KEY_A}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Add; }},
-        {Command::ToolCarve,
-         "Carve",
-         "Digs clay away (Ctrl: add)",
-         {{GLFW_KEY_C}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Carve; }},
-        {Command::ToolInflate,
-         "Inflate",
-         "Swells the surface along its normal (Ctrl: deflate)",
-         {{GLFW_KEY_I}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Inflate; }},
-        {Command::ToolDeflate,
-         "Deflate",
-         "Shrinks the surface along its normal (Ctrl: inflate)",
-         {{GLFW_KEY_D}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Deflate; }},
-        {Command::ToolSmooth,
-         "Smooth",
-         "Evens out bumps (hold Shift with any tool)",
-         {{GLFW_KEY_S}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Smooth; }},
-        {Command::ToolFlatten,
-         "Flatten",
-         "Presses the surface onto its mean plane",
-         {{GLFW_KEY_T}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Flatten; }},
-        {Command::ToolGrab,
-         "Grab",
-         "Drags the clay under the brush along with the mouse",
-         {{GLFW_KEY_G}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Grab; }},
-        {Command::ToolPinch,
-         "Pinch",
-         "Pulls the surface towards the stroke: sharp creases",
-         {{GLFW_KEY_P}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Pinch; }},
+        toolRow<BrushTool::Add>(Command::ToolAdd, "Add", "Builds clay up (Ctrl: carve)", GLFW_KEY_A),
+        toolRow<BrushTool::Carve>(Command::ToolCarve, "Carve", "Digs clay away (Ctrl: add)", GLFW_KEY_C),
+        toolRow<BrushTool::Inflate>(Command::ToolInflate, "Inflate",
+                                    "Swells the surface along its normal (Ctrl: deflate)", GLFW_KEY_I),
+        toolRow<BrushTool::Deflate>(Command::ToolDeflate, "Deflate",
+                                    "Shrinks the surface along its normal (Ctrl: inflate)", GLFW_KEY_D),
+        toolRow<BrushTool::Smooth>(Command::ToolSmooth, "Smooth", "Evens out bumps (hold Shift with any tool)",
+                                   GLFW_KEY_S),
+        toolRow<BrushTool::Flatten>(Command::ToolFlatten, "Flatten", "Presses the surface onto its mean plane",
+                                    GLFW_KEY_T),
+        toolRow<BrushTool::Grab>(Command::ToolGrab, "Grab", "Drags the clay under the brush along with the mouse",
+                                 GLFW_KEY_G),
+        toolRow<BrushTool::Pinch>(Command::ToolPinch, "Pinch", "Pulls the surface towards the stroke: sharp creases",
+                                  GLFW_KEY_P),
         {Command::ToolFollow,
          "Follow",
          "Pulls the surface under the brush onto the target shape (Ctrl+T loads one)",
@@ -107,12 +100,8 @@ const std::vector<CommandRow>& SculptApp::commands()
              a.mBrush.tool = BrushTool::Follow;
              if (!a.mBrush.target.shape) a.notify("the follow brush needs a target: File > Load Target (Ctrl+T)");
          }},
-        {Command::ToolPrimitive,
-         "Blob",
-         "Stamps a soft blob (Ctrl: carves one)",
-         {{GLFW_KEY_B}},
-         nullptr,
-         [](App& a) { a.mBrush.tool = BrushTool::Primitive; }},
+        toolRow<BrushTool::Primitive>(Command::ToolPrimitive, "Blob", "Stamps a soft blob (Ctrl: carves one)",
+                                      GLFW_KEY_B),
         {Command::RadiusDrag,
          "Radius",
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
@@ -280,19 +269,13 @@ const std::vector<CommandRow>& SculptApp::commands()
          "Mean-curvature flow over the whole model, as a job (Esc cancels; one undo step)",
          {{GLFW_KEY_S, kAlt}},
          idle,
-         [](App& a) {
-             a.mDialogs.filter.kind = ModelFilter::Kind::Smooth;
-             a.openPrompt(P::SmoothModel, a.mDialogs.path);
-         }},
+         [](App& a) { openFilter(a, ModelFilter::Kind::Smooth, P::SmoothModel); }},
         {Command::OffsetModel,
          "Offset Model...",
          "Grow or shrink the whole model along its normal, as a job (Esc cancels; one undo step)",
          {{GLFW_KEY_O, kAlt}},
          idle,
-         [](App& a) {
-             a.mDialogs.filter.kind = ModelFilter::Kind::Offset;
-             a.openPrompt(P::OffsetModel, a.mDialogs.path);
-         }},
+         [](App& a) { openFilter(a, ModelFilter::Kind::Offset, P::OffsetModel); }},
         {Command::MorphTo,
          "Morph To...",
          "Morph the model into a target document, scan or mesh, as a job; then play and keep frames",
@@ -310,17 +293,13 @@ const std::vector<CommandRow>& SculptApp::commands()
          "Morph: the previous frame; Import: the iso-value up by 1% of the range",
          {{GLFW_KEY_PAGE_UP}},
          nullptr,
-         [](App& a) {
-             if (a.mMode) a.mMode->step(1);
-         }},
+         [](App& a) { step(a, 1); }},
         {Command::StepDown,
          "Step Down",
          "Morph: the next frame; Import: the iso-value down by 1% of the range",
          {{GLFW_KEY_PAGE_DOWN}},
          nullptr,
-         [](App& a) {
-             if (a.mMode) a.mMode->step(-1);
-         }},
+         [](App& a) { step(a, -1); }},
         {Command::MorphKeep,
          "Keep Frame",
          "Make the frame shown the document (one undo step)",
@@ -339,66 +318,22 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_HOME}, {GLFW_KEY_KP_DECIMAL}},
          nullptr,
          [](App& a) { a.frameModel(); }},
-        {Command::ViewFront,
-         "Front",
-         "Look along -z",
-         {{GLFW_KEY_KP_1}, {GLFW_KEY_1}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Front); }},
-        {Command::ViewBack,
-         "Back",
-         "Look along +z",
-         {{GLFW_KEY_KP_1, kControl}, {GLFW_KEY_1, kControl}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Back); }},
-        {Command::ViewRight,
-         "Right",
-         "Look along -x",
-         {{GLFW_KEY_KP_3}, {GLFW_KEY_3}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Right); }},
-        {Command::ViewLeft,
-         "Left",
-         "Look along +x",
-         {{GLFW_KEY_KP_3, kControl}, {GLFW_KEY_3, kControl}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Left); }},
-        {Command::ViewTop,
-         "Top",
-         "Look down -y",
-         {{GLFW_KEY_KP_7}, {GLFW_KEY_7}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Top); }},
-        {Command::ViewBottom,
-         "Bottom",
-         "Look up +y",
-         {{GLFW_KEY_KP_7, kControl}, {GLFW_KEY_7, kControl}},
-         nullptr,
-         [](App& a) { a.mCamera.axisView(AxisView::Bottom); }},
-        {Command::OrbitLeft,
-         "Orbit Left",
-         "Turn the view 15 degrees",
-         {{GLFW_KEY_KP_4}, {GLFW_KEY_LEFT}},
-         nullptr,
-         [](App& a) { a.mCamera.orbitDegrees(-15.0, 0.0); }},
-        {Command::OrbitRight,
-         "Orbit Right",
-         "Turn the view 15 degrees",
-         {{GLFW_KEY_KP_6}, {GLFW_KEY_RIGHT}},
-         nullptr,
-         [](App& a) { a.mCamera.orbitDegrees(15.0, 0.0); }},
-        {Command::OrbitUp,
-         "Orbit Up",
-         "Tilt the view 15 degrees",
-         {{GLFW_KEY_KP_8}, {GLFW_KEY_UP}},
-         nullptr,
-         [](App& a) { a.mCamera.orbitDegrees(0.0, -15.0); }},
-        {Command::OrbitDown,
-         "Orbit Down",
-         "Tilt the view 15 degrees",
-         {{GLFW_KEY_KP_2}, {GLFW_KEY_DOWN}},
-         nullptr,
-         [](App& a) { a.mCamera.orbitDegrees(0.0, 15.0); }},
+        viewRow<AxisView::Front>(Command::ViewFront, "Front", "Look along -z", {{GLFW_KEY_KP_1}, {GLFW_KEY_1}}),
+        viewRow<AxisView::Back>(Command::ViewBack, "Back", "Look along +z",
+                                {{GLFW_KEY_KP_1, kControl}, {GLFW_KEY_1, kControl}}),
+        viewRow<AxisView::Right>(Command::ViewRight, "Right", "Look along -x", {{GLFW_KEY_KP_3}, {GLFW_KEY_3}}),
+        viewRow<AxisView::Left>(Command::ViewLeft, "Left", "Look along +x",
+                                {{GLFW_KEY_KP_3, kControl}, {GLFW_KEY_3, kControl}}),
+        viewRow<AxisView::Top>(Command::ViewTop, "Top", "Look down -y", {{GLFW_KEY_KP_7}, {GLFW_KEY_7}}),
+        viewRow<AxisView::Bottom>(Command::ViewBottom, "Bottom", "Look up +y",
+                                  {{GLFW_KEY_KP_7, kControl}, {GLFW_KEY_7, kControl}}),
+        orbitRow<-15, 0>(Command::OrbitLeft, "Orbit Left", "Turn the view 15 degrees",
+                         {{GLFW_KEY_KP_4}, {GLFW_KEY_LEFT}}),
+        orbitRow<15, 0>(Command::OrbitRight, "Orbit Right", "Turn the view 15 degrees",
+                        {{GLFW_KEY_KP_6}, {GLFW_KEY_RIGHT}}),
+        orbitRow<0, -15>(Command::OrbitUp, "Orbit Up", "Tilt the view 15 degrees", {{GLFW_KEY_KP_8}, {GLFW_KEY_UP}}),
+        orbitRow<0, 15>(Command::OrbitDown, "Orbit Down", "Tilt the view 15 degrees",
+                        {{GLFW_KEY_KP_2}, {GLFW_KEY_DOWN}}),
         {Command::ZoomIn,
          "Zoom In",
          "Move closer",
