@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <gdcmImageReader.h>
+#include <gdcmReader.h>
+#include <gdcmSequenceOfFragments.h>
 #include <gdcmSequenceOfItems.h>
 #include <gdcmTrace.h>
 #include <optional>
@@ -25,6 +27,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const gdcm::Tag kPixelSpacing(0x0028, 0x0030);
+const gdcm::Tag kPixelData(0x7FE0, 0x0010);
 const gdcm::Tag kPosition(0x0020, 0x0032);
 const gdcm::Tag kOrientation(0x0020, 0x0037);
 const gdcm::Tag kSeriesUid(0x0020, 0x000E);
@@ -112,6 +115,29 @@ int vtkTypeOf(const gdcm::PixelFormat& format, const std::string& file)
     case gdcm::PixelFormat::FLOAT32: return VTK_FLOAT;
     case gdcm::PixelFormat::FLOAT64: return VTK_DOUBLE;
     default: throw InputError(file + ": pixel format " + format.GetScalarTypeAsString() + " is not supported");
+    }
+}
+
+/// GDCM reads a Pixel Data element that the end of its file cuts short as if whole (its
+/// "use file at own risk" warning; its JPEG lossless codec decodes a cut fragment too), the
+/// missing bytes garbage: the element, with its fragments and their delimiter, must end in the
+/// file. Read again up to it with it skipped, the stream stands where its value begins.
+void requirePixelDataInFile(const gdcm::Image& image, const fs::path& path)
+{
+    const gdcm::DataElement& pixels = image.GetDataElement();
+    std::uint64_t bytes = 0;
+    if (const gdcm::ByteValue* value = pixels.GetByteValue()) bytes = value->GetLength();
+    else if (const gdcm::SequenceOfFragments* fragments = pixels.GetSequenceOfFragments())
+        bytes = fragments->ComputeLength();
+    gdcm::Reader upToPixels;
+    upToPixels.SetFileName(path.string().c_str());
+    if (!upToPixels.ReadUpToTag(kPixelData, {kPixelData}))
+        throw InputError(path.string() + ": not a DICOM image (GDCM cannot read it)");
+    const std::uint64_t end = upToPixels.GetStreamCurrentPosition() + bytes;
+    const std::uint64_t size = fs::file_size(path);
+    if (end > size) {
+        throw InputError(path.string() + ": the pixel data claims " + std::to_string(bytes) + " bytes, " +
+                         std::to_string(end - size) + " more than the file holds (truncated?)");
     }
 }
 
@@ -213,6 +239,7 @@ DicomFrames readDicomFile(const fs::path& path)
     }
     if (!(frames.rowSpacing > 0.0) || !(frames.columnSpacing > 0.0))
         throw InputError(file + ": the pixel spacing (0028,0030) is not positive");
+    requirePixelDataInFile(image, path);
     frames.samples = decodePixels(image, file);
     rescale(frames.samples, image.GetSlope(), image.GetIntercept());
     const openvdb::Vec3d normal = frames.rowDirection.cross(frames.columnDirection);

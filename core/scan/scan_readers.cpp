@@ -151,14 +151,43 @@ std::string readerOf(ScanFormat format)
 /// Processor time a scan's decoding may take: a 1000-slice JPEG 2000 CT decodes in about 30 s.
 constexpr int kScanReadCpuSeconds = 300;
 
-/// Runs `decode` in a child process (isolated_call.h) and brings its scan back.
+/// How many times its bytes a DICOM series may need to decode, and room for the libraries. RLE
+/// and the JPEG codecs expand far less than 64 times; GDCM allocates whatever an element's
+/// length claims, so a length past the end of its file fails at once within this bound instead
+/// of taking the machine's memory.
+constexpr std::uint64_t kDicomExpansion = 64;
+constexpr std::uint64_t kDicomLibraryBytes = std::uint64_t(1) << 30;
+
+/// The bytes of the files a DICOM path may read: its directory's (with the folders a DICOMDIR
+/// names) when it is a slice, since the rest of its series is read too.
+std::uint64_t dicomInputBytes(const fs::path& path)
+{
+    if (!fs::is_directory(path)) return dicomInputBytes(path.parent_path().empty() ? "." : path.parent_path());
+    std::uint64_t bytes = 0;
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(path, error), end; !error && it != end; it.increment(error)) {
+        if (it->is_regular_file(error)) bytes += it->file_size(error);
+    }
+    return bytes;
+}
+
+/// What decoding `path` may allocate: a DICOM series no more than its files can hold; the other
+/// formats' headers have been checked against their files (header_checks.h) before this.
+std::uint64_t decodeBudget(const fs::path& path, ScanFormat format)
+{
+    if (format != ScanFormat::Dicom) return availableMemoryBytes();
+    return std::min(availableMemoryBytes(), kDicomLibraryBytes + kDicomExpansion * dicomInputBytes(path));
+}
+
+/// Runs `decode` in a child process (isolated_call.h) under `memoryBytes` and brings its scan back.
 template <typename Decode>
-ScanVolume readIsolated(const fs::path& path, const std::string& reader, const Decode& decode)
+ScanVolume readIsolated(const fs::path& path, const std::string& reader, std::uint64_t memoryBytes,
+                        const Decode& decode)
 {
     IsolationLimits limits;
     limits.subject = path.string();
     limits.reader = reader;
-    limits.memoryBytes = availableMemoryBytes();
+    limits.memoryBytes = memoryBytes;
     limits.cpuSeconds = kScanReadCpuSeconds;
     return unpackScan(runIsolated(limits, [&] {
         vtkSMPTools::SetBackend("Sequential");  // the parent's TBB workers do not exist in the child
@@ -214,12 +243,13 @@ ScanVolume readScan(const fs::path& path)
     if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
     const ScanFormat format = formatOf(path);
     checkHeader(path, format);
-    return readIsolated(path, readerOf(format), [&] { return decodeScan(path, format); });
+    return readIsolated(path, readerOf(format), decodeBudget(path, format), [&] { return decodeScan(path, format); });
 }
 
 ScanVolume readRawScan(const fs::path& path, const RawLayout& layout)
 {
-    return readIsolated(path, "the raw sample reader", [&] { return decodeRawScan(path, layout); });
+    return readIsolated(path, "the raw sample reader", availableMemoryBytes(),
+                        [&] { return decodeRawScan(path, layout); });
 }
 
 }  // namespace sculpt

@@ -11,6 +11,8 @@
 #include "tests/support/synthetic_scan.h"
 #include "tests/support/temp_dir.h"
 
+#include <sys/resource.h>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -93,6 +95,14 @@ void expectSameScan(const ScanVolume& a, const ScanVolume& b, const std::string&
         b.readSlice(k, sb.data());
         ASSERT_EQ(sa, sb) << what << ": slice " << k;
     }
+}
+
+/// A copy of `dir` (the slices of one series) with one slice's bytes replaced.
+fs::path seriesWithSlice(const fs::path& dir, const fs::path& into, const std::string& name, const std::string& bytes)
+{
+    fs::copy(dir, into, fs::copy_options::recursive);
+    test::writeFileBytes(into / name, bytes);
+    return into;
 }
 
 std::string messageOf(const std::function<void()>& read)
@@ -187,6 +197,11 @@ TEST(DicomSeries, CompressedSeriesGiveTheSameGrid)
         const ScanVolume scan = readScan(converted);
         expectSameScan(plain, scan, s.name);
         EXPECT_EQ(gridChecksum(scanToLevelSet(scan, 100.0, 1.0).grid()), expected) << s.name;
+        // A slice cut inside its compressed fragments is refused by the codec, naming it.
+        const std::string bytes = test::fileBytes(converted / "im103.dcm");
+        const fs::path cut = seriesWithSlice(converted, dir / (std::string(s.name) + " cut"), "im103.dcm",
+                                             bytes.substr(0, bytes.size() * 9 / 10));
+        EXPECT_NE(messageOf([&] { readScan(cut); }).find((cut / "im103.dcm").string()), std::string::npos) << s.name;
     }
 }
 
@@ -294,14 +309,6 @@ TEST(DicomSeries, ADiscsDicomdirNamesItsImagesInFoldersOfAnyCase)
     EXPECT_NE(message.find("IM999, which is not on the disc"), std::string::npos) << message;
 }
 
-/// A copy of `dir` (the slices of one series) with one slice's bytes replaced.
-fs::path seriesWithSlice(const fs::path& dir, const fs::path& into, const std::string& name, const std::string& bytes)
-{
-    fs::copy(dir, into, fs::copy_options::recursive);
-    test::writeFileBytes(into / name, bytes);
-    return into;
-}
-
 TEST(DicomSeries, ASliceThatMakesGdcmAbortIsRefusedNamingItAndTheProgramLivesOn)
 {
     test::TempDir dir;
@@ -324,6 +331,42 @@ TEST(DicomSeries, ASliceThatMakesGdcmAbortIsRefusedNamingItAndTheProgramLivesOn)
         const std::string refused = messageOf([&] { readScan(series); });
         EXPECT_NE(refused.find(series.string()), std::string::npos) << refused;
     }
+}
+
+/// The largest resident size any child process of this test has reached (ctest runs each test
+/// in a process of its own).
+double childPeakBytes()
+{
+    rusage usage{};
+    getrusage(RUSAGE_CHILDREN, &usage);
+    return double(usage.ru_maxrss) * 1024.0;
+}
+
+TEST(DicomSeries, AnElementLengthPastTheEndOfItsFileIsRefusedWithinWhatTheFilesCanHold)
+{
+    // A fuzzed slice whose sequence item claims 3.7 GB: GDCM allocates what a length claims.
+    const fs::path fuzzed = SCULPT_TESTS_DIR "/bad-inputs/dicom_element_length_3_7GB/slice.dcm";
+    EXPECT_NE(messageOf([&] { readScan(fuzzed); }).find(fuzzed.string()), std::string::npos);
+
+    // The same class made here: the pixel data of a good series' slice claiming 3.7 GB.
+    test::TempDir dir;
+    const SyntheticBall ball;
+    const auto files = writeSeries(dir / "good", ballSlices(ball, ballSample(ball)));
+    std::string bytes = test::fileBytes(files[3]);
+    const std::size_t pixelData = bytes.find(std::string("\xE0\x7F\x10\x00OW", 6));
+    ASSERT_NE(pixelData, std::string::npos);
+    const std::uint32_t length = 0xDDDDDDDD;
+    std::memcpy(bytes.data() + pixelData + 8, &length, sizeof length);
+    const fs::path series = seriesWithSlice(dir / "good", dir / "long", files[3].filename().string(), bytes);
+    EXPECT_NE(messageOf([&] { readScan(series); }).find(series.string()), std::string::npos);
+
+    // And a slice cut inside its pixel data: its length claims more than the file holds.
+    const fs::path cut = seriesWithSlice(dir / "good", dir / "cut", files[3].filename().string(),
+                                         test::fileBytes(files[3]).substr(0, pixelData + 12 + 100));
+    EXPECT_NE(messageOf([&] { readScan(cut); }).find(cut.string()), std::string::npos);
+
+    // The decoder's memory is bounded by the files' bytes (a few kB here), not the claims.
+    EXPECT_LT(childPeakBytes(), 1.5 * double(1 << 30));
 }
 
 }  // namespace
