@@ -1,7 +1,6 @@
 #include "core/motion/morph.h"
 
 #include "core/base/errors.h"
-#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
@@ -65,6 +64,11 @@ bool morphConverged(const ShapeDistance& d, double toleranceWorld, double voxelS
     return d.maxResolvedWorld <= toleranceWorld && d.maxWorld <= toleranceWorld + voxelSize;
 }
 
+double acceptingToleranceVoxels(const MorphSummary& s, double voxelSize)
+{
+    return std::max(s.finalDistanceWorld, s.worstDistanceWorld - voxelSize) / voxelSize;
+}
+
 FieldImage morphStart(const FieldImage& source, const FieldImage& target, bool align, openvdb::Vec3d& shift)
 {
     shift = align ? interiorCentroid(target.grid()) - interiorCentroid(source.grid()) : openvdb::Vec3d(0.0);
@@ -115,9 +119,11 @@ public:
             mBestMean = mLast.meanWorld;
             mBestStep = step;
         }
-        return morphConverged(mLast, mTolerance, field.voxelSize()) || step - mBestStep >= 40;
+        mStalled = step - mBestStep >= 40;
+        return morphConverged(mLast, mTolerance, field.voxelSize()) || mStalled;
     }
     double lastMax() const { return mLast.maxResolvedWorld; }
+    bool stalled() const { return mStalled; }
 
 private:
     double mTolerance;
@@ -125,12 +131,14 @@ private:
     ShapeDistance mLast{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
                         std::numeric_limits<double>::infinity(), 0.0};
     int mBestStep = 0;
+    bool mStalled = false;
 };
 
 /// States of the plain target-following motion, kept every few steps of the first pass, so the
 /// second starts each frame from the latest state before it instead of from the source (without
-/// volume control the two passes follow the same motion). At most 16 copies, fewer if memory is
-/// short; when full, every other one goes and the interval doubles.
+/// volume control the two passes follow the same motion). At most 16 copies and 1 GiB, whatever
+/// memory is free: where the second pass resumes decides the frames, which must not depend on
+/// the machine. When full, every other one goes and the interval doubles.
 class Checkpoints {
 public:
     struct State {
@@ -140,9 +148,7 @@ public:
 
     /// Keeps nothing unless `wanted` (with volume control the second pass cannot use them).
     Checkpoints(const openvdb::FloatGrid& grid, bool wanted)
-        : mCapacity(wanted ? std::min<std::uint64_t>(16, availableMemoryBytes() /
-                                                             (4 * std::max<std::uint64_t>(grid.memUsage(), 1)))
-                           : 0)
+        : mCapacity(wanted ? std::min<std::uint64_t>(16, kBytes / std::max<std::uint64_t>(grid.memUsage(), 1)) : 0)
     {}
 
     void offer(const openvdb::FloatGrid& grid, double time, int step)
@@ -168,6 +174,7 @@ public:
     }
 
 private:
+    static constexpr std::uint64_t kBytes = std::uint64_t(1) << 30;
     std::uint64_t mCapacity;
     int mEvery = 8;
     std::vector<State> mKept;
@@ -213,6 +220,20 @@ Progress part(const Progress& progress, double begin, double end)
 {
     if (!progress) return {};
     return [=](double f) { return progress(begin + (end - begin) * f); };
+}
+
+/// The last frame waits until the surface stops improving, or `steps` run out (`stop` says
+/// which); progress is the share of those steps, so Esc is heard throughout.
+void settle(LevelSetEvolution& evolution, const FieldImage& field, const MorphTarget& goal, int steps, MorphStop& stop,
+            const Progress& progress)
+{
+    ConvergenceWatch watch(0.0);
+    const int first = evolution.stepCount();
+    while (evolution.stepCount() - first < steps && !watch.done(field, goal, evolution.stepCount())) {
+        evolution.step();
+        report(progress, double(evolution.stepCount() - first) / steps);
+    }
+    stop = watch.stalled() ? MorphStop::Stalled : MorphStop::StepLimit;
 }
 
 }  // namespace
@@ -273,14 +294,10 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
                 volume.reset();
             }
             evolution->step(dt);
-            report(progress, 0.5 + 0.5 * now() / std::max(duration, 1e-30));
+            report(progress, 0.5 + 0.45 * now() / std::max(duration, 1e-30));
         }
-        if (frame + 1 == o.frames) {  // the last frame waits until the surface stops improving
-            ConvergenceWatch watch(0.0);
-            while (secondPassSteps() < o.maxSteps && !watch.done(field, goal, evolution->stepCount())) {
-                evolution->step();
-            }
-        }
+        if (frame + 1 == o.frames)
+            settle(*evolution, field, goal, o.maxSteps - secondPassSteps(), summary.stop, part(progress, 0.95, 1.0));
         emit(frame);
     }
     summary.steps = first.steps + secondPassSteps();
@@ -290,6 +307,7 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     summary.worstDistanceWorld = final.maxWorld;
     summary.resolvedFraction = final.resolvedFraction;
     summary.converged = morphConverged(final, tolerance, target.voxelSize());
+    if (summary.converged) summary.stop = MorphStop::Converged;
     return summary;
 }
 

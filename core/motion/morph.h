@@ -34,6 +34,13 @@ struct MorphFrame {
     const FieldImage& field;
 };
 
+/// Why the motion ended: what a user can do about a result that is not converged differs.
+enum class MorphStop {
+    Converged,  ///< within the tolerance
+    Stalled,    ///< 40 steps brought no 1% fall of the mean distance: more steps do not help
+    StepLimit,  ///< still approaching when maxSteps ran out: more steps would help
+};
+
 struct MorphSummary {
     int steps = 0;                  ///< steps of both passes
     double duration = 0.0;          ///< morph time at the last frame
@@ -41,6 +48,7 @@ struct MorphSummary {
     double worstDistanceWorld = 0;  ///< the same over every point, thin parts and sharp edges included
     double resolvedFraction = 1;    ///< share of surface points where the target is resolvable
     bool converged = false;
+    MorphStop stop = MorphStop::StepLimit;
     openvdb::Vec3d translation{0.0};  ///< applied by align
     std::vector<double> frameVolumes;
 };
@@ -55,6 +63,9 @@ struct MorphSummary {
 ///         Cancelled if progress says stop.
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& options,
                    const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress = {});
+
+/// The tolerance (in the target's voxels) at which `summary` would count as converged.
+double acceptingToleranceVoxels(const MorphSummary& summary, double voxelSize);
 
 /// Converged: the two-sided distance is within `toleranceWorld` where the target is resolvable,
 /// and within a voxel more at its thin parts and sharp edges (so a thin part the surface never

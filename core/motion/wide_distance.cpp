@@ -47,15 +47,33 @@ int spanVoxels(const openvdb::FloatGrid& a, const openvdb::FloatGrid& b, const o
     return int(std::ceil(box.extents().length() / coarse.voxelSize()[0]));
 }
 
+bool hasInside(const openvdb::FloatGrid& grid)
+{
+    for (auto it = grid.cbeginValueOn(); it; ++it) {
+        if (*it < 0.0f) return true;
+    }
+    return false;
+}
+
+/// The shape rebuilt kCoarsening times coarser, or less coarse where it would vanish at that
+/// size (a wire, a thin ring): widening the band by a sweep needs an inside.
+openvdb::FloatGrid::Ptr coarseCopy(const openvdb::FloatGrid& band)
+{
+    for (int factor = WideDistance::kCoarsening;; factor /= 2) {
+        auto transform = band.transform().copy();
+        transform->preScale(double(factor));
+        auto coarse = openvdb::tools::levelSetRebuild(band, 0.0f, float(kCoarseHalfWidthVoxels), transform.get());
+        if (factor == 1 || hasInside(*coarse)) return coarse;
+    }
+}
+
 }  // namespace
 
 WideDistance::WideDistance(openvdb::FloatGrid::ConstPtr band, const openvdb::FloatGrid& cover, const Progress& progress)
     : mBand(std::move(band)), mHalfWidthWorld(mBand->background())
 {
-    auto coarseTransform = mBand->transform().copy();
-    coarseTransform->preScale(double(kCoarsening));
-    mCoarse = openvdb::tools::levelSetRebuild(*mBand, 0.0f, float(kCoarseHalfWidthVoxels), coarseTransform.get());
-    const int maxHalfWidth = spanVoxels(*mBand, cover, *coarseTransform);
+    mCoarse = coarseCopy(*mBand);
+    const int maxHalfWidth = hasInside(*mCoarse) ? spanVoxels(*mBand, cover, mCoarse->transform()) : 0;
     int halfWidth = kCoarseHalfWidthVoxels;
     while (halfWidth < maxHalfWidth && leavesSurfaceUncovered(cover, *mCoarse)) {
         const int dilation = std::min(halfWidth, maxHalfWidth - halfWidth);

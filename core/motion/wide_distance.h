@@ -3,9 +3,9 @@
 /// @brief A shape's signed distance far beyond its narrow band. A narrow band reads its half
 ///        width everywhere past it, so a distance measured there saturates: a morph whose source
 ///        lies farther away than the band could not see itself approach. Beyond the band this
-///        reads a copy of the shape kCoarsening times coarser whose band is widened until it
-///        covers another shape's surface: the true distance wherever that surface can be, at the
-///        cost of a coarse grid.
+///        reads a copy of the shape kCoarsening times coarser (less coarse for a shape that
+///        would vanish at that size) whose band is widened until it covers another shape's
+///        surface: the true distance wherever that surface can be, at the cost of a coarse grid.
 
 #include "core/base/progress.h"
 

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -27,6 +28,26 @@ struct MorphCommandOptions {
     std::string source, target, directory, mesh;
     MorphOptions morph;
 };
+
+/// How the morph ended and, if not converged, what would help: the stall rule stops a morph
+/// that more steps would not improve (thin parts finer than the target's voxels).
+std::string verdict(const MorphSummary& s, const MorphOptions& o, double voxelSize)
+{
+    char tolerance[32];
+    std::snprintf(tolerance, sizeof tolerance, "%.1f", std::ceil(10.0 * acceptingToleranceVoxels(s, voxelSize)) / 10.0);
+    switch (s.stop) {
+    case MorphStop::Converged: return "converged";
+    case MorphStop::Stalled:
+        return "NOT converged: the surface stopped approaching the target (40 steps without a 1% gain), so more "
+               "steps would not help; its thin parts are finer than the target's voxels resolve: import the target at "
+               "a finer voxel size, or --tolerance " +
+               std::string(tolerance) + " accepts this result";
+    case MorphStop::StepLimit:
+        return "NOT converged: still approaching the target after " + std::to_string(o.maxSteps) +
+               " steps: raise --max-steps";
+    }
+    return "";
+}
 
 void runMorph(const MorphCommandOptions& o)
 {
@@ -60,7 +81,7 @@ void runMorph(const MorphCommandOptions& o)
     }
     std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps, summary.duration,
                 summary.finalDistanceWorld, target.units().c_str(),
-                summary.converged ? "converged" : "NOT converged: raise --max-steps or --tolerance");
+                verdict(summary, o.morph, target.voxelSize()).c_str());
     if (summary.resolvedFraction < 1.0) {
         std::printf("  measured where the target is at least 2.4 voxels thick (%.1f%% of the surface); at its thinner "
                     "parts and sharp edges: %g %s\n",

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 namespace sculpt {
 namespace {
 
@@ -49,6 +51,53 @@ TEST(Morph, SphereBecomesBox)
     for (size_t i = 2; i + 1 < rec.times.size(); ++i) {  // evenly spaced in morph time
         EXPECT_NEAR(rec.times[i] - rec.times[i - 1], rec.times[1] - rec.times[0], 1e-9);
     }
+}
+
+TEST(Morph, SaysWhichRuleStoppedItAndItsProgressRisesWithinOneUntilTheLastFrame)
+{
+    const FieldImage sphere = makeSphere(12.0, 1.0), box = makeBox(9.0, 1.0);
+    MorphOptions options;
+    options.frames = 3;
+    std::vector<double> fractions;
+    int frames = 0;
+    const MorphSummary s = morph(
+        sphere, box, options, [&](const MorphFrame&) { ++frames; },
+        [&](double f) {
+            fractions.push_back(f);
+            return true;
+        });
+    EXPECT_EQ(s.stop, MorphStop::Converged);
+    ASSERT_FALSE(fractions.empty());
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_GE(fractions.front(), 0.0);
+    EXPECT_LE(fractions.back(), 1.0);
+    // The last frame's settling reports too, so a cancel there is heard before it is written.
+    EXPECT_GT(std::count_if(fractions.begin(), fractions.end(), [](double f) { return f > 0.95; }), 0);
+    frames = 0;
+    EXPECT_THROW(morph(
+                     sphere, box, options, [&](const MorphFrame&) { ++frames; }, [](double f) { return f <= 0.95; }),
+                 Cancelled);
+    EXPECT_LT(frames, options.frames);
+
+    options.maxSteps = 2;  // far too few: more steps would help, and the summary says so
+    Recorded rec;
+    const MorphSummary cut = run(sphere, box, options, rec);
+    EXPECT_FALSE(cut.converged);
+    EXPECT_EQ(cut.stop, MorphStop::StepLimit);
+}
+
+// A target thinner everywhere than the coarse voxels of its wide distance (4 voxels): that copy
+// once vanished and OpenVDB's sweep threw ("the inside value must be negative").
+TEST(Morph, ATargetThinnerThanItsCoarseDistanceVoxelsIsReached)
+{
+    const FieldImage sphere = makeSphere(12.0, 1.0), ring = makeTorus(10.0, 1.0, 1.0);
+    MorphOptions options;
+    options.frames = 2;
+    Recorded rec;
+    const MorphSummary s = run(sphere, ring, options, rec);
+    EXPECT_TRUE(s.converged);
+    EXPECT_LT(s.worstDistanceWorld, ring.voxelSize());
+    EXPECT_EQ(rec.lastEuler, 0);
 }
 
 TEST(Morph, BoxBecomesTorusOpeningAHole)
