@@ -4,7 +4,6 @@
 #include "core/base/text_format.h"
 #include "core/field/central_difference.h"
 #include "core/field/dense_gather.h"
-#include "core/local/local_patch.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/volume_estimate.h"
 
@@ -50,15 +49,13 @@ struct StepConstants {
     std::optional<FalloffBall> smoothWeight;
     bool firstOrderTime = false;
     double uniformSpeed = 0.0;  // the offset term
-    std::optional<LocalTerm> local;
-    std::optional<MotionRegion> region;
     const openvdb::math::Transform* xform;
 
     /// True if nothing can move in the leaf: only a weighted smoothing acts, and its ball
     /// misses the leaf (a smoothing brush on a patch then costs its ball, not the patch).
     bool leafIsStill(const openvdb::Coord& origin) const
     {
-        if (!smoothWeight || target || local || uniformSpeed != 0.0) return false;
+        if (!smoothWeight || target || uniformSpeed != 0.0) return false;
         const openvdb::Vec3d centre = xform->worldToIndex(smoothWeight->centreWorld);
         openvdb::Vec3d nearest;
         for (int a = 0; a < 3; ++a) nearest[a] = std::clamp(centre[a], double(origin[a]), double(origin[a] + 7));
@@ -113,15 +110,10 @@ public:
         if (mC.target) mTarget.emplace(*mC.target);
     }
 
-    /// nullopt if the voxel is outside the region and must not move.
-    std::optional<double> operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    double operator()(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
-        if (mC.region && (mC.xform->indexToWorld(ijk) - mC.region->centreWorld).lengthSqr() >
-                             mC.region->radiusWorld * mC.region->radiusWorld) {
-            return std::nullopt;
-        }
         double speed = mC.uniformSpeed;
-        if (mTarget || mC.local) speed += extendedSpeed(s, x, y, z, ijk);
+        if (mTarget) speed += targetSpeed(s, x, y, z, ijk);
         double rate = 0.0;
         if (speed != 0.0) {
             openvdb::Vec3d minus, plus;
@@ -137,28 +129,18 @@ public:
     }
 
 private:
-    /// Target and local speeds taken at the voxel's closest surface point x - phi n, not at the
+    /// The target's speed taken at the voxel's closest surface point x - phi n, not at the
     /// voxel: every level set then moves with the surface (a cheap velocity extension), so the
     /// band stays a distance field instead of bunching up where the speed varies.
-    double extendedSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    double targetSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
         const openvdb::Vec3d foot = closestSurfacePoint(
             ijk.asVec3d(), s.at(x, y, z),
             centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z), mC.invH);
-        double speed = 0.0;
-        if (mTarget) {
-            const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
-            const double clamped = std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
-            if (std::abs(s.at(x, y, z)) < mC.h) mFastestTarget = std::max(mFastestTarget, std::abs(clamped));
-            speed -= mC.alpha * clamped;
-        }
-        if (mC.local) {
-            const openvdb::Vec3d world = mC.xform->indexToWorld(foot);
-            const double q =
-                (world - mC.local->centreWorld).lengthSqr() / (mC.local->radiusWorld * mC.local->radiusWorld);
-            if (q < 1.0) speed += mC.local->speedWorld * (1.0 - q) * (1.0 - q);
-        }
-        return speed;
+        const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
+        const double clamped = std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
+        if (std::abs(s.at(x, y, z)) < mC.h) mFastestTarget = std::max(mFastestTarget, std::abs(clamped));
+        return -mC.alpha * clamped;
     }
 
 public:
@@ -189,8 +171,7 @@ double eulerStage(const openvdb::FloatTree& tree, const std::vector<LeafT*>& lea
                 stencil.gather(tree, leaf.origin());
                 for (auto it = leaf.cbeginValueOn(); it; ++it) {
                     const openvdb::Coord local = it.getCoord() - leaf.origin();
-                    const auto dphi = rate(stencil, local.x(), local.y(), local.z(), it.getCoord());
-                    if (dphi) out[i][it.pos()] = float(*it + dt * *dphi);
+                    out[i][it.pos()] = float(*it + dt * rate(stencil, local.x(), local.y(), local.z(), it.getCoord()));
                 }
             }
             return std::max(fastest, rate.fastestTarget());
@@ -228,9 +209,6 @@ void validateTerms(const MotionTerms& t, const FieldImage& field)
             throw InputError("the target's voxel size " + formatNumber(targetH) + " differs from " +
                              formatNumber(field.voxelSize()) + "; resample it first");
         }
-    }
-    if (t.local && !(t.local->radiusWorld > 0.0 && std::isfinite(t.local->speedWorld))) {
-        throw InputError("local speed needs a positive radius and a finite speed");
     }
     if (t.uniform && !std::isfinite(t.uniform->speedWorld)) throw InputError("offset speed must be finite");
     if (t.volume && !(finiteNonNegative(t.volume->targetVolume) && finiteNonNegative(t.volume->gamma))) {
@@ -284,9 +262,8 @@ void redistanceGrid(openvdb::FloatGrid& grid, const EvolutionOptions& o)
 
 }  // namespace
 
-LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options,
-                                     std::optional<MotionRegion> region)
-    : mField(field), mTerms(std::move(terms)), mOptions(options), mRegion(region)
+LevelSetEvolution::LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options)
+    : mField(field), mTerms(std::move(terms)), mOptions(options)
 {
     validateTerms(mTerms, field);
     if (mTerms.target && mTerms.target->clampWorld <= 0.0) {
@@ -300,7 +277,6 @@ double LevelSetEvolution::maxAdvectionSpeed() const
 {
     double speed = 0.0;
     if (mTerms.target) speed += mTerms.target->alpha * mTargetReach;
-    if (mTerms.local) speed += std::abs(mTerms.local->speedWorld);
     if (mTerms.uniform) speed += std::abs(mTerms.uniform->speedWorld);
     return speed;
 }
@@ -387,8 +363,6 @@ void LevelSetEvolution::applyStep(double dt)
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
     if (mTerms.smooth) c.smoothWeight = mTerms.smooth->weight;
     c.uniformSpeed = mTerms.uniform ? mTerms.uniform->speedWorld : 0.0;
-    c.local = mTerms.local;
-    c.region = mRegion;
     c.xform = &grid.transform();
 
     // Every level set in the band, not only the surface, moves at up to max|F_adv|; where the
@@ -401,28 +375,15 @@ void LevelSetEvolution::applyStep(double dt)
         return mMovedSinceRedistance >= mOptions.redistanceAfterMovingVoxels * c.h ||
                mDiffusedSinceRedistance >= mOptions.redistanceAfterDiffusingVoxels2 * c.h * c.h;
     };
-    if (!mRegion) {
-        DirtyRegion touched = mField.allLeaves();
-        updateTargetReach(rk2Step(grid, c, dt));
-        if (redistanceDue()) {
-            mDiffusedSinceRedistance = 0.0;
-            redistanceGrid(grid, mOptions);
-            mMovedSinceRedistance = 0.0;
-            touched.merge(mField.allLeaves());
-        }
-        mField.markDirty(touched);
-        return;
-    }
-    // Local: move a copy of the leaves around the region, track it there, copy the inside back.
-    LocalPatch patch(mField, Capsule::ball(mRegion->centreWorld, mRegion->radiusWorld + grid.background() + c.h));
-    openvdb::FloatGrid& copy = patch.field().mutableGrid();
-    updateTargetReach(rk2Step(copy, c, dt));
+    DirtyRegion touched = mField.allLeaves();
+    updateTargetReach(rk2Step(grid, c, dt));
     if (redistanceDue()) {
         mDiffusedSinceRedistance = 0.0;
-        redistanceGrid(copy, mOptions);
+        redistanceGrid(grid, mOptions);
         mMovedSinceRedistance = 0.0;
+        touched.merge(mField.allLeaves());
     }
-    patch.commit(mField, nullptr);
+    mField.markDirty(touched);
 }
 
 void LevelSetEvolution::updateTargetReach(double fastest)

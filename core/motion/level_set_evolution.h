@@ -3,7 +3,7 @@
 /// @brief Moves a field image's surface under a composite normal speed (motion_terms.h).
 ///
 /// Numerics: dphi/dt = -F_adv |grad phi| + beta kappa |grad phi|, where F_adv gathers the target,
-/// volume and local terms. The advective part uses Godunov's upwind |grad phi| built from HJ-WENO5
+/// volume and offset terms. The advective part uses Godunov's upwind |grad phi| built from HJ-WENO5
 /// one-sided differences (or first-order ones); the curvature part central differences; time
 /// integration is the TVD Runge-Kutta of order 2 (Heun). Steps obey the CFL limits
 /// dt <= cfl h / max|F_adv| and dt <= h^2 / (6 beta), where the target term's share of max|F_adv|
@@ -13,9 +13,8 @@
 /// a voxel (beta t >= h^2 / 2), the band is rebuilt and redistanced with
 /// openvdb::tools::LevelSetTracker.
 ///
-/// With a MotionRegion, only the leaves around the region are copied into a small grid, moved,
-/// redistanced there (LevelSetTracker) and copied back: OpenVDB's tracker visits every leaf of the grid it is given,
-/// so this keeps the cost of a local step proportional to the region.
+/// A step visits every leaf (OpenVDB's tracker does too): a local motion runs on a LocalPatch's
+/// copy of the leaves around it, as the smoothing brush does.
 
 #include "core/field/field_image.h"
 #include "core/motion/motion_terms.h"
@@ -41,8 +40,7 @@ class LevelSetEvolution {
 public:
     /// @throws InputError for non-finite or negative coefficients, or a target whose voxel size
     ///         differs from the field's.
-    LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options = {},
-                      std::optional<MotionRegion> region = std::nullopt);
+    LevelSetEvolution(FieldImage& field, MotionTerms terms, EvolutionOptions options = {});
 
     /// Largest stable step for the current terms.
     double stableTimeStep() const;
@@ -78,7 +76,6 @@ private:
     FieldImage& mField;
     MotionTerms mTerms;
     EvolutionOptions mOptions;
-    std::optional<MotionRegion> mRegion;
     double mTime = 0.0;
     int mSteps = 0;
     double mMovedSinceRedistance = 0.0;

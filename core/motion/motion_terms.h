@@ -1,7 +1,7 @@
 #pragma once
 /// @file motion_terms.h
 /// @brief The terms of the normal speed that moves a level set (Cani, eq. 1):
-///        F = F_target + F_smooth + F_volume + F_local, with dphi/dt + F |grad phi| = 0 and
+///        F = F_target + F_smooth + F_volume + F_offset, with dphi/dt + F |grad phi| = 0 and
 ///        F > 0 moving the surface outwards.
 
 #include "core/local/falloff.h"
@@ -40,29 +40,15 @@ struct VolumeTerm {
     double gamma = 1.0;         ///< fraction of the volume error corrected per step
 };
 
-/// F_B = speed * (1 - (d/r)^2)^2 for d = |x - centre| < r, 0 beyond: a smooth local push.
-struct LocalTerm {
-    openvdb::Vec3d centreWorld{0.0};
-    double radiusWorld = 1.0;
-    double speedWorld = 0.0;  ///< world units per unit time; > 0 inflates
-};
-
 /// F = speed everywhere: the surface offsets along its normal.
 struct UniformTerm {
     double speedWorld = 0.0;  ///< world units per unit time; > 0 grows
-};
-
-/// A ball outside which nothing moves; the cost of a step then follows the ball, not the model.
-struct MotionRegion {
-    openvdb::Vec3d centreWorld{0.0};
-    double radiusWorld = 1.0;
 };
 
 struct MotionTerms {
     std::optional<TargetTerm> target;
     std::optional<SmoothTerm> smooth;
     std::optional<VolumeTerm> volume;
-    std::optional<LocalTerm> local;
     std::optional<UniformTerm> uniform;
 };
 

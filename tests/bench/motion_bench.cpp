@@ -6,7 +6,6 @@
 // BM_OpenVdbMeanCurvature/R  : tools::LevelSetFilter::meanCurvature() (one step + track every step)
 // BM_OursMorph / BM_OpenVdbMorph : sphere (radius 64) -> box until every surface point is within
 //                              0.4 voxel of the box (checked every 4 steps / 4 CFL steps)
-// BM_OursRegionSmoothStep/R  : one smoothing step limited to a radius-16 ball on a radius-R sphere
 // BM_OursMorphReal/P, BM_OpenVdbMorphReal/P : CGAL's meshes (libcgal-demo), P = 0 elephant ->
 //                              camel, 1 bull -> homer, at the target's longest side / 256, the
 //                              source aligned on the target's centroid. Ours: the whole
@@ -46,16 +45,6 @@ void BM_OpenVdbMeanCurvature(benchmark::State& state)
     FieldImage field = makeSphere(double(state.range(0)), 1.0);
     openvdb::tools::LevelSetFilter<openvdb::FloatGrid> filter(field.mutableGrid());
     for (auto _ : state) filter.meanCurvature();
-}
-
-void BM_OursRegionSmoothStep(benchmark::State& state)
-{
-    const double radius = double(state.range(0));
-    FieldImage field = makeSphere(radius, 1.0);
-    MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0, std::nullopt};
-    LevelSetEvolution evolution(field, terms, {}, MotionRegion{{radius, 0.0, 0.0}, 16.0});
-    for (auto _ : state) evolution.step();
 }
 
 constexpr double kSphereRadius = 64.0, kBoxHalfSide = 48.0, kToleranceVoxels = 0.4;
@@ -176,7 +165,6 @@ void BM_OpenVdbMorphReal(benchmark::State& state)
 
 BENCHMARK(BM_OursSmoothStep)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OpenVdbMeanCurvature)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_OursRegionSmoothStep)->Arg(128)->Arg(256)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_OursMorph)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_OpenVdbMorph)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 BENCHMARK(BM_OursMorphReal)->DenseRange(0, 1)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(1);

@@ -111,35 +111,6 @@ TEST_P(KeepVolumeSmoothing, HoldsTheMeshVolumeWithinATenthOfAPercent)
 INSTANTIATE_TEST_SUITE_P(Shapes, KeepVolumeSmoothing,
                          ::testing::Combine(::testing::Values("box", "torus"), ::testing::Values(30, 200)));
 
-TEST(LevelSetEvolution, RegionStepLeavesTheRestBitIdentical)
-{
-    FieldImage field = bumpySphere();
-    const FieldImage before(field.grid().deepCopy());
-    const MotionRegion region{{17.0, 0.0, 0.0}, 7.0};
-    MotionTerms terms;
-    terms.smooth = SmoothTerm{1.0, std::nullopt};
-    LevelSetEvolution evolution(field, terms, {}, region);
-    const double k0 = test::curvatureVariance(field, std::make_pair(region.centreWorld, region.radiusWorld));
-    field.takeDirtyRegion();
-    for (int i = 0; i < 40; ++i) evolution.step();
-    EXPECT_LT(test::curvatureVariance(field, std::make_pair(region.centreWorld, region.radiusWorld)), k0);
-
-    // Only voxels within the region plus the band (3) and a voxel may differ.
-    const DirtyRegion dirty = field.takeDirtyRegion();
-    EXPECT_FALSE(dirty.empty());
-    auto acc = before.grid().getConstAccessor();
-    std::size_t changedFar = 0;
-    for (auto it = field.grid().cbeginValueAll(); it; ++it) {
-        if (!it.isVoxelValue()) continue;
-        const double d = (it.getCoord().asVec3d() - region.centreWorld).length();
-        if (d > region.radiusWorld + 4.0 + std::sqrt(3.0) && *it != acc.getValue(it.getCoord())) ++changedFar;
-    }
-    EXPECT_EQ(changedFar, 0u);
-    for (const auto& leaf : dirty.leafOrigins()) {
-        EXPECT_LT((leaf.asVec3d() + openvdb::Vec3d(3.5) - region.centreWorld).length(), region.radiusWorld + 4.0 + 8.0);
-    }
-}
-
 TEST(LevelSetEvolution, RejectsBadCoefficients)
 {
     FieldImage field = makeSphere(8.0, 1.0);
