@@ -84,11 +84,13 @@ public:
         }
     }
 
+    /// The leaves' values: each chunk's lengths, not its bytes (decoding every leaf twice would
+    /// double a load; a chunk whose lengths agree is one OpenVDB decodes or refuses).
     void buffers()
     {
         for (std::int64_t i = 0; i < mLeaves; ++i) {
             const NodeMask valueMask(mIn, kLeafLog2, "a leaf's value mask");
-            values(valueMask, "a leaf's values");
+            values(valueMask, "a leaf's values", /*decode=*/false);
         }
     }
 
@@ -125,7 +127,7 @@ private:
     }
 
     /// One node's values as io::readCompressedValues reads them (format 222 and later).
-    void values(const NodeMask& valueMask, const char* what)
+    void values(const NodeMask& valueMask, const char* what, bool decode = true)
     {
         const auto metadata = mIn.read<std::int8_t>(what);
         const bool oneInactive = metadata == io::NO_MASK_AND_ONE_INACTIVE_VAL ||
@@ -143,14 +145,15 @@ private:
         const std::size_t bytes = count * (mCoding.halfFloat ? 2 : sizeof(float));
         if (mCoding.halfFloat && count == 0) return;  // OpenVDB's half writer stores no chunk at all
         if (mCoding.compression & (io::COMPRESS_BLOSC | io::COMPRESS_ZIP)) {
-            chunk(bytes, what);
+            chunk(bytes, what, decode);
         } else {
             mIn.skip(std::int64_t(bytes), what);
         }
     }
 
-    /// A zip or Blosc chunk: its stored length, and that it decodes to exactly `bytes`.
-    void chunk(std::size_t bytes, const char* what)
+    /// A zip or Blosc chunk: its stored length within the file, and (if `decode`) that it
+    /// decodes to exactly `bytes`. OpenVDB allocates the stored length before reading it.
+    void chunk(std::size_t bytes, const char* what, bool decode)
     {
         const auto stored = mIn.read<std::int64_t>(what);
         if (stored <= 0) {  // stored raw
@@ -159,8 +162,10 @@ private:
             mIn.skip(-stored, what);
             return;
         }
+        if (stored > mIn.remaining()) throw InputError(std::string("corrupt (") + what + " run past the grid's end)");
+        if (!decode) return lengthsOnly(stored, bytes, what);
         const std::string packed = mIn.readBytes(stored, what);
-        if (mCoding.compression & io::COMPRESS_BLOSC) checkBloscHeader(packed, bytes, what);
+        if (mCoding.compression & io::COMPRESS_BLOSC) checkBloscHeader(packed, packed.size(), bytes, what);
         std::string framed(sizeof stored, '\0');
         std::memcpy(framed.data(), &stored, sizeof stored);
         std::istringstream chunkStream(framed + packed);
@@ -176,15 +181,25 @@ private:
         }
     }
 
-    /// Blosc trusts the lengths in its 16-byte header: they must agree with the chunk.
-    static void checkBloscHeader(const std::string& packed, std::size_t bytes, const char* what)
+    /// A chunk left to OpenVDB: only its Blosc header (16 bytes) is read.
+    void lengthsOnly(std::int64_t stored, std::size_t bytes, const char* what)
+    {
+        if (!(mCoding.compression & io::COMPRESS_BLOSC)) return mIn.skip(stored, what);
+        const std::int64_t head = std::min<std::int64_t>(stored, 16);
+        checkBloscHeader(mIn.readBytes(head, what), std::size_t(stored), bytes, what);
+        mIn.skip(stored - head, what);
+    }
+
+    /// Blosc trusts the lengths in its 16-byte header (`packed` starts with it): they must agree
+    /// with the chunk's `stored` length and the `bytes` it decodes to.
+    static void checkBloscHeader(const std::string& packed, std::size_t stored, std::size_t bytes, const char* what)
     {
         std::uint32_t decodedBytes = 0, packedBytes = 0;
         if (packed.size() >= 16) {
             std::memcpy(&decodedBytes, packed.data() + 4, 4);
             std::memcpy(&packedBytes, packed.data() + 12, 4);
         }
-        if (decodedBytes != bytes || packedBytes != packed.size())
+        if (decodedBytes != bytes || packedBytes != stored)
             throw InputError(std::string("corrupt (") + what + " have a damaged Blosc header)");
     }
 
@@ -195,12 +210,14 @@ private:
 
 }  // namespace
 
-void checkVdbFloatTree(BoundedReader& in, const VdbValueCoding& coding, bool throughBuffers)
+void checkVdbFloatTree(BoundedReader& in, const VdbValueCoding& coding, bool throughBuffers, std::int64_t topologyEnd)
 {
     openvdb::initialize();  // the map registry names the transform types
     TreeWalk walk(in, coding);
     walk.transform();
     walk.topology();
+    if (topologyEnd >= 0 && in.position() != topologyEnd)
+        throw InputError("corrupt (the topology does not end where the file says)");
     if (throughBuffers) walk.buffers();
 }
 

@@ -6,7 +6,8 @@
 /// OpenVDB's `RootNode::readTopology` allocates each top-level node with a raw `new` and
 /// inserts it only once its subtree has been read: a throw in between leaks the subtree, and a
 /// throw inside a nested node makes its destructor delete tile values as child pointers. A
-/// chunk whose stored length disagrees with its node overruns OpenVDB's buffers. A tree that
+/// chunk whose stored length disagrees with its node overruns OpenVDB's buffers, and one that
+/// claims more bytes than the file holds is allocated whole before a byte of it is read. A tree that
 /// passes this walk is one OpenVDB reads without throwing.
 
 #include "core/io/bounded_reader.h"
@@ -22,8 +23,10 @@ struct VdbValueCoding {
 };
 
 /// Checks a `Tree_float_5_4_3` grid from its transform on (where `in` stands) through its
-/// topology and, with `throughBuffers`, every leaf's values; leaves `in` where the walk ended.
-/// @throws InputError (not naming the file) saying what is wrong.
-void checkVdbFloatTree(BoundedReader& in, const VdbValueCoding& coding, bool throughBuffers);
+/// topology, which must end at `topologyEnd` unless that is -1 (a file without grid offsets),
+/// and, with `throughBuffers`, every leaf's values (their chunks' lengths); leaves `in` where
+/// the walk ended. @throws InputError (not naming the file) saying what is wrong.
+void checkVdbFloatTree(BoundedReader& in, const VdbValueCoding& coding, bool throughBuffers,
+                       std::int64_t topologyEnd = -1);
 
 }  // namespace sculpt

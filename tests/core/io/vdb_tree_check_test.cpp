@@ -91,6 +91,14 @@ TEST_F(VdbTreeCheck, EndsWhereTheFileSaysForEveryCodingOpenVdbWrites)
     }
 }
 
+// Found by scripts/fuzz.sh: a leaf's Blosc chunk claiming 1.4 TB, which OpenVDB allocates
+// before reading a byte of it. The walk checks the leaves' chunk lengths too.
+TEST_F(VdbTreeCheck, ALeafChunkClaimingMoreThanTheFileHoldsIsRefusedBeforeOpenVdbAllocatesIt)
+{
+    const std::string error = readError(SCULPT_TESTS_DIR "/bad-inputs/vdb_blosc_huge_chunk.vdb");
+    EXPECT_NE(error.find("a leaf's values run past the grid's end"), std::string::npos) << error;
+}
+
 TEST_F(VdbTreeCheck, DamagedTopologyIsRefusedOrReadWhole)
 {
     TempDir dir;
