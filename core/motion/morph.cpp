@@ -64,11 +64,6 @@ bool morphConverged(const ShapeDistance& d, double toleranceWorld, double voxelS
     return d.maxResolvedWorld <= toleranceWorld && d.maxWorld <= toleranceWorld + voxelSize;
 }
 
-double acceptingToleranceVoxels(const MorphSummary& s, double voxelSize)
-{
-    return std::max(s.finalDistanceWorld, s.worstDistanceWorld - voxelSize) / voxelSize;
-}
-
 FieldImage morphStart(const FieldImage& source, const FieldImage& target, bool align, openvdb::Vec3d& shift)
 {
     shift = align ? interiorCentroid(target.grid()) - interiorCentroid(source.grid()) : openvdb::Vec3d(0.0);

@@ -64,9 +64,6 @@ struct MorphSummary {
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& options,
                    const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress = {});
 
-/// The tolerance (in the target's voxels) at which `summary` would count as converged.
-double acceptingToleranceVoxels(const MorphSummary& summary, double voxelSize);
-
 /// Converged: the two-sided distance is within `toleranceWorld` where the target is resolvable,
 /// and within a voxel more at its thin parts and sharp edges (so a thin part the surface never
 /// reached still counts).

@@ -3,7 +3,7 @@
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
-#include "core/motion/morph.h"
+#include "core/motion/morph_verdict.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
@@ -29,24 +29,13 @@ struct MorphCommandOptions {
     MorphOptions morph;
 };
 
-/// How the morph ended and, if not converged, what would help: the stall rule stops a morph
-/// that more steps would not improve (thin parts finer than the target's voxels).
-std::string verdict(const MorphSummary& s, const MorphOptions& o, double voxelSize)
+/// The verdict with the option that does what it suggests.
+std::string verdict(const MorphSummary& s, double voxelSize)
 {
-    char tolerance[32];
-    std::snprintf(tolerance, sizeof tolerance, "%.1f", std::ceil(10.0 * acceptingToleranceVoxels(s, voxelSize)) / 10.0);
-    switch (s.stop) {
-    case MorphStop::Converged: return "converged";
-    case MorphStop::Stalled:
-        return "NOT converged: the surface stopped approaching the target (40 steps without a 1% gain), so more "
-               "steps would not help; its thin parts are finer than the target's voxels resolve: import the target at "
-               "a finer voxel size, or --tolerance " +
-               std::string(tolerance) + " accepts this result";
-    case MorphStop::StepLimit:
-        return "NOT converged: still approaching the target after " + std::to_string(o.maxSteps) +
-               " steps: raise --max-steps";
-    }
-    return "";
+    const char* option = s.stop == MorphStop::Stalled     ? " (--tolerance)"
+                         : s.stop == MorphStop::StepLimit ? " (--max-steps)"
+                                                          : "";
+    return morphVerdict(s, voxelSize) + option;
 }
 
 void runMorph(const MorphCommandOptions& o)
@@ -80,8 +69,7 @@ void runMorph(const MorphCommandOptions& o)
                     summary.translation.z());
     }
     std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps, summary.duration,
-                summary.finalDistanceWorld, target.units().c_str(),
-                verdict(summary, o.morph, target.voxelSize()).c_str());
+                summary.finalDistanceWorld, target.units().c_str(), verdict(summary, target.voxelSize()).c_str());
     if (summary.resolvedFraction < 1.0) {
         std::printf("  measured where the target is at least 2.4 voxels thick (%.1f%% of the surface); at its thinner "
                     "parts and sharp edges: %g %s\n",

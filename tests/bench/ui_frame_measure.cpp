@@ -28,25 +28,26 @@ double percentile(std::vector<double> v, double q)
 
 std::vector<double> numbers(const json& list) { return list.get<std::vector<double>>(); }
 
-void summarise(const std::string& model, const std::vector<json>& r)
+void summarise(const std::string& model, const Reports& r)
 {
     const auto line = [&](const char* what, const std::vector<double>& ms) {
         std::printf("  %-28s median %6.1f ms  p95 %6.1f ms  (%zu frames, %.1f fps)\n", what, percentile(ms, 0.5),
                     percentile(ms, 0.95), ms.size(), 1000.0 / std::max(1e-9, percentile(ms, 0.5)));
     };
-    std::printf("%s: %zu triangles, %zu blocks\n", model.c_str(), r[0]["triangles"].get<std::size_t>(),
-                r[0]["blocks"].get<std::size_t>());
-    line("static", numbers(r[0]["frame_times_ms"]));
-    line("sculpting (10 s stroke)", numbers(r[1]["frame_times_ms"]));
-    const std::vector<double> latency = numbers(r[1]["latencies_ms"]);
+    std::printf("%s: %zu triangles, %zu blocks\n", model.c_str(), r["still"]["triangles"].get<std::size_t>(),
+                r["still"]["blocks"].get<std::size_t>());
+    line("static", numbers(r["still"]["frame_times_ms"]));
+    line("sculpting (10 s stroke)", numbers(r["stroked"]["frame_times_ms"]));
+    const std::vector<double> latency = numbers(r["stroked"]["latencies_ms"]);
     std::printf("  %-28s median %6.1f ms  p95 %6.1f ms\n", "event -> stamp on screen", percentile(latency, 0.5),
                 percentile(latency, 0.95));
-    const double stamps = r[1]["stamps"];
+    const double stamps = r["stroked"]["stamps"];
     std::printf("  %-28s %.0f stamps in 10 s: %.1f per second; %.0f KiB uploaded per stamp vs %.0f KiB whole mesh\n",
-                "stamps", stamps, stamps / 10.0, r[1]["bytes_uploaded"].get<double>() / std::max(1.0, stamps) / 1024.0,
-                r[1]["mesh_bytes"].get<double>() / 1024.0);
-    line(r[3]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)",
-         numbers(r[3]["frame_times_ms"]));
+                "stamps", stamps, stamps / 10.0,
+                r["stroked"]["bytes_uploaded"].get<double>() / std::max(1.0, stamps) / 1024.0,
+                r["stroked"]["mesh_bytes"].get<double>() / 1024.0);
+    line(r["orbiting"]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)",
+         numbers(r["orbiting"]["frame_times_ms"]));
 }
 
 CommandResult replay(const UiEvents& events, const std::string& document, const std::string& extra, const TempDir& dir)
@@ -65,19 +66,19 @@ void measure(const std::string& model, const std::string& document, const std::s
 {
     const auto r = dir / (model + ".jsonl");
     UiEvents sculpting;
-    sculpting.move(760, 400).wait(3.0).report(r).press();
+    sculpting.move(760, 400).wait(3.0).report(r, "still").press();
     for (int i = 1; i <= 600; ++i) {  // 10 s at 60 Hz, circles of 120 px
         const double a = 2.0 * M_PI * i / 150.0;
         sculpting.wait(1.0 / 60.0 - 0.02).move(640 + 120 * std::cos(a), 400 + 120 * std::sin(a));
     }
-    sculpting.release().report(r);
+    sculpting.release().report(r, "stroked");
     UiEvents orbit;
-    orbit.move(200, 650).wait(1.0).report(r).press("right");
+    orbit.move(200, 650).wait(1.0).report(r, "orbit-start").press("right");
     for (int i = 1; i <= 180; ++i) orbit.wait(1.0 / 60.0 - 0.02).move(200 + 3 * i, 650);
-    orbit.report(r).release("right");
+    orbit.report(r, "orbiting").release("right");
     if (replay(sculpting, document, extra, dir).exitCode != 0 || replay(orbit, document, extra, dir).exitCode != 0)
         return;
-    summarise(model, readReports(r));
+    summarise(model, Reports(r));
 }
 
 }  // namespace

@@ -74,29 +74,30 @@ TEST(SculptUi, TheCursorPicksTheSphereWithinHalfAVoxelAndNothingOffIt)
 {
     TempDir dir;
     UiEvents events;
-    for (const auto& [x, y] : {std::pair{kCentreX, kCentreY}, {560.0, 330.0}, {800.0, 520.0}, {900.0, 260.0}}) {
-        events.move(x, y).report(dir / "r.jsonl");
-    }
-    events.move(1150, 600).report(dir / "r.jsonl");  // beside the ball, under no panel
+    const std::pair<double, double> onTheBall[] = {
+        {kCentreX, kCentreY}, {560.0, 330.0}, {800.0, 520.0}, {900.0, 260.0}};
+    for (const auto& [x, y] : onTheBall) events.move(x, y).report(dir / "r.jsonl", "at " + std::to_string(int(x)));
+    events.move(1150, 600).report(dir / "r.jsonl", "beside");  // beside the ball, under no panel
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(dir / "r.jsonl");
+    const Reports reports(dir / "r.jsonl");
     ASSERT_EQ(reports.size(), 5u);
-    for (int i = 0; i < 4; ++i) {
-        ASSERT_TRUE(reports[size_t(i)]["pick"]["hit"].get<bool>()) << i;
-        const auto& p = reports[size_t(i)]["pick"]["position"];
+    for (const auto& [x, y] : onTheBall) {
+        const nlohmann::json& at = reports["at " + std::to_string(int(x))];
+        ASSERT_TRUE(at["pick"]["hit"].get<bool>()) << x;
+        const auto& p = at["pick"]["position"];
         const double radius =
             std::sqrt(p[0].get<double>() * p[0].get<double>() + p[1].get<double>() * p[1].get<double>() +
                       p[2].get<double>() * p[2].get<double>());
-        EXPECT_NEAR(radius, 50.0, 0.25) << "pick " << i;  // half a voxel of 0.5
+        EXPECT_NEAR(radius, 50.0, 0.25) << "pick at " << x;  // half a voxel of 0.5
         EXPECT_GT(p[2].get<double>(), 0.0) << "the front of the ball faces the camera";
-        const auto& n = reports[size_t(i)]["pick"]["normal"];
+        const auto& n = at["pick"]["normal"];
         EXPECT_NEAR(n[0].get<double>() * p[0].get<double>() / radius +
                         n[1].get<double>() * p[1].get<double>() / radius +
                         n[2].get<double>() * p[2].get<double>() / radius,
                     1.0, 0.01);
     }
-    EXPECT_FALSE(reports[4]["pick"]["hit"].get<bool>());
+    EXPECT_FALSE(reports["beside"]["pick"]["hit"].get<bool>());
 }
 
 TEST(SculptUi, AddAndCarveDragsChangeTheVolumeAndCtrlZRestoresTheGridBitForBit)
@@ -104,31 +105,31 @@ TEST(SculptUi, AddAndCarveDragsChangeTheVolumeAndCtrlZRestoresTheGridBitForBit)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.move(560, 380).report(r).screenshot(dir / "before.png");
-    events.drag(560, 380, 720, 400).move(1150, 600).report(r).screenshot(dir / "added.png");
-    events.key("Z", {"ctrl"}).report(r);
-    events.key("C").drag(560, 380, 720, 400).report(r);  // carve tool
-    events.key("Z", {"ctrl"}).report(r);
-    events.key("A").drag(600, 300, 700, 300, 10, {"ctrl"}).report(r);  // add with Ctrl: carves
-    events.key("Z", {"ctrl"}).key("Z", {"ctrl", "shift"}).report(r);   // undo, redo
+    events.move(560, 380).report(r, "before").screenshot(dir / "before.png");
+    events.drag(560, 380, 720, 400).move(1150, 600).report(r, "added").screenshot(dir / "added.png");
+    events.key("Z", {"ctrl"}).report(r, "add-undone");
+    events.key("C").drag(560, 380, 720, 400).report(r, "carved");  // carve tool
+    events.key("Z", {"ctrl"}).report(r, "carve-undone");
+    events.key("A").drag(600, 300, 700, 300, 10, {"ctrl"}).report(r, "ctrl-add");  // add with Ctrl: carves
+    events.key("Z", {"ctrl"}).key("Z", {"ctrl", "shift"}).report(r, "redone");     // undo, redo
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 7u);
-    const std::string original = reports[0]["checksum"];
-    const double volume = reports[0]["volume"];
-    EXPECT_GT(reports[1]["volume"].get<double>(), volume + 100.0);
-    EXPECT_EQ(reports[1]["undo"], 1);
-    EXPECT_TRUE(reports[1]["modified"].get<bool>());
+    const std::string original = reports["before"]["checksum"];
+    const double volume = reports["before"]["volume"];
+    EXPECT_GT(reports["added"]["volume"].get<double>(), volume + 100.0);
+    EXPECT_EQ(reports["added"]["undo"], 1);
+    EXPECT_TRUE(reports["added"]["modified"].get<bool>());
     EXPECT_GT(differingShare(readPng(dir / "before.png"), readPng(dir / "added.png")), 0.002);
-    EXPECT_EQ(reports[2]["checksum"], original);
-    EXPECT_FALSE(reports[2]["modified"].get<bool>());
-    EXPECT_LT(reports[3]["volume"].get<double>(), volume - 100.0);
-    EXPECT_EQ(reports[4]["checksum"], original);
-    EXPECT_LT(reports[5]["volume"].get<double>(), volume - 10.0);
-    EXPECT_EQ(reports[6]["checksum"], reports[5]["checksum"]);  // redo is bit-exact too
-    EXPECT_EQ(reports[6]["euler"], 2);
-    EXPECT_EQ(reports[6]["shells"], 1);
+    EXPECT_EQ(reports["add-undone"]["checksum"], original);
+    EXPECT_FALSE(reports["add-undone"]["modified"].get<bool>());
+    EXPECT_LT(reports["carved"]["volume"].get<double>(), volume - 100.0);
+    EXPECT_EQ(reports["carve-undone"]["checksum"], original);
+    EXPECT_LT(reports["ctrl-add"]["volume"].get<double>(), volume - 10.0);
+    EXPECT_EQ(reports["redone"]["checksum"], reports["ctrl-add"]["checksum"]);  // redo is bit-exact too
+    EXPECT_EQ(reports["redone"]["euler"], 2);
+    EXPECT_EQ(reports["redone"]["shells"], 1);
 }
 
 TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
@@ -136,17 +137,17 @@ TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.move(600, 380).report(r).press().report(r).release().report(r);
+    events.move(600, 380).report(r, "before").press().report(r, "pressed").release().report(r, "released");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    const std::size_t uploaded = reports[1]["uploaded"], changed = reports[1]["mesher_changed"];
-    const std::size_t blocks = reports[1]["blocks"];
+    const std::size_t uploaded = reports["pressed"]["uploaded"], changed = reports["pressed"]["mesher_changed"];
+    const std::size_t blocks = reports["pressed"]["blocks"];
     EXPECT_GT(uploaded, 0u);
-    EXPECT_EQ(uploaded + reports[1]["removed"].get<std::size_t>(), changed);
+    EXPECT_EQ(uploaded + reports["pressed"]["removed"].get<std::size_t>(), changed);
     EXPECT_LT(double(uploaded), 0.05 * double(blocks)) << uploaded << " of " << blocks;
-    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);  // stamped on the press, before any frame
+    EXPECT_NE(reports["pressed"]["checksum"], reports["before"]["checksum"]);  // stamped on the press, before any frame
 }
 
 TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
@@ -161,7 +162,7 @@ TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
         .key("S")
         .drag(560, 350, 700, 360, 10);
     events.key("Z", {"ctrl"}).key("G").drag(640, 300, 660, 250, 8).key("P").drag(520, 500, 700, 520, 10);
-    events.key("B").drag(700, 300, 720, 310, 3).report(dir / "r.jsonl");
+    events.key("B").drag(700, 300, 720, 310, 3).report(dir / "r.jsonl", "end");
     const CommandResult run =
         play(dir, events, (dir / "ball.vdb").string(),
              "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "ui.vdb"));
@@ -169,7 +170,7 @@ TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
     const CommandResult apply = runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string());
     ASSERT_EQ(apply.exitCode, 0) << apply.err;
     EXPECT_NE(apply.out.find("6 strokes"), std::string::npos) << apply.out;
-    const std::string ui = readReports(dir / "r.jsonl").at(0)["checksum"];
+    const std::string ui = Reports(dir / "r.jsonl")["end"]["checksum"];
     EXPECT_EQ(checksumOfFile(dir / "ui.vdb"), ui);
     EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), ui);
     EXPECT_NE(checksumOfFile(dir / "ball.vdb"), ui);
@@ -180,7 +181,7 @@ TEST(SculptUi, ARecordingReplaysToTheSameGridAndAResizeResizesTheView)
     TempDir dir;
     UiEvents events;
     events.key("I").drag(560, 380, 700, 420, 12).key("RightBracket").drag(600, 300, 660, 320, 6, {"ctrl"});
-    events.report(dir / "r.jsonl").resize(800, 600).screenshot(dir / "small.png");
+    events.report(dir / "r.jsonl", "strokes").resize(800, 600).screenshot(dir / "small.png");
     ASSERT_EQ(play(dir, events, "", "--record " + shellQuoted(dir / "recorded.json")).exitCode, 0);
     EXPECT_EQ(readPng(dir / "small.png")->GetDimensions()[0], 800);
     EXPECT_EQ(readPng(dir / "small.png")->GetDimensions()[1], 600);
@@ -188,7 +189,7 @@ TEST(SculptUi, ARecordingReplaysToTheSameGridAndAResizeResizesTheView)
     const CommandResult again =
         runUi("--play recorded.json --state-dir state --save-as replayed.vdb", dir.path().string());
     ASSERT_EQ(again.exitCode, 0) << again.err;
-    const auto report = readReports(dir / "r.jsonl").at(0);
+    const auto report = Reports(dir / "r.jsonl")["strokes"];
     EXPECT_EQ(report["undo"], 2);  // both strokes landed
     const std::string made = report["checksum"];
     EXPECT_EQ(checksumOfFile(dir / "replayed.vdb"), made);
@@ -200,30 +201,61 @@ TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing
     const fs::path r = dir / "r.jsonl";
     std::ofstream(dir / "corrupt.vdb") << "not a vdb file at all";
     UiEvents events;
-    events.drag(560, 380, 700, 380).key("S", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").report(r);
+    events.drag(560, 380, 700, 380)
+        .key("S", {"ctrl"})
+        .text((dir / "saved.vdb").string())
+        .key("Enter")
+        .report(r, "saved");
     // Exporting and opening are jobs: the replay waits for each.
     events.key("E", {"ctrl"}).key("A", {"ctrl"}).text((dir / "saved.stl").string()).key("Enter").untilJobEnds();
-    events.key("O", {"ctrl"}).text((dir / "corrupt.vdb").string()).key("Enter").untilJobEnds().report(r);
+    events.key("O", {"ctrl"})
+        .text((dir / "corrupt.vdb").string())
+        .key("Enter")
+        .untilJobEnds()
+        .report(r, "corrupt-refused");
     events.key("Enter");  // dismisses the error
-    events.key("O", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").untilJobEnds().report(r);
+    events.key("O", {"ctrl"}).text((dir / "saved.vdb").string()).key("Enter").untilJobEnds().report(r, "reopened");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    EXPECT_FALSE(reports[0]["modified"].get<bool>());
-    EXPECT_EQ(reports[0]["title"], "saved.vdb");
-    EXPECT_EQ(checksumOfFile(dir / "saved.vdb"), reports[0]["checksum"]);
+    EXPECT_FALSE(reports["saved"]["modified"].get<bool>());
+    EXPECT_EQ(reports["saved"]["title"], "saved.vdb");
+    EXPECT_EQ(checksumOfFile(dir / "saved.vdb"), reports["saved"]["checksum"]);
     const CommandResult info = runSculpt("info saved.vdb", dir.path().string());
     EXPECT_EQ(info.exitCode, 0) << info.err;
     ASSERT_TRUE(fs::exists(dir / "saved.stl"));
     EXPECT_GT(fs::file_size(dir / "saved.stl"), 84u + 50u * 100000u);  // binary STL of ~390k triangles
 
-    EXPECT_NE(reports[1]["error"].get<std::string>().find("corrupt.vdb"), std::string::npos) << reports[1].dump();
-    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);
-    EXPECT_EQ(reports[1]["title"], "saved.vdb");
-    EXPECT_EQ(reports[2]["error"], "");
-    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);
-    EXPECT_EQ(reports[2]["undo"], 0);  // a freshly opened document
+    EXPECT_NE(reports["corrupt-refused"]["error"].get<std::string>().find("corrupt.vdb"), std::string::npos)
+        << reports["corrupt-refused"].dump();
+    EXPECT_EQ(reports["corrupt-refused"]["checksum"], reports["saved"]["checksum"]);
+    EXPECT_EQ(reports["corrupt-refused"]["title"], "saved.vdb");
+    EXPECT_EQ(reports["reopened"]["error"], "");
+    EXPECT_EQ(reports["reopened"]["checksum"], reports["saved"]["checksum"]);
+    EXPECT_EQ(reports["reopened"]["undo"], 0);  // a freshly opened document
+}
+
+TEST(SculptUi, TheFileChooserListsTheFoldersAndDocumentsAndTabCompletesThePathToOpen)
+{
+    TempDir dir;
+    const fs::path work = dir / "work";
+    fs::create_directories(work / "scans");
+    ASSERT_EQ(runSculpt("new --radius 20 -o sphere_model.vdb", work).exitCode, 0);
+    std::ofstream(work / "notes.txt") << "not listed by Open";
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.key("O", {"ctrl"}).text(work.string() + "/sph").key("Tab").wait(0.3);
+    events.screenshot(dir / "chooser.png").report(r, "completed");
+    events.key("Enter").untilJobEnds().report(r, "opened");
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    EXPECT_EQ(reports["completed"]["prompt"], "open");
+    EXPECT_EQ(reports["completed"]["prompt_path"], (work / "sphere_model.vdb").string());
+    EXPECT_EQ(reports["completed"]["listed"], 2) << "scans/ and sphere_model.vdb, not notes.txt";
+    EXPECT_EQ(reports["opened"]["title"], "sphere_model.vdb") << reports["opened"]["error"];
+    EXPECT_EQ(reports["opened"]["checksum"], checksumOfFile(work / "sphere_model.vdb"));
 }
 
 TEST(SculptUi, AFileOfSeveralLevelSetsAsksWhichToSculptAndKeepsTheOthers)
@@ -238,22 +270,22 @@ TEST(SculptUi, AFileOfSeveralLevelSetsAsksWhichToSculptAndKeepsTheOthers)
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
     events.key("O", {"ctrl"}).text((dir / "pair.vdb").string()).key("Enter").wait(0.3);
-    events.screenshot(dir / "choice.png").report(r).key("2").untilJobEnds().report(r);
-    events.drag(560, 380, 700, 380).key("S", {"ctrl"}).report(r);
+    events.screenshot(dir / "choice.png").report(r, "asking").key("2").untilJobEnds().report(r, "opened-right");
+    events.drag(560, 380, 700, 380).key("S", {"ctrl"}).report(r, "saved");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    EXPECT_EQ(reports[0]["title"], "untitled");  // asking, nothing opened yet
-    EXPECT_EQ(reports[1]["title"], "pair.vdb");
-    EXPECT_EQ(reports[1]["checksum"], formatChecksum(gridChecksum(right.grid())));
-    EXPECT_FALSE(reports[2]["modified"].get<bool>());
+    EXPECT_EQ(reports["asking"]["title"], "untitled");  // asking, nothing opened yet
+    EXPECT_EQ(reports["opened-right"]["title"], "pair.vdb");
+    EXPECT_EQ(reports["opened-right"]["checksum"], formatChecksum(gridChecksum(right.grid())));
+    EXPECT_FALSE(reports["saved"]["modified"].get<bool>());
 
     const VdbLayout saved = scanVdbLayout(dir / "pair.vdb");
     ASSERT_EQ(saved.grids.size(), 2u);
     EXPECT_EQ(saved.editedGrid, "right");
-    EXPECT_EQ(checksumOfFile(dir / "pair.vdb"), reports[2]["checksum"]);
-    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);  // the stroke is in the file
+    EXPECT_EQ(checksumOfFile(dir / "pair.vdb"), reports["saved"]["checksum"]);
+    EXPECT_NE(reports["saved"]["checksum"], reports["opened-right"]["checksum"]);  // the stroke is in the file
     openvdb::io::File file((dir / "pair.vdb").string());
     file.open();
     EXPECT_EQ(file.getMetadata()->metaValue<std::string>("creator"), "Houdini 20");
@@ -266,7 +298,7 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
     const fs::path state = dir / "state";
     UiEvents first;
-    first.drag(560, 380, 700, 420).report(dir / "first.jsonl");
+    first.drag(560, 380, 700, 420).report(dir / "first.jsonl", "stroke");
     first.write(dir / "first.json");
     const std::string args = shellQuoted(dir / "ball.vdb") + " --play " + shellQuoted(dir / "first.json") +
                              " --state-dir " + shellQuoted(state) + " --autosave-seconds 0.5 --stay";
@@ -291,21 +323,21 @@ TEST(SculptUi, AfterAKillTheAutosaveIsOfferedAndRestoresTheGrid)
     ASSERT_FALSE(recovery.empty()) << "no autosave within a minute";
     std::this_thread::sleep_for(std::chrono::milliseconds(300));
     ASSERT_TRUE(ui.killProgram()) << "the sculpt-ui this test started is not running";
-    const auto firstReports = readReports(dir / "first.jsonl");
+    const Reports firstReports(dir / "first.jsonl");
     ASSERT_EQ(firstReports.size(), 1u);
     ASSERT_TRUE(fs::exists(recovery)) << "a killed program leaves its autosave";
 
     UiEvents second;
-    second.report(dir / "second.jsonl").key("R").report(dir / "second.jsonl");
+    second.report(dir / "second.jsonl", "offered").key("R").report(dir / "second.jsonl", "recovered");
     const CommandResult run = play(dir, second, (dir / "ball.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(dir / "second.jsonl");
+    const Reports reports(dir / "second.jsonl");
     ASSERT_EQ(reports.size(), 2u);
-    EXPECT_TRUE(reports[0]["recovery_offered"].get<bool>());
-    EXPECT_EQ(reports[0]["checksum"], checksumOfFile(dir / "ball.vdb"));
-    EXPECT_FALSE(reports[1]["recovery_offered"].get<bool>());
-    EXPECT_EQ(reports[1]["checksum"], firstReports[0]["checksum"]);
-    EXPECT_TRUE(reports[1]["modified"].get<bool>()) << "recovered work is not saved yet";
+    EXPECT_TRUE(reports["offered"]["recovery_offered"].get<bool>());
+    EXPECT_EQ(reports["offered"]["checksum"], checksumOfFile(dir / "ball.vdb"));
+    EXPECT_FALSE(reports["recovered"]["recovery_offered"].get<bool>());
+    EXPECT_EQ(reports["recovered"]["checksum"], firstReports["stroke"]["checksum"]);
+    EXPECT_TRUE(reports["recovered"]["modified"].get<bool>()) << "recovered work is not saved yet";
 }
 
 TEST(SculptUi, NewAndQuitWithUnsavedChangesAskFirst)
@@ -313,22 +345,37 @@ TEST(SculptUi, NewAndQuitWithUnsavedChangesAskFirst)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).drag(560, 380, 700, 380).key("N", {"ctrl"}).report(r).key("D").report(r).key("Enter").report(r);
-    events.drag(560, 380, 700, 380).quit().report(r).key("Escape").report(r).quit().key("D").wait(2.0).report(r);
+    events.report(r, "start")
+        .drag(560, 380, 700, 380)
+        .key("N", {"ctrl"})
+        .report(r, "asking-new")
+        .key("D")
+        .report(r, "new-prompt")
+        .key("Enter")
+        .report(r, "new-ball");
+    events.drag(560, 380, 700, 380)
+        .quit()
+        .report(r, "asking-quit")
+        .key("Escape")
+        .report(r, "quit-cancelled")
+        .quit()
+        .key("D")
+        .wait(2.0)
+        .report(r, "after-discard");
     const CommandResult run = play(dir, events, "", "--stay");
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 6u) << "the program quit after Discard, before the last report";
-    EXPECT_TRUE(reports[1]["asking_unsaved"].get<bool>());
-    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);
-    EXPECT_EQ(reports[2]["prompt"], "new");  // discarded: the New dialog
-    EXPECT_EQ(reports[3]["prompt"], "none");
-    EXPECT_EQ(reports[3]["checksum"], reports[0]["checksum"]);  // a new clay ball, the default shape
-    EXPECT_FALSE(reports[3]["modified"].get<bool>());
-    EXPECT_EQ(reports[3]["undo"], 0);
-    EXPECT_TRUE(reports[4]["asking_unsaved"].get<bool>());
-    EXPECT_FALSE(reports[5]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
-    EXPECT_TRUE(reports[5]["modified"].get<bool>());
+    EXPECT_TRUE(reports["asking-new"]["asking_unsaved"].get<bool>());
+    EXPECT_NE(reports["asking-new"]["checksum"], reports["start"]["checksum"]);
+    EXPECT_EQ(reports["new-prompt"]["prompt"], "new");  // discarded: the New dialog
+    EXPECT_EQ(reports["new-ball"]["prompt"], "none");
+    EXPECT_EQ(reports["new-ball"]["checksum"], reports["start"]["checksum"]);  // a new clay ball, the default shape
+    EXPECT_FALSE(reports["new-ball"]["modified"].get<bool>());
+    EXPECT_EQ(reports["new-ball"]["undo"], 0);
+    EXPECT_TRUE(reports["asking-quit"]["asking_unsaved"].get<bool>());
+    EXPECT_FALSE(reports["quit-cancelled"]["asking_unsaved"].get<bool>());  // Escape cancelled: still running
+    EXPECT_TRUE(reports["quit-cancelled"]["modified"].get<bool>());
 }
 
 TEST(SculptUi, ClosingTheWindowMidStrokeKeepsTheStrokeAndAsksToSaveIt)
@@ -336,16 +383,16 @@ TEST(SculptUi, ClosingTheWindowMidStrokeKeepsTheStrokeAndAsksToSaveIt)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).move(560, 380).press();
+    events.report(r, "start").move(560, 380).press();
     for (int i = 1; i <= 10; ++i) events.move(560 + 14 * i, 380);
-    events.quit().report(r);  // the window closed with the button still held
+    events.quit().report(r, "closed");  // the window closed with the button still held
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 2u);
-    EXPECT_NE(reports[1]["checksum"], reports[0]["checksum"]);
-    EXPECT_EQ(reports[1]["undo"], 1) << "the stroke ends as one undo step";
-    EXPECT_TRUE(reports[1]["asking_unsaved"].get<bool>()) << "closing was ignored mid-stroke";
+    EXPECT_NE(reports["closed"]["checksum"], reports["start"]["checksum"]);
+    EXPECT_EQ(reports["closed"]["undo"], 1) << "the stroke ends as one undo step";
+    EXPECT_TRUE(reports["closed"]["asking_unsaved"].get<bool>()) << "closing was ignored mid-stroke";
 }
 
 TEST(SculptUi, AnInternalErrorSavesTheWorkSaysSoAndTheWindowGoesOn)
@@ -353,26 +400,26 @@ TEST(SculptUi, AnInternalErrorSavesTheWorkSaysSoAndTheWindowGoesOn)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.drag(560, 380, 700, 380).fault("bad_alloc").report(r).key("Enter");
+    events.drag(560, 380, 700, 380).fault("bad_alloc").report(r, "bad-alloc").key("Enter");
     events.move(560, 420).press();
     for (int i = 1; i <= 5; ++i) events.move(560 + 20 * i, 420);
-    events.fault("openvdb").report(r).release().key("Enter");  // mid-stroke
-    events.drag(560, 450, 700, 450).report(r);
+    events.fault("openvdb").report(r, "openvdb").release().key("Enter");  // mid-stroke
+    events.drag(560, 450, 700, 450).report(r, "after");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    const std::string first = reports[0]["error"];
+    const std::string first = reports["bad-alloc"]["error"];
     EXPECT_EQ(first.rfind("internal error: out of memory", 0), 0u) << first;
     EXPECT_NE(first.find("your work is saved in " + (dir / "state" / "recovery").string()), std::string::npos) << first;
-    EXPECT_EQ(reports[0]["undo"], 1);
-    const std::string second = reports[1]["error"];
+    EXPECT_EQ(reports["bad-alloc"]["undo"], 1);
+    const std::string second = reports["openvdb"]["error"];
     EXPECT_EQ(second.rfind("internal error: ", 0), 0u) << second;
     EXPECT_NE(second.find("a fault event"), std::string::npos) << second;
-    EXPECT_EQ(reports[1]["undo"], 2) << "the stroke the error cut short is kept";
-    EXPECT_EQ(reports[2]["error"], "");
-    EXPECT_EQ(reports[2]["undo"], 3) << "the window sculpts on";
-    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);
+    EXPECT_EQ(reports["openvdb"]["undo"], 2) << "the stroke the error cut short is kept";
+    EXPECT_EQ(reports["after"]["error"], "");
+    EXPECT_EQ(reports["after"]["undo"], 3) << "the window sculpts on";
+    EXPECT_NE(reports["after"]["checksum"], reports["openvdb"]["checksum"]);
     EXPECT_NE(run.err.find("sculpt-ui: internal error"), std::string::npos) << run.err;
 }
 
@@ -382,25 +429,25 @@ TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothin
     ASSERT_EQ(runSculpt("new -o clay.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).key("S", {"alt"}).text("5000").key("Enter").wait(0.5).report(r);
+    events.report(r, "start").key("S", {"alt"}).text("5000").key("Enter").wait(0.5).report(r, "running");
     for (int i = 0; i < 4; ++i) events.key("Left").wait(0.2);  // orbit while it runs
-    events.report(r).screenshot(dir / "job.png").key("Escape").untilJobEnds().report(r);
+    events.report(r, "orbited").screenshot(dir / "job.png").key("Escape").untilJobEnds().report(r, "cancelled");
     const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 4u);
-    const std::string original = reports[0]["checksum"];
-    ASSERT_TRUE(reports[1]["job"].is_object()) << reports[1].dump();
-    EXPECT_EQ(reports[1]["job"]["label"], "smooth 5000");
-    ASSERT_TRUE(reports[2]["job"].is_object()) << "5000 iterations cannot be over in a second";
+    const std::string original = reports["start"]["checksum"];
+    ASSERT_TRUE(reports["running"]["job"].is_object()) << reports["running"].dump();
+    EXPECT_EQ(reports["running"]["job"]["label"], "smooth 5000");
+    ASSERT_TRUE(reports["orbited"]["job"].is_object()) << "5000 iterations cannot be over in a second";
     // Frames kept coming while the job ran: at least one per orbit.
-    EXPECT_GE(reports[2]["frame"].get<int>() - reports[1]["frame"].get<int>(), 4);
-    EXPECT_EQ(reports[2]["checksum"], original);  // the job works on its own copy
-    EXPECT_EQ(reports[3]["last_job"], "cancelled");
-    EXPECT_TRUE(reports[3]["job"].is_null());
-    EXPECT_EQ(reports[3]["checksum"], original);
-    EXPECT_EQ(reports[3]["undo"], 0);
-    EXPECT_FALSE(reports[3]["modified"].get<bool>());
+    EXPECT_GE(reports["orbited"]["frame"].get<int>() - reports["running"]["frame"].get<int>(), 4);
+    EXPECT_EQ(reports["orbited"]["checksum"], original);  // the job works on its own copy
+    EXPECT_EQ(reports["cancelled"]["last_job"], "cancelled");
+    EXPECT_TRUE(reports["cancelled"]["job"].is_null());
+    EXPECT_EQ(reports["cancelled"]["checksum"], original);
+    EXPECT_EQ(reports["cancelled"]["undo"], 0);
+    EXPECT_FALSE(reports["cancelled"]["modified"].get<bool>());
 }
 
 TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
@@ -410,23 +457,30 @@ TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
     ASSERT_EQ(runSculpt("smooth clay.vdb --iterations 8 -o cli.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).key("S", {"alt"}).text("8").key("Enter").untilJobEnds().report(r);
-    events.key("O", {"alt"}).text("2").key("Enter").untilJobEnds().report(r);
-    events.key("Z", {"ctrl"}).report(r).key("Z", {"ctrl"}).report(r).key("Z", {"ctrl", "shift"}).report(r);
+    events.report(r, "start").key("S", {"alt"}).text("8").key("Enter").untilJobEnds().report(r, "smoothed");
+    events.key("O", {"alt"}).text("2").key("Enter").untilJobEnds().report(r, "offset");
+    events.key("Z", {"ctrl"})
+        .report(r, "undo-offset")
+        .key("Z", {"ctrl"})
+        .report(r, "undo-smooth")
+        .key("Z", {"ctrl", "shift"})
+        .report(r, "redo-smooth");
     const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 6u);
-    EXPECT_EQ(reports[1]["last_job"], "finished") << reports[1]["error"];
-    EXPECT_EQ(reports[1]["undo"], 1);
-    EXPECT_EQ(reports[1]["checksum"], checksumOfFile(dir / "cli.vdb"));  // as `sculpt smooth` does it
-    EXPECT_TRUE(reports[1]["modified"].get<bool>());
-    EXPECT_EQ(reports[2]["undo"], 2);
-    EXPECT_GT(reports[2]["volume"].get<double>(), 1.1 * reports[1]["volume"].get<double>());  // offset by 2
-    EXPECT_EQ(reports[3]["checksum"], reports[1]["checksum"]);  // each undo is one filter, bit for bit
-    EXPECT_EQ(reports[4]["checksum"], reports[0]["checksum"]);
-    EXPECT_FALSE(reports[4]["modified"].get<bool>());
-    EXPECT_EQ(reports[5]["checksum"], reports[1]["checksum"]);
+    EXPECT_EQ(reports["smoothed"]["last_job"], "finished") << reports["smoothed"]["error"];
+    EXPECT_EQ(reports["smoothed"]["undo"], 1);
+    EXPECT_EQ(reports["smoothed"]["checksum"], checksumOfFile(dir / "cli.vdb"));  // as `sculpt smooth` does it
+    EXPECT_TRUE(reports["smoothed"]["modified"].get<bool>());
+    EXPECT_EQ(reports["offset"]["undo"], 2);
+    EXPECT_GT(reports["offset"]["volume"].get<double>(),
+              1.1 * reports["smoothed"]["volume"].get<double>());  // offset by 2
+    EXPECT_EQ(reports["undo-offset"]["checksum"],
+              reports["smoothed"]["checksum"]);  // each undo is one filter, bit for bit
+    EXPECT_EQ(reports["undo-smooth"]["checksum"], reports["start"]["checksum"]);
+    EXPECT_FALSE(reports["undo-smooth"]["modified"].get<bool>());
+    EXPECT_EQ(reports["redo-smooth"]["checksum"], reports["smoothed"]["checksum"]);
 }
 
 TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFrameIsOneUndoStep)
@@ -439,38 +493,38 @@ TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFr
     ASSERT_EQ(runSculpt("morph ball.vdb torus.vdb -o cli", dir.path()).exitCode, 0);  // 10 frames
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).screenshot(dir / "ball.png").key("M", {"alt"}).text("torus.vdb").key("Enter");
-    events.untilJobEnds().report(r);
+    events.report(r, "start").screenshot(dir / "ball.png").key("M", {"alt"}).text("torus.vdb").key("Enter");
+    events.untilJobEnds().report(r, "frames");
     for (int i = 0; i < 9; ++i) events.key("PageUp");
-    events.report(r).key("PageDown").key("PageDown").key("PageDown").screenshot(dir / "frame3.png");
-    events.key("Space").untilJobEnds().report(r);  // plays to the last frame at 8 frames a second
-    events.key("E", {"shift"}).key("Enter").key("K").report(r).key("Z", {"ctrl"}).report(r);
+    events.report(r, "first-frame").key("PageDown").key("PageDown").key("PageDown").screenshot(dir / "frame3.png");
+    events.key("Space").untilJobEnds().report(r, "played");  // plays to the last frame at 8 frames a second
+    events.key("E", {"shift"}).key("Enter").key("K").report(r, "kept").key("Z", {"ctrl"}).report(r, "kept-undone");
     const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 6u);
-    const std::string original = reports[0]["checksum"];
-    EXPECT_EQ(reports[1]["last_job"], "finished") << reports[1]["error"];
-    ASSERT_TRUE(reports[1]["morph"].is_object());
-    EXPECT_EQ(reports[1]["morph"]["frames"], 10);
-    EXPECT_EQ(reports[1]["morph"]["shown"], 9);
-    EXPECT_TRUE(reports[1]["morph"]["converged"].get<bool>());
-    EXPECT_EQ(reports[1]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
-    EXPECT_EQ(reports[1]["checksum"], original);   // frames on show, the document unchanged
-    EXPECT_EQ(reports[1]["target"], "torus.vdb");  // the target, shown as a ghost over the frames
-    EXPECT_GT(reports[1]["ghost_triangles"].get<int>(), 500);
-    EXPECT_EQ(reports[2]["morph"]["shown"], 0);
-    EXPECT_EQ(reports[2]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0000.vdb"));
+    const std::string original = reports["start"]["checksum"];
+    EXPECT_EQ(reports["frames"]["last_job"], "finished") << reports["frames"]["error"];
+    ASSERT_TRUE(reports["frames"]["morph"].is_object());
+    EXPECT_EQ(reports["frames"]["morph"]["frames"], 10);
+    EXPECT_EQ(reports["frames"]["morph"]["shown"], 9);
+    EXPECT_TRUE(reports["frames"]["morph"]["converged"].get<bool>());
+    EXPECT_EQ(reports["frames"]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
+    EXPECT_EQ(reports["frames"]["checksum"], original);   // frames on show, the document unchanged
+    EXPECT_EQ(reports["frames"]["target"], "torus.vdb");  // the target, shown as a ghost over the frames
+    EXPECT_GT(reports["frames"]["ghost_triangles"].get<int>(), 500);
+    EXPECT_EQ(reports["first-frame"]["morph"]["shown"], 0);
+    EXPECT_EQ(reports["first-frame"]["morph"]["checksum"], checksumOfFile(dir / "cli" / "frame_0000.vdb"));
     EXPECT_GT(differingShare(readPng(dir / "ball.png"), readPng(dir / "frame3.png")), 0.005);
-    EXPECT_EQ(reports[3]["morph"]["shown"], 9);
+    EXPECT_EQ(reports["played"]["morph"]["shown"], 9);
     for (const char* frame : {"frame_0000.vdb", "frame_0004.vdb", "frame_0009.vdb"}) {
         EXPECT_EQ(checksumOfFile(dir / "morph" / frame), checksumOfFile(dir / "cli" / frame)) << frame;
     }
-    EXPECT_TRUE(reports[4]["morph"].is_null());
-    EXPECT_EQ(reports[4]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
-    EXPECT_EQ(reports[4]["undo"], 1);
-    EXPECT_EQ(reports[4]["euler"], 0);  // the torus
-    EXPECT_EQ(reports[5]["checksum"], original);
+    EXPECT_TRUE(reports["kept"]["morph"].is_null());
+    EXPECT_EQ(reports["kept"]["checksum"], checksumOfFile(dir / "cli" / "frame_0009.vdb"));
+    EXPECT_EQ(reports["kept"]["undo"], 1);
+    EXPECT_EQ(reports["kept"]["euler"], 0);  // the torus
+    EXPECT_EQ(reports["kept-undone"]["checksum"], original);
 }
 
 TEST(SculptUi, AMorphCancelledHalfWayLeavesTheDocumentAsItWas)
@@ -480,18 +534,18 @@ TEST(SculptUi, AMorphCancelledHalfWayLeavesTheDocumentAsItWas)
     ASSERT_EQ(runSculpt("new --shape box --radius 36 -o box.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).key("M", {"alt"}).text("box.vdb").key("Enter").wait(1.0).report(r);
-    events.key("Escape").untilJobEnds().report(r);
+    events.report(r, "start").key("M", {"alt"}).text("box.vdb").key("Enter").wait(1.0).report(r, "running");
+    events.key("Escape").untilJobEnds().report(r, "cancelled");
     const CommandResult run = play(dir, events, (dir / "clay.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    ASSERT_TRUE(reports[1]["job"].is_object()) << "the morph cannot be over in a second";
-    EXPECT_EQ(reports[1]["job"]["label"], "morph to box.vdb");
-    EXPECT_EQ(reports[2]["last_job"], "cancelled");
-    EXPECT_TRUE(reports[2]["morph"].is_null());
-    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);
-    EXPECT_EQ(reports[2]["undo"], 0);
+    ASSERT_TRUE(reports["running"]["job"].is_object()) << "the morph cannot be over in a second";
+    EXPECT_EQ(reports["running"]["job"]["label"], "morph to box.vdb");
+    EXPECT_EQ(reports["cancelled"]["last_job"], "cancelled");
+    EXPECT_TRUE(reports["cancelled"]["morph"].is_null());
+    EXPECT_EQ(reports["cancelled"]["checksum"], reports["start"]["checksum"]);
+    EXPECT_EQ(reports["cancelled"]["undo"], 0);
 }
 
 TEST(SculptUi, TheScalesViewDrawsDiscsWhereTheSurfaceIsWithFarFewerPrimitives)
@@ -499,13 +553,14 @@ TEST(SculptUi, TheScalesViewDrawsDiscsWhereTheSurfaceIsWithFarFewerPrimitives)
     TempDir dir;
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.screenshot(dir / "plain.png").key("V").screenshot(dir / "scales.png").report(r);
+    events.screenshot(dir / "plain.png").key("V").screenshot(dir / "scales.png").report(r, "scales");
     events.key("V").screenshot(dir / "back.png");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 1u);
-    const double scales = reports[0]["scales"].get<double>(), triangles = reports[0]["triangles"].get<double>();
+    const double scales = reports["scales"]["scales"].get<double>(),
+                 triangles = reports["scales"]["triangles"].get<double>();
     // A scale per 3-voxel cell the clay ball's surface passes through (area 31,416, cells of 1.5):
     // a surface of area A meets about 1.5 A / c^2 cubic cells of side c, here 20,944.
     const double expected = 1.5 * 31416.0 / (1.5 * 1.5);
@@ -536,23 +591,23 @@ TEST(SculptUi, TheFollowBrushPullsTheSurfaceUnderItOntoTheTargetAndNothingElse)
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
     events.screenshot(dir / "plain.png").key("T", {"ctrl"}).text("box.vdb").key("Enter").untilJobEnds();
-    events.report(r).screenshot(dir / "ghost.png").key("H").screenshot(dir / "hidden.png").key("H");
-    events.key("O").drag(600, 400, 690, 410, 30).drag(690, 380, 600, 390, 30).report(r);
-    events.key("Z", {"ctrl"}).key("Z", {"ctrl"}).report(r);
+    events.report(r, "target").screenshot(dir / "ghost.png").key("H").screenshot(dir / "hidden.png").key("H");
+    events.key("O").drag(600, 400, 690, 410, 30).drag(690, 380, 600, 390, 30).report(r, "followed");
+    events.key("Z", {"ctrl"}).key("Z", {"ctrl"}).report(r, "undone");
     const CommandResult run =
         play(dir, events, (dir / "ball.vdb").string(),
              "--stroke-log " + shellQuoted(dir / "strokes.json") + " --save-as " + shellQuoted(dir / "undone.vdb"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    EXPECT_EQ(reports[0]["target"], "box.vdb") << reports[0]["error"];
-    EXPECT_GT(reports[0]["ghost_triangles"].get<int>(), 1000);
+    EXPECT_EQ(reports["target"]["target"], "box.vdb") << reports["target"]["error"];
+    EXPECT_GT(reports["target"]["ghost_triangles"].get<int>(), 1000);
     const auto plain = readPng(dir / "plain.png"), ghost = readPng(dir / "ghost.png");
     EXPECT_GT(differingShare(plain, ghost), 0.05);                         // the ghost is drawn over the ball
     EXPECT_LT(differingShare(plain, readPng(dir / "hidden.png")), 0.005);  // H hides it
-    EXPECT_EQ(reports[1]["undo"], 2);
-    EXPECT_EQ(reports[2]["checksum"], reports[0]["checksum"]);  // undo restores the grid bit for bit
-    EXPECT_EQ(checksumOfFile(dir / "undone.vdb"), reports[0]["checksum"]);
+    EXPECT_EQ(reports["followed"]["undo"], 2);
+    EXPECT_EQ(reports["undone"]["checksum"], reports["target"]["checksum"]);  // undo restores the grid bit for bit
+    EXPECT_EQ(checksumOfFile(dir / "undone.vdb"), reports["target"]["checksum"]);
 
     // The two strokes again, by `sculpt apply` of the log the window wrote (it names box.vdb),
     // without its undos.
@@ -616,31 +671,31 @@ TEST(SculptUi, TheImportPanelPreviewsTheIsoValueLiveAndAppliesTheGridTheCommandL
     ASSERT_EQ(runSculpt(std::string("import ") + mri + " --largest-component -o cli.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds();
-    events.report(r).screenshot(dir / "otsu.png");
+    events.report(r, "start").key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds();
+    events.report(r, "otsu").screenshot(dir / "otsu.png");
     for (int i = 0; i < 8; ++i) events.key("PageUp");
-    events.wait(0.3).report(r).screenshot(dir / "higher.png");
-    events.key("Escape").report(r);  // cancelled: nothing changed
-    events.key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds().key("Enter").untilJobEnds().report(r);
+    events.wait(0.3).report(r, "higher").screenshot(dir / "higher.png");
+    events.key("Escape").report(r, "cancelled");  // cancelled: nothing changed
+    events.key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds().key("Enter").untilJobEnds().report(r, "applied");
     const CommandResult run = play(dir, events);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 5u);
-    const std::string original = reports[0]["checksum"];
-    ASSERT_TRUE(reports[1].contains("import")) << reports[1]["error"];
-    EXPECT_EQ(reports[1]["import"]["iso"], reports[1]["import"]["otsu"]);  // Otsu's by default
-    EXPECT_GT(reports[1]["import"]["preview_triangles"].get<int>(), 10000);
-    EXPECT_EQ(reports[1]["checksum"], original);
+    const std::string original = reports["start"]["checksum"];
+    ASSERT_TRUE(reports["otsu"].contains("import")) << reports["otsu"]["error"];
+    EXPECT_EQ(reports["otsu"]["import"]["iso"], reports["otsu"]["import"]["otsu"]);  // Otsu's by default
+    EXPECT_GT(reports["otsu"]["import"]["preview_triangles"].get<int>(), 10000);
+    EXPECT_EQ(reports["otsu"]["checksum"], original);
     // Eight steps up by 1% of the range; the preview follows, the document does not.
-    EXPECT_GT(reports[2]["import"]["iso"].get<double>(), reports[1]["import"]["iso"].get<double>());
-    EXPECT_EQ(reports[2]["checksum"], original);
-    EXPECT_FALSE(reports[2]["preview_latencies_ms"].empty());
+    EXPECT_GT(reports["higher"]["import"]["iso"].get<double>(), reports["otsu"]["import"]["iso"].get<double>());
+    EXPECT_EQ(reports["higher"]["checksum"], original);
+    EXPECT_FALSE(reports["higher"]["preview_latencies_ms"].empty());
     EXPECT_GT(differingShare(readPng(dir / "otsu.png"), readPng(dir / "higher.png")), 0.01);
-    EXPECT_FALSE(reports[3].contains("import"));
-    EXPECT_EQ(reports[3]["checksum"], original);
-    EXPECT_EQ(reports[4]["last_job"], "finished") << reports[4]["error"];
-    EXPECT_EQ(reports[4]["checksum"], checksumOfFile(dir / "cli.vdb"));  // Otsu, largest piece, 1 mm
-    EXPECT_EQ(reports[4]["shells"], 1);
+    EXPECT_FALSE(reports["cancelled"].contains("import"));
+    EXPECT_EQ(reports["cancelled"]["checksum"], original);
+    EXPECT_EQ(reports["applied"]["last_job"], "finished") << reports["applied"]["error"];
+    EXPECT_EQ(reports["applied"]["checksum"], checksumOfFile(dir / "cli.vdb"));  // Otsu, largest piece, 1 mm
+    EXPECT_EQ(reports["applied"]["shells"], 1);
 }
 
 TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheSceneItSaves)
@@ -649,21 +704,21 @@ TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheScene
     ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r).screenshot(dir / "plain.png");
+    events.report(r, "start").screenshot(dir / "plain.png");
     events.move(600, 380).key("A", {"shift"}).move(700, 420).key("A", {"shift"});
-    events.drag(700, 420, 660, 300, 10).screenshot(dir / "xray.png").report(r);  // the second one dragged up
+    events.drag(700, 420, 660, 300, 10).screenshot(dir / "xray.png").report(r, "placed");  // the second one dragged up
     events.key("Z", {"alt"}).screenshot(dir / "opaque.png").key("Z", {"alt"});
     events.key("S", {"ctrl", "alt"}).text("scene.json").key("Enter");
-    events.key("Enter").untilJobEnds().report(r).key("Z", {"ctrl"}).report(r);
+    events.key("Enter").untilJobEnds().report(r, "baked").key("Z", {"ctrl"}).report(r, "bake-undone");
     const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 4u);
-    ASSERT_TRUE(reports[1].contains("primitives")) << reports[1]["error"];
-    EXPECT_EQ(reports[1]["primitives"]["count"], 2);
-    EXPECT_GT(reports[1]["primitives"]["preview_triangles"].get<int>(), 1000);
-    EXPECT_TRUE(reports[1]["xray"].get<bool>());
-    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);  // nothing baked yet
+    ASSERT_TRUE(reports["placed"].contains("primitives")) << reports["placed"]["error"];
+    EXPECT_EQ(reports["placed"]["primitives"]["count"], 2);
+    EXPECT_GT(reports["placed"]["primitives"]["preview_triangles"].get<int>(), 1000);
+    EXPECT_TRUE(reports["placed"]["xray"].get<bool>());
+    EXPECT_EQ(reports["placed"]["checksum"], reports["start"]["checksum"]);  // nothing baked yet
     const auto plain = readPng(dir / "plain.png"), xray = readPng(dir / "xray.png");
     EXPECT_GT(differingShare(plain, xray), 0.1);                        // the see-through clay
     EXPECT_GT(differingShare(xray, readPng(dir / "opaque.png")), 0.1);  // Alt+Z makes it opaque again
@@ -677,11 +732,11 @@ TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheScene
 
     const CommandResult build = runSculpt("build scene.json --into ball.vdb -o cli.vdb", dir.path());
     ASSERT_EQ(build.exitCode, 0) << build.err;
-    EXPECT_EQ(reports[2]["last_job"], "finished") << reports[2]["error"];
-    EXPECT_EQ(reports[2]["checksum"], checksumOfFile(dir / "cli.vdb"));
-    EXPECT_GT(reports[2]["volume"].get<double>(), reports[0]["volume"].get<double>() + 100.0);
-    EXPECT_EQ(reports[2]["undo"], 1);
-    EXPECT_EQ(reports[3]["checksum"], reports[0]["checksum"]);
+    EXPECT_EQ(reports["baked"]["last_job"], "finished") << reports["baked"]["error"];
+    EXPECT_EQ(reports["baked"]["checksum"], checksumOfFile(dir / "cli.vdb"));
+    EXPECT_GT(reports["baked"]["volume"].get<double>(), reports["start"]["volume"].get<double>() + 100.0);
+    EXPECT_EQ(reports["baked"]["undo"], 1);
+    EXPECT_EQ(reports["bake-undone"]["checksum"], reports["start"]["checksum"]);
 }
 
 mode_t modeOf(const fs::path& path)
@@ -696,22 +751,22 @@ TEST(SculptUi, ImportingASliceThatMakesGdcmAbortShowsAnErrorAndTheSessionAndDocu
     fs::copy(SCULPT_TESTS_DIR "/bad-inputs/dicom_gdcm_abort", dir / "abort");
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.drag(560, 380, 700, 380).report(r);  // unsaved work
-    events.key("I", {"ctrl"}).text((dir / "abort").string()).key("Enter").untilJobEnds().report(r);
-    events.key("Enter");                        // dismisses the error
-    events.drag(560, 420, 700, 420).report(r);  // and sculpting goes on
-    const mode_t saved = umask(0);              // the widest: the state must be private whatever the user's umask
+    events.drag(560, 380, 700, 380).report(r, "stroke");  // unsaved work
+    events.key("I", {"ctrl"}).text((dir / "abort").string()).key("Enter").untilJobEnds().report(r, "refused");
+    events.key("Enter");                                        // dismisses the error
+    events.drag(560, 420, 700, 420).report(r, "sculpting-on");  // and sculpting goes on
+    const mode_t saved = umask(0);  // the widest: the state must be private whatever the user's umask
     const CommandResult run = play(dir, events);
     umask(saved);
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto reports = readReports(r);
+    const Reports reports(r);
     ASSERT_EQ(reports.size(), 3u);
-    EXPECT_NE(reports[1]["error"].get<std::string>().find("slice_2.dcm: the DICOM reader failed on this file"),
+    EXPECT_NE(reports["refused"]["error"].get<std::string>().find("slice_2.dcm: the DICOM reader failed on this file"),
               std::string::npos)
-        << reports[1].dump();
-    EXPECT_EQ(reports[1]["checksum"], reports[0]["checksum"]);
-    EXPECT_TRUE(reports[1]["modified"].get<bool>());
-    EXPECT_NE(reports[2]["checksum"], reports[1]["checksum"]);
+        << reports["refused"].dump();
+    EXPECT_EQ(reports["refused"]["checksum"], reports["stroke"]["checksum"]);
+    EXPECT_TRUE(reports["refused"]["modified"].get<bool>());
+    EXPECT_NE(reports["sculpting-on"]["checksum"], reports["refused"]["checksum"]);
     // The work was autosaved before the file was read (the clean quit then removed the copy;
     // its mode is ui_unit_tests' Autosave case); the state is the user's alone.
     EXPECT_NE(run.out.find("sculpt-ui: autosaved to " + (dir / "state" / "recovery").string()), std::string::npos)

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <signal.h>
 #include <sstream>
+#include <stdexcept>
 
 namespace sculpt::test {
 
@@ -48,9 +49,9 @@ UiEvents& UiEvents::key(const std::string& name, const std::vector<std::string>&
 }
 
 UiEvents& UiEvents::text(const std::string& characters) { return add({{"type", "text"}, {"text", characters}}); }
-UiEvents& UiEvents::report(const std::filesystem::path& path)
+UiEvents& UiEvents::report(const std::filesystem::path& path, const std::string& name)
 {
-    return add({{"type", "report"}, {"path", path.string()}});
+    return add({{"type", "report"}, {"path", path.string()}, {"name", name}});
 }
 UiEvents& UiEvents::screenshot(const std::filesystem::path& path)
 {
@@ -136,12 +137,22 @@ CommandResult runUi(const std::string& args, const std::string& workDir)
     return result;
 }
 
-std::vector<nlohmann::json> readReports(const std::filesystem::path& path)
+Reports::Reports(const std::filesystem::path& path) : mPath(path)
 {
-    std::vector<nlohmann::json> reports;
     std::ifstream in(path);
-    for (std::string line; std::getline(in, line);) reports.push_back(nlohmann::json::parse(line));
-    return reports;
+    for (std::string line; std::getline(in, line);) {
+        nlohmann::json report = nlohmann::json::parse(line);
+        const std::string name = report.value("name", std::string());
+        if (!mLines.emplace(name, std::move(report)).second)
+            throw std::logic_error(path.string() + ": two reports are called \"" + name + "\"");
+    }
+}
+
+const nlohmann::json& Reports::operator[](const std::string& name) const
+{
+    const auto it = mLines.find(name);
+    if (it == mLines.end()) throw std::out_of_range(mPath.string() + ": the replay wrote no report \"" + name + "\"");
+    return it->second;
 }
 
 vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path)

@@ -9,6 +9,7 @@
 #include <vtkSmartPointer.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ public:
                    const std::vector<std::string>& mods = {});
     UiEvents& key(const std::string& name, const std::vector<std::string>& mods = {});
     UiEvents& text(const std::string& characters);
-    UiEvents& report(const std::filesystem::path& path);
+    /// The state appended to `path` as a JSON line called `name` (Reports finds it by that).
+    UiEvents& report(const std::filesystem::path& path, const std::string& name);
     UiEvents& screenshot(const std::filesystem::path& path);
     UiEvents& resize(int width, int height);
     UiEvents& quit();
@@ -68,8 +70,19 @@ private:
     int mGroup = -1;  // the process group's id: the pid of the shell started first in it
 };
 
-/// The JSON lines of a report file.
-std::vector<nlohmann::json> readReports(const std::filesystem::path& path);
+/// A report file's JSON lines, each found by the name the replay gave it.
+class Reports {
+public:
+    /// @throws std::logic_error if two reports share a name.
+    explicit Reports(const std::filesystem::path& path);
+    /// The report called `name`. @throws std::out_of_range naming it if the replay wrote none.
+    const nlohmann::json& operator[](const std::string& name) const;
+    std::size_t size() const { return mLines.size(); }
+
+private:
+    std::filesystem::path mPath;
+    std::map<std::string, nlohmann::json> mLines;
+};
 
 vtkSmartPointer<vtkImageData> readPng(const std::filesystem::path& path);
 /// Share of pixels whose RGB differ by more than 8 in some channel.

@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <utility>
 
 using namespace sculpt::ui;
@@ -28,12 +29,12 @@ TEST(CommandTable, EveryCommandHasExactlyOneCompleteRow)
     EXPECT_THROW(commandRow(Command(kCommandCount)), std::logic_error);  // never a fallback row
 }
 
-TEST(CommandTable, NoChordIsBoundTwice)
+TEST(CommandTable, NoChordIsBoundTwiceInOneScope)
 {
-    std::map<std::pair<int, int>, std::string> owner;
+    std::map<std::tuple<Scope, int, int>, std::string> owner;
     for (const CommandRow& row : commandTable()) {
         for (const Chord& chord : row.chords) {
-            const auto [it, fresh] = owner.emplace(std::make_pair(chord.key, chord.mods), row.label);
+            const auto [it, fresh] = owner.emplace(std::make_tuple(row.scope, chord.key, chord.mods), row.label);
             EXPECT_TRUE(fresh) << keyName(chord.key) << " (mods " << chord.mods << ") is bound to both " << it->second
                                << " and " << row.label;
         }
@@ -53,4 +54,18 @@ TEST(CommandTable, KeysFindTheirCommandAndShowAsTheMenusShowThem)
     EXPECT_EQ(shortcutText(Command::Confirm), "Enter, Numpad Enter");
     EXPECT_EQ(shortcutText(Command::Cancel), "Esc");
     EXPECT_EQ(shortcutText(Command::SaveStrokes), "");
+}
+
+TEST(CommandTable, ADialogsKeysAreItsAnswersAndTheViewsKeysStayTheTools)
+{
+    EXPECT_EQ(commandForKey(GLFW_KEY_S, 0, Scope::Dialog), Command::AnswerSave);
+    EXPECT_EQ(commandForKey(GLFW_KEY_D, 0, Scope::Dialog), Command::AnswerDiscard);
+    EXPECT_EQ(commandForKey(GLFW_KEY_R, 0, Scope::Dialog), Command::AnswerRecover);
+    EXPECT_EQ(commandForKey(GLFW_KEY_ESCAPE, 0, Scope::Dialog), Command::DialogCancel);
+    EXPECT_EQ(commandForKey(GLFW_KEY_ENTER, 0, Scope::Dialog), Command::DialogConfirm);
+    for (int n = 1; n <= 9; ++n)
+        EXPECT_EQ(commandForKey(GLFW_KEY_0 + n, 0, Scope::Dialog), Command(int(Command::ChooseGrid1) + n - 1)) << n;
+    EXPECT_EQ(commandForKey(GLFW_KEY_S, 0), Command::ToolSmooth);
+    EXPECT_EQ(commandForKey(GLFW_KEY_1, 0), Command::ViewFront);
+    EXPECT_EQ(commandForKey(GLFW_KEY_Z, kControl, Scope::Dialog), std::nullopt);  // no undo under a dialog
 }

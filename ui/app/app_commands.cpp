@@ -23,13 +23,19 @@ void SculptApp::execute(Command command)
     const std::string blocked = whyNot(command);
     if (blocked.empty()) commandRow(command).run(*this);
     else mDialogs.notice = blocked;
-    mHoverValid = false;
 }
 
 std::string SculptApp::whyNot(Command command) const
 {
     const CommandRow& row = commandRow(command);
     return row.blocked ? row.blocked(*this) : std::string();
+}
+
+bool Dialogs::confirmable() const
+{
+    if (prompt == Prompt::None || recovery || gridChoice || afterUnsaved) return false;
+    const bool asksForPath = prompt != Prompt::New && prompt != Prompt::SmoothModel && prompt != Prompt::OffsetModel;
+    return !asksForPath || !path.empty();
 }
 
 void SculptApp::openPrompt(Dialogs::Prompt prompt, std::string path)

@@ -40,7 +40,7 @@ void SculptApp::handle(const InputEvent& event)
         execute(Command::Quit);
         break;
     case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
-    case EventType::Report: mPendingReports.emplace_back(event.text); break;
+    case EventType::Report: mPendingReports.push_back(event); break;
     case EventType::Key: routeKey(event); break;
     case EventType::Text: break;
     case EventType::WaitForJob:
@@ -61,10 +61,7 @@ void SculptApp::raiseFault(const std::string& kind)
 void SculptApp::routeMouse(const InputEvent& event)
 {
     const double dx = event.x - mMouseX, dy = event.y - mMouseY;
-    if (event.type == EventType::MouseMove) {
-        mMouseX = event.x, mMouseY = event.y;
-        mHoverValid = false;
-    }
+    if (event.type == EventType::MouseMove) mMouseX = event.x, mMouseY = event.y;
     if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
     const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
     if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
@@ -82,7 +79,6 @@ void SculptApp::zoomAtPointer(const InputEvent& event)
     const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
     mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
     mLastNavigation = arrival(event);
-    mHoverValid = false;
 }
 
 void SculptApp::pressButton(const InputEvent& event)
@@ -120,7 +116,6 @@ void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
         mPicker.thaw();
         showError(e.what());
     }
-    mHoverValid = false;
 }
 
 void SculptApp::releaseButton(const InputEvent& event)
@@ -134,7 +129,6 @@ void SculptApp::endStroke()
     mStroke.end(*mDocument);
     mPicker.thaw();
     mDrag = Drag::None;
-    mHoverValid = false;
 }
 
 void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
@@ -182,10 +176,11 @@ void SculptApp::trackModifiers(const InputEvent& event)
 void SculptApp::routeKey(const InputEvent& event)
 {
     if (modifierOfKey(event.key) || !event.press) return;
-    // A dialog takes its own keys (panels), and so does a panel's field being edited. ImGui's
-    // WantTextInput lags a frame (it still claims keys for a prompt just closed): ask instead
-    // whether an item was active when the last frame ended.
-    if (modalOpen() || mItemActive) return;
+    if (modalOpen()) return routeDialogKey(event);
+    // A panel's field being edited takes its keys. ImGui's WantTextInput lags a frame (it still
+    // claims keys for a prompt just closed): ask instead whether an item was active when the
+    // last frame ended.
+    if (mItemActive) return;
     // Esc over an open menu is meant for the menu, not for the panel behind it.
     const bool menuOpen = ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
     if (menuOpen && event.key == GLFW_KEY_ESCAPE) return;
@@ -196,6 +191,16 @@ void SculptApp::routeKey(const InputEvent& event)
     }
     if (mDrag != Drag::None) return;
     if (const std::optional<Command> command = commandForKey(event.key, event.mods)) execute(*command);
+}
+
+void SculptApp::routeDialogKey(const InputEvent& event)
+{
+    const std::optional<Command> command = commandForKey(event.key, event.mods, Scope::Dialog);
+    if (!command) return;
+    // A field being edited keeps its keys, Enter too: what it holds reaches the dialog's settings
+    // only when ImGui has read the keys typed before (okOrCancel hears that Enter). Esc closes.
+    if (mItemActive && *command != Command::DialogCancel) return;
+    if (whyNot(*command).empty()) execute(*command);  // a key this dialog does not take: nothing
 }
 
 }  // namespace sculpt::ui

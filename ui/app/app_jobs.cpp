@@ -65,7 +65,6 @@ void SculptApp::pollJob()
         mLastJob = "failed";
         break;
     }
-    mHoverValid = false;
     mLastInput = mWindow.time();  // show the notice
 }
 

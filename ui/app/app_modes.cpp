@@ -13,7 +13,6 @@ void SculptApp::openMode(std::unique_ptr<Mode> mode)
     closeMode();
     mMode = std::move(mode);
     mDialogs.notice = mMode->hint();
-    mHoverValid = false;
 }
 
 void SculptApp::closeMode()
@@ -23,7 +22,6 @@ void SculptApp::closeMode()
     if (mDialogs.notice == mMode->hint() || mDialogs.notice == mMode->waitNotice()) mDialogs.notice.clear();
     if (mDrag == Drag::Mode) mDrag = Drag::None;
     mMode.reset();
-    mHoverValid = false;
 }
 
 void SculptApp::acceptMode()

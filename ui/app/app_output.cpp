@@ -58,10 +58,11 @@ void SculptApp::writeScreenshot(const fs::path& path)
     else std::cout << "sculpt-ui: screenshot " << path.string() << std::endl;
 }
 
-void SculptApp::writeReport(const fs::path& path)
+void SculptApp::writeReport(const fs::path& path, const std::string& name)
 {
     const SculptSession& session = mDocument->session();
     nlohmann::json r;
+    if (!name.empty()) r["name"] = name;
     r["frame"] = mFramesDrawn;
     r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
     r["volume"] = mStatus.volume;
@@ -92,6 +93,8 @@ void SculptApp::writeReport(const fs::path& path)
     r["recovery_offered"] = mDialogs.recovery.has_value();
     r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
     r["prompt"] = promptName(mDialogs.prompt);
+    r["prompt_path"] = mDialogs.path;  // the prompt's field, as the file chooser and Tab left it
+    r["listed"] = mDialogs.listing.entries.size();
     r["error"] = mDialogs.error;
     const BackgroundJob* job = mJobs.job();
     r["job"] = job ? nlohmann::json{{"label", job->label()}, {"progress", job->progress()}} : nlohmann::json();

@@ -42,6 +42,24 @@ CommandRow orbitRow(Command command, const char* label, const char* help, std::v
     return {command, label, help, std::move(chords), nullptr, orbit};
 }
 
+/// "Which level set?": the one numbered `number` (its key).
+template <int number>
+CommandRow gridRow()
+{
+    constexpr std::size_t index = number - 1;
+    return {Command(int(Command::ChooseGrid1) + int(index)),
+            "Level set",
+            "Which level set?: open the one with this number",
+            {{GLFW_KEY_1 + int(index)}},
+            [](const SculptApp& a) {
+                const auto& choice = a.dialogs().gridChoice;
+                if (choice && index < choice->grids.size()) return std::string();
+                return std::string("no level set has the number ") + std::to_string(number);
+            },
+            [](SculptApp& a) { a.openChosenGrid(a.dialogs().gridChoice->grids[index]); },
+            Scope::Dialog};
+}
+
 }  // namespace
 
 const std::vector<CommandRow>& SculptApp::commands()
@@ -69,6 +87,11 @@ const std::vector<CommandRow>& SculptApp::commands()
         return a.mMode ? std::string()
                        : std::string("nothing to apply: Enter applies an import, primitives or a frame");
     };
+    static constexpr auto unsavedOpen = +[](const App& a) {
+        return a.mDialogs.afterUnsaved ? std::string() : std::string("no unsaved changes are being asked about");
+    };
+    static constexpr auto recoveryOpen =
+        +[](const App& a) { return a.mDialogs.recovery ? std::string() : std::string("no autosave is being offered"); };
     static constexpr auto openFilter = +[](App& a, ModelFilter::Kind kind, P prompt) {
         a.mDialogs.filter.kind = kind;
         a.openPrompt(prompt, a.mDialogs.path);
@@ -412,6 +435,69 @@ const std::vector<CommandRow>& SculptApp::commands()
              if (a.mJobs.running()) a.mJobs.cancel();
              else a.closeMode();
          }},
+        {Command::AnswerSave,
+         "Save",
+         "Unsaved changes: save them, then go on",
+         {{GLFW_KEY_S}},
+         unsavedOpen,
+         [](App& a) { a.answerUnsaved(true, false); },
+         Scope::Dialog},
+        {Command::AnswerDiscard,
+         "Discard",
+         "Unsaved changes: go on without saving them; Recover: delete the autosave",
+         {{GLFW_KEY_D}},
+         [](const App& a) { return a.mDialogs.recovery ? std::string() : unsavedOpen(a); },
+         [](App& a) {
+             if (a.mDialogs.afterUnsaved) a.answerUnsaved(false, true);
+             else a.recover(false);
+         },
+         Scope::Dialog},
+        {Command::AnswerRecover,
+         "Recover",
+         "Recover: open the autosave of the work that was not saved",
+         {{GLFW_KEY_R}},
+         recoveryOpen,
+         [](App& a) { a.recover(true); },
+         Scope::Dialog},
+        gridRow<1>(),
+        gridRow<2>(),
+        gridRow<3>(),
+        gridRow<4>(),
+        gridRow<5>(),
+        gridRow<6>(),
+        gridRow<7>(),
+        gridRow<8>(),
+        gridRow<9>(),
+        {Command::DialogConfirm,
+         "OK",
+         "Dialogs: confirm the prompt; dismiss an error",
+         {{GLFW_KEY_ENTER}, {GLFW_KEY_KP_ENTER}},
+         [](const App& a) {
+             if (!a.mDialogs.error.empty() || a.mDialogs.confirmable()) return std::string();
+             return std::string("nothing to confirm: answer the dialog's question");
+         },
+         [](App& a) {
+             if (!a.mDialogs.error.empty()) a.mDialogs.error.clear();
+             else a.confirmPrompt();
+         },
+         Scope::Dialog},
+        {Command::DialogCancel,
+         "Close",
+         "Dialogs: close without doing anything (unsaved changes: go back)",
+         {{GLFW_KEY_ESCAPE}},
+         [](const App& a) {
+             return a.mDialogs.recovery && a.mDialogs.error.empty()
+                        ? std::string("recover the autosave (R) or discard it (D)")
+                        : std::string();
+         },
+         [](App& a) {
+             Dialogs& d = a.mDialogs;
+             if (!d.error.empty()) d.error.clear();
+             else if (d.gridChoice) a.openChosenGrid(std::nullopt);
+             else if (d.afterUnsaved) a.answerUnsaved(false, false);
+             else d.prompt = Dialogs::Prompt::None;
+         },
+         Scope::Dialog},
     };
     return table;
 }

@@ -52,10 +52,11 @@ std::string shortcutText(Command command)
     return text;
 }
 
-std::optional<Command> commandForKey(int key, int mods)
+std::optional<Command> commandForKey(int key, int mods, Scope scope)
 {
     const int relevant = mods & (kShift | kControl | kAlt);
     for (const CommandRow& row : commandTable()) {
+        if (row.scope != scope) continue;
         for (const Chord& chord : row.chords) {
             if (chord.key == key && chord.mods == relevant) return row.command;
         }

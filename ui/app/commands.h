@@ -77,11 +77,30 @@ enum class Command {
     ToggleTrackball,
     ToggleHelp,
     Confirm,
-    Cancel,  // the last: kCommandCount counts up to it
+    Cancel,
+    // The dialogs' answers (Scope::Dialog).
+    AnswerSave,
+    AnswerDiscard,
+    AnswerRecover,
+    ChooseGrid1,  // ... ChooseGrid9: the level set with this number in "Which level set?"
+    ChooseGrid2,
+    ChooseGrid3,
+    ChooseGrid4,
+    ChooseGrid5,
+    ChooseGrid6,
+    ChooseGrid7,
+    ChooseGrid8,
+    ChooseGrid9,
+    DialogConfirm,
+    DialogCancel,  // the last: kCommandCount counts up to it
 };
 
 /// The number of commands: every value below it has one row in the table.
-constexpr int kCommandCount = int(Command::Cancel) + 1;
+constexpr int kCommandCount = int(Command::DialogCancel) + 1;
+
+/// Where a command's keys work: in the view, or in the dialog on top of it (which takes every
+/// key while it is open). A chord is bound at most once per scope.
+enum class Scope { View, Dialog };
 
 /// A key with exactly these modifiers (Shift, Ctrl, Alt).
 struct Chord {
@@ -99,6 +118,7 @@ struct CommandRow {
     /// Why it cannot run now ("nothing to undo"), or "" when it can; nullptr: it always can.
     std::string (*blocked)(const SculptApp& app);
     void (*run)(SculptApp& app);
+    Scope scope = Scope::View;
 };
 
 /// Every command, one row each.
@@ -107,7 +127,7 @@ const std::vector<CommandRow>& commandTable();
 const CommandRow& commandRow(Command command);
 /// "Ctrl+Shift+Z, Ctrl+Y" for a command; "" if it has no key.
 std::string shortcutText(Command command);
-/// The command bound to this key and modifiers, if any.
-std::optional<Command> commandForKey(int key, int mods);
+/// The command bound to this key and modifiers in `scope`, if any.
+std::optional<Command> commandForKey(int key, int mods, Scope scope = Scope::View);
 
 }  // namespace sculpt::ui

@@ -87,7 +87,6 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
     mReportVersion = mDocument->session().mesher()->version();
     mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
     if (frameIt) frameModel();
-    mHoverValid = false;
 }
 
 void SculptApp::frameModel()
@@ -98,7 +97,6 @@ void SculptApp::frameModel()
     const openvdb::BBoxd world = field.grid().transform().indexToWorld(box);
     mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
                   {world.max().x(), world.max().y(), world.max().z()});
-    mHoverValid = false;
 }
 
 std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
@@ -106,6 +104,14 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
     if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
     const SculptSession& session = mDocument->session();
     return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
+}
+
+HoverKey SculptApp::hoverKey() const
+{
+    const SculptSession& session = mDocument->session();
+    const bool inView = mMouseX >= 0 && mMouseY >= 0 && mMouseX < mViewport.width() && mMouseY < mViewport.height();
+    return {mViewport.rayThrough(mMouseX, mMouseY), session.field().id(), session.mesher()->id(),
+            session.mesher()->version(), inView && (mDrag == Drag::None || mDrag == Drag::Stroke)};
 }
 
 double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayStart + event.time : event.time; }
@@ -127,9 +133,10 @@ void SculptApp::showError(const std::string& message)
 
 void SculptApp::updateCursor()
 {
-    if (!mHoverValid) {
-        mHover = mDrag == Drag::None || mDrag == Drag::Stroke ? pickAt(mMouseX, mMouseY) : std::nullopt;
-        mHoverValid = true;
+    const HoverKey key = hoverKey();
+    if (key != mHoverKey) {
+        mHover = key.picking ? pickAt(mMouseX, mMouseY) : std::nullopt;
+        mHoverKey = key;
     }
     const bool show = mHover && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift).
@@ -207,7 +214,7 @@ void SculptApp::frame()
     glViewport(0, 0, mViewport.width(), mViewport.height());
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     for (const fs::path& path : mPendingScreenshots) writeScreenshot(path);
-    for (const fs::path& path : mPendingReports) writeReport(path);
+    for (const InputEvent& report : mPendingReports) writeReport(report.text, report.name);
     mPendingScreenshots.clear();
     mPendingReports.clear();
     mWindow.swapBuffers();

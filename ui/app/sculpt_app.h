@@ -10,11 +10,13 @@
 #include "ui/app/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
+#include "ui/document/file_listing.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
 #include "ui/jobs/job_runner.h"
 #include "ui/modes/mode.h"
 #include "ui/modes/mode_host.h"
+#include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
@@ -79,7 +81,9 @@ struct Dialogs {
         SaveScene
     };
     Prompt prompt = Prompt::None;
-    std::string path;  ///< the prompt's text field
+    std::string path;          ///< the prompt's text field
+    DirectoryListing listing;  ///< what the file chooser under it shows
+    double listedAt = -1.0;    ///< when that was read (ImGui's clock)
     NewShape newShape;
     ModelFilter filter;                             ///< the Smooth/Offset Model prompts' settings
     MorphOptions morph;                             ///< the Morph To prompt's settings (target: path)
@@ -91,6 +95,8 @@ struct Dialogs {
         std::vector<std::string> grids;
     };
     std::optional<GridChoice> gridChoice;
+    /// True if the open prompt can be confirmed (one asking for a path needs one).
+    bool confirmable() const;
     std::string error;   ///< shown until dismissed
     std::string notice;  ///< status line (saved, autosaved, ...)
     bool help = false;
@@ -118,6 +124,7 @@ public:
     SurfaceLook& look() { return mLook; }
     CameraControl& camera() { return mCamera; }
     Dialogs& dialogs() { return mDialogs; }
+    const Dialogs& dialogs() const { return mDialogs; }
     RecentFiles& recent() { return mRecent; }
     const StatusFigures& status() const { return mStatus; }
     bool strokeActive() const { return mStroke.active(); }
@@ -182,6 +189,8 @@ private:
     void drawPanels();
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
+    /// While a dialog is open it takes every key: its answers are commands of Scope::Dialog.
+    void routeDialogKey(const InputEvent& event);
     void zoomAtPointer(const InputEvent& event);
     void pressButton(const InputEvent& event);
     void releaseButton(const InputEvent& event);
@@ -202,10 +211,13 @@ private:
     /// When an event happened on the window's clock (a replayed one: when it was due).
     double arrival(const InputEvent& event) const;
     void writeScreenshot(const std::filesystem::path& path);
-    void writeReport(const std::filesystem::path& path);
+    /// Appends the state as a JSON line to `path`, called `name` (if not "").
+    void writeReport(const std::filesystem::path& path, const std::string& name);
     void finishReplay();
     void frameModel();
     std::optional<SurfaceHit> pickAt(double x, double y);
+    /// What the hover depends on now.
+    HoverKey hoverKey() const;
     void replayStrokes();
     /// Runs `work` (Progress -> Result) as the background job; once it succeeded, `land`
     /// (Result) takes its result on the UI thread: the document's new field, frames, a target.
@@ -282,8 +294,8 @@ private:
     enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
-    std::optional<SurfaceHit> mHover;
-    bool mHoverValid = false;
+    std::optional<SurfaceHit> mHover;  // the surface under the pointer, picked for mHoverKey
+    HoverKey mHoverKey;
     bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
 
@@ -300,7 +312,8 @@ private:
         double pendingSince = -1.0;  // a stamp not yet on screen: when its event arrived
     };
     Measures mMeasures;
-    std::vector<std::filesystem::path> mPendingScreenshots, mPendingReports;
+    std::vector<std::filesystem::path> mPendingScreenshots;
+    std::vector<InputEvent> mPendingReports;
     std::uint64_t mTopologyVersion = ~std::uint64_t(0);
     std::uint64_t mMeasuredVersion = ~std::uint64_t(0);  // of the status's active voxels and mModelSize
     double mModelSize = 0.0;                             // SculptSession::modelSize

@@ -179,6 +179,7 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
     case EventType::Report:
         e.text = textOr(j, "path", "", where);
         if (e.text.empty()) throw InputError(where + ": field 'path' is missing");
+        if (e.type == EventType::Report) e.name = textOr(j, "name", "", where);
         break;
     case EventType::Fault:
         e.text = textOr(j, "kind", "", where);
@@ -216,8 +217,11 @@ json eventJson(const InputEvent& e)
         break;
     case EventType::Text: j["text"] = e.text; break;
     case EventType::Resize: j["width"] = e.width, j["height"] = e.height; break;
-    case EventType::Screenshot:
-    case EventType::Report: j["path"] = e.text; break;
+    case EventType::Screenshot: j["path"] = e.text; break;
+    case EventType::Report:
+        j["path"] = e.text;
+        if (!e.name.empty()) j["name"] = e.name;
+        break;
     case EventType::Fault: j["kind"] = e.text; break;
     case EventType::Quit:
     case EventType::WaitForJob: break;

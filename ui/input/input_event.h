@@ -20,7 +20,7 @@ enum class EventType {
     Text,         ///< text: characters typed (UTF-8)
     Resize,       ///< width, height
     Screenshot,   ///< path: the composed frame as PNG, after this event's frame
-    Report,       ///< path: the state (checksum, pick, uploads, ...) appended as a JSON line
+    Report,       ///< path, name: the state (checksum, pick, uploads, ...) appended as a JSON line
     Quit,         ///< as closing the window
     WaitForJob,   ///< the replay holds until the running job has ended (or a morph's playback)
     Fault,        ///< text: an internal error to raise on the UI thread (tests of the recovery)
@@ -43,6 +43,7 @@ struct InputEvent {
     int key = 0;
     int mods = 0;
     std::string text;  ///< Text: the characters; Screenshot, Report: the path
+    std::string name;  ///< Report: what the report is called (tests find it by its name), or ""
     int width = 0, height = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "ui/modes/morph_mode.h"
 
 #include "core/field/grid_checksum.h"
+#include "core/motion/morph_verdict.h"
 #include "ui/document/document.h"
 #include "ui/modes/mode_host.h"
 #include "ui/panels/panels.h"
@@ -18,7 +19,8 @@ std::string MorphMode::hint() const
 {
     const MorphSummary& s = mFrames.run().summary;
     return mLabel + ": " + std::to_string(mFrames.count()) + " frames, " +
-           (s.converged ? "converged" : "NOT converged") + " (Space plays, K keeps a frame)";
+           (s.converged ? "converged" : std::string("NOT converged (") + morphStopName(s.stop) + ")") +
+           " (Space plays, K keeps a frame)";
 }
 
 bool MorphMode::sync(double now)
@@ -42,7 +44,8 @@ nlohmann::json MorphMode::report()
     return {{"frames", mFrames.count()},
             {"shown", mFrames.shown()},
             {"checksum", formatChecksum(gridChecksum(mFrames.shownField().grid()))},
-            {"converged", mFrames.run().summary.converged}};
+            {"converged", mFrames.run().summary.converged},
+            {"stop", morphStopName(mFrames.run().summary.stop)}};
 }
 
 }  // namespace sculpt::ui

@@ -1,3 +1,4 @@
+#include "core/motion/morph_verdict.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/document/morph_frames.h"
 #include "ui/panels/panels.h"
@@ -25,29 +26,52 @@ bool beginDialog(const char* title)
 
 bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
 
-/// The prompt's path field (focused when the prompt opens); true when Enter was pressed in it.
-bool pathField(Dialogs& d, const char* id)
+/// A button for a dialog's answer, "Save (S)": its key reaches the command through the table.
+bool answerButton(SculptApp& app, Command command, const char* label = nullptr)
 {
-    char buffer[4096];
-    std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
-    if (d.focusField) ImGui::SetKeyboardFocusHere();
-    d.focusField = false;
-    ImGui::SetNextItemWidth(480.f);
-    const bool entered = ImGui::InputText(id, buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
-    d.path = buffer;
-    return entered;
+    const std::string keys = shortcutText(command);
+    const std::string text =
+        std::string(label ? label : commandRow(command).label) + " (" + keys.substr(0, keys.find(", ")) + ")";
+    const bool clicked = ImGui::Button(text.c_str());
+    if (clicked) app.execute(command);
+    return clicked;
 }
 
-/// "`okLabel` (Enter)" and "Cancel (Esc)" closing the dialog's window: confirms the prompt when
-/// chosen (and `confirmable`), or closes it.
-void okOrCancel(SculptApp& app, const char* okLabel, bool ok, bool confirmable = true)
+/// What each prompt's file chooser lists.
+FileKinds kindsOf(Dialogs::Prompt prompt)
 {
-    ok = ImGui::Button((std::string(okLabel) + " (Enter)").c_str()) || ok;
+    using P = Dialogs::Prompt;
+    const std::vector<std::string> scans = {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd", ".dcm"};
+    const std::vector<std::string> meshes = {".obj", ".ply", ".stl", ".off"};
+    const auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    switch (prompt) {
+    case P::Open:
+    case P::SaveAs: return {{".vdb"}};
+    case P::ExportMesh: return {{".ply", ".obj", ".stl"}};
+    case P::SaveStrokes:
+    case P::LoadScene:
+    case P::SaveScene: return {{".json"}};
+    case P::Import: return {join(scans, meshes), true, true};
+    case P::Target:
+    case P::Morph: return {join(join({".vdb"}, scans), meshes), true, true};
+    case P::MorphExport: return {{".vdb"}, false, true};
+    default: return {};
+    }
+}
+
+/// "`okLabel` (Enter)" and "Cancel (Esc)" closing the dialog's window. `entered`: Enter ended the
+/// edit of one of its fields (the routed Enter waits for a field being edited: its text is
+/// complete only here).
+void okOrCancel(SculptApp& app, const char* okLabel, bool entered)
+{
+    const bool ok = answerButton(app, Command::DialogConfirm, okLabel);
     ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    answerButton(app, Command::DialogCancel, "Cancel");
     ImGui::End();
-    if (ok && confirmable) app.confirmPrompt();
-    else if (cancel) app.dialogs().prompt = Dialogs::Prompt::None;
+    if (entered && !ok && app.whyNot(Command::DialogConfirm).empty()) app.execute(Command::DialogConfirm);
 }
 
 void errorDialog(SculptApp& app)
@@ -56,7 +80,7 @@ void errorDialog(SculptApp& app)
     ImGui::PushTextWrapPos(520.f);
     ImGui::TextUnformatted(app.dialogs().error.c_str());
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("OK (Enter)") || pressed(GLFW_KEY_ENTER) || pressed(GLFW_KEY_ESCAPE)) app.dialogs().error.clear();
+    answerButton(app, Command::DialogConfirm);
     ImGui::End();
 }
 
@@ -65,41 +89,37 @@ void recoveryDialog(SculptApp& app)
     beginDialog("Recover unsaved work?");
     ImGui::Text("Sculpt did not close cleanly. An autosave newer than the document exists:");
     ImGui::TextDisabled("%s", app.dialogs().recovery->string().c_str());
-    if (ImGui::Button("Recover (R)") || pressed(GLFW_KEY_R)) app.recover(true);
-    else {
+    if (!answerButton(app, Command::AnswerRecover)) {
         ImGui::SameLine();
-        if (ImGui::Button("Discard (D)") || pressed(GLFW_KEY_D)) app.recover(false);
+        answerButton(app, Command::AnswerDiscard);
     }
     ImGui::End();
 }
 
 void gridDialog(SculptApp& app)
 {
-    const Dialogs::GridChoice& choice = *app.dialogs().gridChoice;
+    const Dialogs::GridChoice choice = *app.dialogs().gridChoice;  // a copy: a button closes the dialog
     beginDialog("Which level set?");
     ImGui::Text("%s holds several level sets and none is named 'surface'.", choice.file.filename().string().c_str());
     ImGui::Text("Choose the one to sculpt; the others are kept in the file when it is saved.");
-    std::optional<std::string> chosen;
-    for (std::size_t i = 0; i < choice.grids.size(); ++i) {
-        const std::string label = choice.grids[i] + (i < 9 ? " (" + std::to_string(i + 1) + ")" : std::string());
-        if (ImGui::Button(label.c_str()) || (i < 9 && pressed(GLFW_KEY_1 + int(i)))) chosen = choice.grids[i];
+    for (std::size_t i = 0; i < choice.grids.size() && app.dialogs().gridChoice; ++i) {
+        if (i < 9) answerButton(app, Command(int(Command::ChooseGrid1) + int(i)), choice.grids[i].c_str());
+        else if (ImGui::Button(choice.grids[i].c_str())) app.openChosenGrid(choice.grids[i]);
     }
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    answerButton(app, Command::DialogCancel, "Cancel");
     ImGui::End();
-    if (chosen || cancel) app.openChosenGrid(chosen);
 }
 
 void unsavedDialog(SculptApp& app)
 {
     beginDialog("Unsaved changes");
     ImGui::Text("%s has unsaved changes. Save them first?", app.document().title().c_str());
-    const bool save = ImGui::Button("Save (S)") || pressed(GLFW_KEY_S);
+    if (answerButton(app, Command::AnswerSave)) return ImGui::End();
     ImGui::SameLine();
-    const bool discard = ImGui::Button("Discard (D)") || pressed(GLFW_KEY_D);
+    if (answerButton(app, Command::AnswerDiscard)) return ImGui::End();
     ImGui::SameLine();
-    const bool cancel = ImGui::Button("Cancel (Esc)") || pressed(GLFW_KEY_ESCAPE);
+    answerButton(app, Command::DialogCancel, "Cancel");
     ImGui::End();
-    if (save || discard || cancel) app.answerUnsaved(save, discard && !save);
 }
 
 void newDialog(SculptApp& app)
@@ -119,8 +139,7 @@ void pathDialog(SculptApp& app, const char* title, const char* hint)
     Dialogs& d = app.dialogs();
     beginDialog(title);
     ImGui::TextDisabled("%s", hint);
-    const bool entered = pathField(d, "##path");
-    okOrCancel(app, "OK", entered, !d.path.empty());
+    okOrCancel(app, "OK", fileField(app, kindsOf(d.prompt), "##path"));
 }
 
 void filterDialog(SculptApp& app)
@@ -150,10 +169,14 @@ void morphDialog(SculptApp& app)
     Dialogs& d = app.dialogs();
     MorphOptions& m = d.morph;
     beginDialog("Morph To");
-    ImGui::TextDisabled("The target: a .vdb document, a scan or a mesh (path, then Enter; the loaded target if any)");
-    const bool entered = pathField(d, "##target");
+    ImGui::TextDisabled(
+        "The target: a .vdb document, a scan or a mesh (path, then Enter; Tab completes; the loaded target if any)");
+    const bool entered = fileField(app, kindsOf(d.prompt), "##target");
     ImGui::InputInt("frames", &m.frames, 1, 5);
     m.frames = std::clamp(m.frames, 2, 1000);
+    ImGui::InputInt("max steps", &m.maxSteps, 100, 1000);
+    m.maxSteps = std::clamp(m.maxSteps, 1, 1000000);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Steps of the motion at most (a stalled morph stops earlier)");
     ImGui::Checkbox("keep volume", &m.keepVolume);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame volumes on the straight line between the two shapes'");
     ImGui::Checkbox("align", &m.align);
@@ -164,7 +187,7 @@ void morphDialog(SculptApp& app)
         m.toleranceVoxels = tolerance;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Converged once the surface is this close to the target's everywhere it resolves it");
-    okOrCancel(app, "Run", entered, !d.path.empty());
+    okOrCancel(app, "Run", entered);
 }
 
 }  // namespace
@@ -189,8 +212,10 @@ void drawMorphPanel(SculptApp& app, MorphFrames& frames)
     button("Export frames...", Command::MorphExport);
     if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
     const MorphSummary& s = frames.run().summary;
-    ImGui::TextDisabled("%d steps, final distance %.3g%s", s.steps, s.finalDistanceWorld,
-                        s.converged ? " (converged)" : " (NOT converged)");
+    const std::string verdict = morphVerdict(s, frames.shownField().voxelSize());
+    ImGui::PushTextWrapPos(560.f);
+    ImGui::TextDisabled("%d steps, final distance %.3g: %s", s.steps, s.finalDistanceWorld, verdict.c_str());
+    ImGui::PopTextWrapPos();
     ImGui::End();
 }
 
@@ -217,7 +242,7 @@ void drawDialogs(SculptApp& app)
     if (d.afterUnsaved) return unsavedDialog(app);
     switch (d.prompt) {
     case Dialogs::Prompt::New: return newDialog(app);
-    case Dialogs::Prompt::Open: return pathDialog(app, "Open", "A .vdb document (path, then Enter)");
+    case Dialogs::Prompt::Open: return pathDialog(app, "Open", "A .vdb document (path, then Enter; Tab completes)");
     case Dialogs::Prompt::SaveAs: return pathDialog(app, "Save As", "A .vdb file to write");
     case Dialogs::Prompt::ExportMesh: return pathDialog(app, "Export Mesh", "A .ply, .obj or .stl file to write");
     case Dialogs::Prompt::SaveStrokes:

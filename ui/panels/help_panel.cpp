@@ -19,6 +19,32 @@ constexpr const char* kMouse[][2] = {
     {"Wheel", "zoom towards the cursor"},
 };
 
+/// The commands of `scope` that have keys: keys, name, help.
+void keyTable(const char* title, Scope scope)
+{
+    ImGui::Separator();
+    ImGui::TextUnformatted(title);
+    if (!ImGui::BeginTable(title, 3, ImGuiTableFlags_RowBg)) return;
+    // Keys and names fixed, the help wrapped to what is left: nothing is cut off.
+    ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 160.f);
+    ImGui::TableSetupColumn("command", ImGuiTableColumnFlags_WidthFixed, 130.f);
+    ImGui::TableSetupColumn("help", ImGuiTableColumnFlags_WidthStretch);
+    for (const CommandRow& info : commandTable()) {
+        const std::string keys = shortcutText(info.command);
+        if (keys.empty() || info.scope != scope) continue;
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(keys.c_str());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(info.label);
+        ImGui::TableNextColumn();
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s", info.help);
+        ImGui::PopStyleColor();
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
 void drawHelpPanel(SculptApp& app)
@@ -39,28 +65,8 @@ void drawHelpPanel(SculptApp& app)
         }
         ImGui::EndTable();
     }
-    ImGui::Separator();
-    ImGui::TextUnformatted("Keys");
-    if (ImGui::BeginTable("keys", 3, ImGuiTableFlags_RowBg)) {
-        // Keys and names fixed, the help wrapped to what is left: nothing is cut off.
-        ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 160.f);
-        ImGui::TableSetupColumn("command", ImGuiTableColumnFlags_WidthFixed, 130.f);
-        ImGui::TableSetupColumn("help", ImGuiTableColumnFlags_WidthStretch);
-        for (const CommandRow& info : commandTable()) {
-            const std::string keys = shortcutText(info.command);
-            if (keys.empty()) continue;
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(keys.c_str());
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(info.label);
-            ImGui::TableNextColumn();
-            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextWrapped("%s", info.help);
-            ImGui::PopStyleColor();
-        }
-        ImGui::EndTable();
-    }
+    keyTable("Keys", Scope::View);
+    keyTable("In a dialog", Scope::Dialog);
     ImGui::End();
 }
 

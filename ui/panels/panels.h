@@ -4,6 +4,7 @@
 ///        the history, the status bar, the dialogs and the help.
 
 #include "ui/app/commands.h"
+#include "ui/document/file_listing.h"
 
 #include <string>
 
@@ -30,6 +31,11 @@ void drawImportPanel(SculptApp& app, ImportDraft& draft);
 /// The primitives being placed: their list, the selected one's skeleton and kernel, the scene's
 /// iso-value and operation; Bake, Load and Save.
 void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft);
+
+/// A prompt's path field (focused when the prompt opens, Tab completes) and the file chooser
+/// under it, listing what `kinds` accepts. True: answered (Enter in the field, or a file
+/// double-clicked).
+bool fileField(SculptApp& app, const FileKinds& kinds, const char* id);
 
 /// A fixed window under the brush palette (the Import and Primitives panels); End() closes it.
 void beginSidePanel(const char* title, float width);

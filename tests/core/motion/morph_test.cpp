@@ -5,6 +5,7 @@
 #include "core/mesh/field_measures.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph.h"
+#include "core/motion/morph_verdict.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/cgal_data.h"
 #include "tests/support/mesh_checks.h"
@@ -84,6 +85,18 @@ TEST(Morph, SaysWhichRuleStoppedItAndItsProgressRisesWithinOneUntilTheLastFrame)
     const MorphSummary cut = run(sphere, box, options, rec);
     EXPECT_FALSE(cut.converged);
     EXPECT_EQ(cut.stop, MorphStop::StepLimit);
+    EXPECT_NE(morphVerdict(cut, 1.0).find("allow more steps"), std::string::npos) << morphVerdict(cut, 1.0);
+    EXPECT_EQ(morphVerdict(s, 1.0), "converged");
+
+    // Stalled: more steps are not offered, and the tolerance it names accepts the result.
+    MorphSummary stalled = cut;
+    stalled.stop = MorphStop::Stalled;
+    stalled.finalDistanceWorld = 0.75, stalled.worstDistanceWorld = 1.625;  // voxels of 0.5: 1.5 and 3.25
+    const std::string verdict = morphVerdict(stalled, 0.5);
+    EXPECT_EQ(verdict.find("allow more steps"), std::string::npos) << verdict;
+    // A voxel more is allowed at thin parts: 3.25 - 1 = 2.25, rounded up to what is printed.
+    EXPECT_NE(verdict.find("a tolerance of 2.3 voxels"), std::string::npos) << verdict;
+    EXPECT_DOUBLE_EQ(acceptingToleranceVoxels(stalled, 0.5), 2.25);
 }
 
 // A target thinner everywhere than the coarse voxels of its wide distance (4 voxels): that copy
