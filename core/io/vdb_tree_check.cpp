@@ -157,7 +157,8 @@ private:
     {
         const auto stored = mIn.read<std::int64_t>(what);
         if (stored <= 0) {  // stored raw
-            if (std::uint64_t(-stored) != bytes)
+            // Negated unsigned: INT64_MIN has no signed negation.
+            if (std::uint64_t(0) - std::uint64_t(stored) != bytes)
                 throw InputError(std::string("corrupt (") + what + " have the wrong size)");
             mIn.skip(-stored, what);
             return;

@@ -10,6 +10,8 @@
 #include <vtkNew.h>
 #include <vtkRenderer.h>
 
+#include <algorithm>
+#include <cmath>
 #include <new>
 
 using namespace sculpt;
@@ -37,4 +39,31 @@ TEST(ModelDisplay, AMesherMadeWhereAFreedOneLivedIsUploadedWhole)
     EXPECT_EQ(display.blockCount(), second->blocks().size());
     EXPECT_EQ(display.lastUploads(), second->blocks().size()) << "the old frame's blocks stayed on screen";
     second->~IncrementalMesher();
+}
+
+// The coarse twins drawn while the camera moves: far fewer triangles, none degenerate, and every
+// vertex still on the surface to within a cluster cell.
+TEST(ModelDisplay, ClusteredBlocksKeepTheSurfaceWithinACellWithAFractionOfItsTriangles)
+{
+    const double radius = 20.0, voxel = 0.5, cell = 3.0 * voxel;
+    IncrementalMesher mesher;
+    mesher.rebuild(makeSphere(radius, voxel));
+    std::size_t full = 0, coarse = 0;
+    double worst = 0.0;
+    for (const auto& [origin, mesh] : mesher.blocks()) {
+        const BlockMesh clustered = clusterBlockMesh(mesh, cell);
+        full += mesh.triangles.size();
+        coarse += clustered.triangles.size();
+        for (const auto& t : clustered.triangles) {
+            EXPECT_TRUE(t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) << "a degenerate triangle";
+        }
+        for (const auto& p : clustered.positions) {
+            const double r = std::sqrt(double(p[0]) * p[0] + double(p[1]) * p[1] + double(p[2]) * p[2]);
+            worst = std::max(worst, std::abs(r - radius));
+        }
+    }
+    ASSERT_GT(full, 10000u);
+    EXPECT_LT(double(coarse), double(full) / 4.0) << coarse << " of " << full;  // (cell / voxel)^2 = 9
+    EXPECT_GT(coarse, 0u);
+    EXPECT_LT(worst, cell * std::sqrt(3.0) / 2.0) << "a vertex left the surface by more than half a cell diagonal";
 }

@@ -99,6 +99,14 @@ TEST_F(VdbTreeCheck, ALeafChunkClaimingMoreThanTheFileHoldsIsRefusedBeforeOpenVd
     EXPECT_NE(error.find("a leaf's values run past the grid's end"), std::string::npos) << error;
 }
 
+// Found by scripts/fuzz.sh: a raw chunk whose length is -2^63, which has no signed negation
+// (UndefinedBehaviorSanitizer stopped the walk there; this test runs in the sanitizer tree too).
+TEST_F(VdbTreeCheck, ARawChunkOfTheMostNegativeLengthIsRefusedAsTheWrongSize)
+{
+    const std::string error = readError(SCULPT_TESTS_DIR "/bad-inputs/vdb_raw_chunk_int64_min.vdb");
+    EXPECT_NE(error.find("tile values have the wrong size"), std::string::npos) << error;
+}
+
 TEST_F(VdbTreeCheck, DamagedTopologyIsRefusedOrReadWhole)
 {
     TempDir dir;
