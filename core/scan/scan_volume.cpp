@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace sculpt {
@@ -164,10 +165,18 @@ double ScanVolume::spacing(int axis) const
 
 ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
 {
+    // VTK sizes its kernel in an int from sigma and never checks it: a spacing far from the
+    // voxel size (a fuzzed sform) crashed it. A kernel wider than the image adds nothing.
+    openvdb::Vec3d sigma;
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(sigmaVoxels[a]) || sigmaVoxels[a] < 0.0)
+            throw std::invalid_argument("ScanVolume::gaussian: sigma must be finite and not negative");
+        sigma[a] = std::min(sigmaVoxels[a], double(dims()[a]));
+    }
     vtkNew<vtkImageGaussianSmooth> smooth;
     smooth->SetInputData(mImpl->image);
     smooth->SetDimensionality(3);
-    smooth->SetStandardDeviations(sigmaVoxels.x(), sigmaVoxels.y(), sigmaVoxels.z());
+    smooth->SetStandardDeviations(sigma.x(), sigma.y(), sigma.z());
     smooth->SetRadiusFactors(3.0, 3.0, 3.0);
     smooth->Update();
     auto impl = std::make_shared<Impl>(*mImpl);

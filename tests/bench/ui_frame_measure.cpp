@@ -34,8 +34,10 @@ void summarise(const std::string& model, const Reports& r)
         std::printf("  %-28s median %6.1f ms  p95 %6.1f ms  (%zu frames, %.1f fps)\n", what, percentile(ms, 0.5),
                     percentile(ms, 0.95), ms.size(), 1000.0 / std::max(1e-9, percentile(ms, 0.5)));
     };
-    std::printf("%s: %zu triangles, %zu blocks\n", model.c_str(), r["still"]["triangles"].get<std::size_t>(),
-                r["still"]["blocks"].get<std::size_t>());
+    std::printf("%s: %zu triangles, %zu blocks, %zu chunks (C = %d), %zu actors\n", model.c_str(),
+                r["still"]["triangles"].get<std::size_t>(), r["still"]["blocks"].get<std::size_t>(),
+                r["still"]["chunks"].get<std::size_t>(), r["still"]["chunk_blocks"].get<int>(),
+                r["still"]["actors"].get<std::size_t>());
     line("static", numbers(r["still"]["frame_times_ms"]));
     line("sculpting (10 s stroke)", numbers(r["stroked"]["frame_times_ms"]));
     const std::vector<double> latency = numbers(r["stroked"]["latencies_ms"]);
@@ -48,6 +50,8 @@ void summarise(const std::string& model, const Reports& r)
                 r["stroked"]["mesh_bytes"].get<double>() / 1024.0);
     line(r["orbiting"]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)",
          numbers(r["orbiting"]["frame_times_ms"]));
+    std::printf("  %-28s still %zu, orbiting %zu\n", "triangles drawn",
+                r["still"]["triangles_drawn"].get<std::size_t>(), r["orbiting"]["triangles_drawn"].get<std::size_t>());
 }
 
 CommandResult replay(const UiEvents& events, const std::string& document, const std::string& extra, const TempDir& dir)
@@ -92,5 +96,7 @@ int main(int argc, char** argv)
     if (made.exitCode != 0) return 1;
     measure("big ball (LOD)", "big.vdb", "", dir);
     measure("big ball (no LOD)", "big.vdb", "--lod-triangles 1000000000", dir);
+    // The reference: one actor per block, as the display drew before it had chunks.
+    measure("big ball (a chunk per block)", "big.vdb", "--display-chunk 1", dir);
     return 0;
 }

@@ -3,10 +3,12 @@
 
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
+#include "ui/view/block_cluster.h"
 #include "ui/view/model_display.h"
 #include "ui/view/surface_look.h"
 
 #include <gtest/gtest.h>
+#include <vtkActorCollection.h>
 #include <vtkNew.h>
 #include <vtkRenderer.h>
 
@@ -66,4 +68,36 @@ TEST(ModelDisplay, ClusteredBlocksKeepTheSurfaceWithinACellWithAFractionOfItsTri
     EXPECT_LT(double(coarse), double(full) / 4.0) << coarse << " of " << full;  // (cell / voxel)^2 = 9
     EXPECT_GT(coarse, 0u);
     EXPECT_LT(worst, cell * std::sqrt(3.0) / 2.0) << "a vertex left the surface by more than half a cell diagonal";
+}
+
+// Issue 31: one actor per block made VTK's bookkeeping and Mesa's per-draw cost grow with the
+// model. Chunks keep the actors bounded, and a far view draws the coarse twins.
+TEST(ModelDisplay, ActorsStayBoundedAndAFarViewDrawsFewerTrianglesThanPixelsWhileAStillOneDrawsAll)
+{
+    vtkNew<vtkRenderer> renderer;
+    SurfaceLook look;
+    ModelDisplay display(renderer, look);
+    IncrementalMesher mesher(8);  // small blocks: over 10,000 of them on a ball of radius 200
+    mesher.rebuild(makeSphere(200.0, 1.0));
+    ASSERT_GT(mesher.blocks().size(), 10000u);
+    display.sync(mesher, 1.0);
+    EXPECT_LE(display.chunkCount(), ModelDisplay::kMaxChunks);
+    EXPECT_EQ(display.actorCount(), display.chunkCount());  // no coarse twin drawn yet
+    EXPECT_EQ(std::size_t(renderer->GetActors()->GetNumberOfItems()), display.actorCount());
+    EXPECT_EQ(display.trianglesDrawn(), mesher.triangleCount());
+
+    DetailView far;  // moving, the model a few hundred pixels across: 2 voxels a pixel
+    far.still = false;
+    far.eye = glm::dvec3(0.0, 0.0, 5000.0);
+    far.pixelSizeAt = [](const glm::dvec3&) { return 2.0; };
+    const std::size_t pixels = 1280 * 800;
+    ASSERT_GT(mesher.triangleCount(), pixels);
+    display.sync(mesher, 1.0, far);
+    EXPECT_EQ(display.coarseChunks(), display.chunkCount());
+    EXPECT_LT(display.trianglesDrawn(), pixels / 4);
+    EXPECT_LE(display.actorCount(), 2 * ModelDisplay::kMaxChunks);
+
+    display.sync(mesher, 1.0, DetailView{});  // the camera rests: full detail everywhere
+    EXPECT_EQ(display.coarseChunks(), 0u);
+    EXPECT_EQ(display.trianglesDrawn(), mesher.triangleCount());
 }

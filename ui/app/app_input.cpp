@@ -78,7 +78,6 @@ void SculptApp::zoomAtPointer(const InputEvent& event)
     const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
     const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
     mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
-    mLastNavigation = arrival(event);
 }
 
 void SculptApp::pressButton(const InputEvent& event)
@@ -138,9 +137,9 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
     case Drag::Mode:
         if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;
-    case Drag::Orbit: mCamera.orbit(dx, dy), mLastNavigation = arrival(event); break;
-    case Drag::Pan: mCamera.pan(dx, dy), mLastNavigation = arrival(event); break;
-    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)), mLastNavigation = arrival(event); break;
+    case Drag::Orbit: mCamera.orbit(dx, dy); break;
+    case Drag::Pan: mCamera.pan(dx, dy); break;
+    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)); break;
     case Drag::Radius:
         mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
                                  mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));

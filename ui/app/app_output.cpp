@@ -79,7 +79,7 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     mReportVersion = session.mesher()->version();
     r["bytes_uploaded"] = mStatus.bytesUploaded;
     r["mesh_bytes"] = mDisplay.meshBytes();
-    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = 0;
+    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = mStatus.chunksUploaded = 0;
     mLastRemeshed = 0;
     const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
     r["pick"] =
@@ -113,7 +113,13 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["latencies_ms"] = mMeasures.latencyMs;
     r["preview_latencies_ms"] = mMeasures.previewLatencyMs;
     r["stamps"] = mMeasures.stamps;
-    r["coarse"] = mDisplay.coarse();
+    r["coarse"] = mDisplay.coarseChunks() > 0;  // this frame, some chunks drawn coarse
+    r["coarse_chunks"] = mDisplay.coarseChunks();
+    r["chunks"] = mDisplay.chunkCount();
+    r["chunk_blocks"] = mDisplay.chunkBlocks();
+    r["actors"] = mDisplay.actorCount();
+    r["triangles_drawn"] = mDisplay.trianglesDrawn();
+    r["chunks_uploaded"] = mStatus.chunksUploaded;
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";

@@ -47,7 +47,7 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
-      mDisplay(mViewport.renderer(), mLook), mScales(mViewport.renderer()),
+      mDisplay(mViewport.renderer(), mLook, mOptions.chunkBlocks), mScales(mViewport.renderer()),
       mGhost(mViewport.renderer(), ShapeStyle::ghost()), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
       mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
@@ -178,6 +178,24 @@ void SculptApp::refreshStatus(bool topology)
     mStatus.shells = mTopology.shells;
 }
 
+DetailView SculptApp::detailView(double now)
+{
+    if (mCamera.moves() != mCameraMovesSeen) {
+        mCameraMovesSeen = mCamera.moves();
+        mLastNavigation = now;
+    }
+    const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
+    DetailView view;
+    view.still = !(moving || mStroke.active()) || mStatistics.triangles() <= mOptions.lodTriangles;
+    view.eye = mCamera.eye();
+    view.pixelSizeAt = [this](const glm::dvec3& p) { return mViewport.pixelSizeAt(p); };
+    if (mHover) {
+        view.brushCentre = mHover->position;
+        view.brushRadius = mBrush.radius;
+    }
+    return view;
+}
+
 void SculptApp::frame()
 {
     const double now = mWindow.time();
@@ -190,14 +208,13 @@ void SculptApp::frame()
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
     const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
     const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
-    mDisplay.sync(shown, session.field().voxelSize());
+    mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
-    const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
-    mDisplay.setCoarse(moving && mStatistics.triangles() > mOptions.lodTriangles);
+    mStatus.chunksUploaded += mDisplay.lastChunkUploads();
     refreshStatus(!mStroke.active());
     updateCursor();
     mPlanes.show(mBrush.symmetry, 0.6 * mModelSize);

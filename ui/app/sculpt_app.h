@@ -47,7 +47,8 @@ struct AppOptions {
     std::filesystem::path saveAs, exportMesh, strokeLog;  ///< written when the replay ends
     std::filesystem::path stateDir;                       ///< recovery files and recent files
     double autosaveSeconds = Autosave::kDefaultIntervalSeconds;
-    std::size_t lodTriangles = 300000;  ///< coarse display while moving above this many
+    std::size_t lodTriangles = 300000;  ///< far chunks coarse while moving or sculpting above this many
+    int chunkBlocks = 0;                ///< blocks per display chunk edge; 0: chosen from the model
     bool stay = false;                  ///< keep the window open after a replay
 };
 
@@ -59,7 +60,7 @@ struct StatusFigures {
     long long euler = 0;
     std::size_t shells = 0;
     /// Since the last report: blocks uploaded and dropped by the display, bytes handed to VTK.
-    std::size_t blocksUploaded = 0, blocksRemoved = 0, bytesUploaded = 0;
+    std::size_t blocksUploaded = 0, blocksRemoved = 0, bytesUploaded = 0, chunksUploaded = 0;
 };
 
 /// The dialogs ImGui shows; at most one prompt at a time.
@@ -159,6 +160,8 @@ public:
 
 private:
     void frame();
+    /// What the display's level of detail needs of this frame (camera motion noticed here).
+    DetailView detailView(double now);
     /// One pass of the loop: input (live or replayed), autosave, a frame.
     void loopOnce(bool& replayDone);
     /// An exception no handler expected (out of memory, a bug, an OpenVDB error) reached the
@@ -298,6 +301,7 @@ private:
     HoverKey mHoverKey;
     bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
+    std::uint64_t mCameraMovesSeen = 0;
 
     // Frame bookkeeping.
     bool mQuit = false;

@@ -39,6 +39,7 @@ void CameraControl::set(const glm::dvec3& position, const glm::dvec3& focal, con
     c->SetViewUp(up.x, up.y, up.z);
     c->OrthogonalizeViewUp();
     mViewport.renderer()->ResetCameraClippingRange();
+    ++mMoves;
 }
 
 glm::dvec3 CameraControl::focalPoint() const
@@ -46,6 +47,13 @@ glm::dvec3 CameraControl::focalPoint() const
     glm::dvec3 p, f, u;
     get(p, f, u);
     return f;
+}
+
+glm::dvec3 CameraControl::eye() const
+{
+    glm::dvec3 p, f, u;
+    get(p, f, u);
+    return p;
 }
 
 void CameraControl::orbit(double dx, double dy) { orbitDegrees(-dx * kDegreesPerPixel, -dy * kDegreesPerPixel); }

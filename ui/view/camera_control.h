@@ -6,6 +6,8 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
+
 namespace sculpt::ui {
 
 class Viewport;
@@ -35,12 +37,17 @@ public:
     void axisView(AxisView view);
 
     glm::dvec3 focalPoint() const;
+    glm::dvec3 eye() const;
+    /// Counts every change of the camera, whatever made it (drag, keys, wheel, frame, axis
+    /// views): the display's level of detail follows it.
+    std::uint64_t moves() const { return mMoves; }
 
 private:
     void set(const glm::dvec3& position, const glm::dvec3& focal, const glm::dvec3& up);
     void get(glm::dvec3& position, glm::dvec3& focal, glm::dvec3& up) const;
 
     Viewport& mViewport;
+    std::uint64_t mMoves = 0;
 };
 
 }  // namespace sculpt::ui

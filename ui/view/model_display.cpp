@@ -1,5 +1,6 @@
 #include "ui/view/model_display.h"
 
+#include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
 #include "ui/view/surface_look.h"
 
@@ -8,20 +9,18 @@
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
 
-#include <cmath>
-#include <unordered_map>
+#include <algorithm>
+#include <set>
 
 namespace sculpt::ui {
 
 namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
-constexpr int kChunkBlocks = 4;  // per axis
 
-vtkSmartPointer<vtkActor> actorOf(const BlockMesh& mesh, const SurfaceLook& look)
+vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->SetInputData(polyDataOf(mesh));
     mapper->ScalarVisibilityOff();
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
@@ -29,175 +28,187 @@ vtkSmartPointer<vtkActor> actorOf(const BlockMesh& mesh, const SurfaceLook& look
     return actor;
 }
 
+/// Hands `mesh` to the actor's mapper: its buffers are re-uploaded at the next render.
+void setMesh(vtkActor* actor, const BlockMesh& mesh)
+{
+    vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->SetInputData(polyDataOf(mesh));
+}
+
 std::size_t bytesOf(const BlockMesh& mesh)
 {
-    return mesh.positions.size() * 24 + mesh.triangles.size() * 3 * sizeof(vtkIdType);
+    return mesh.positions.size() * 24 + mesh.triangles.size() * 3 * sizeof(std::int32_t);
 }
 
 }  // namespace
 
-struct ModelDisplay::Block {
-    vtkSmartPointer<vtkActor> full;
-    BlockMesh coarse;
-    std::size_t bytes = 0;  // of the full mesh
-};
-
 struct ModelDisplay::Chunk {
-    vtkSmartPointer<vtkActor> actor;
-    std::size_t triangles = 0;
-    bool dirty = true;
+    vtkSmartPointer<vtkActor> full, coarse;  // coarse: made when first drawn
+    std::size_t fullTriangles = 0, coarseTriangles = 0, bytes = 0;
+    glm::dvec3 lo{0.0}, hi{0.0};  // world bounds of its vertices
+    bool fullStale = true, coarseStale = true, drawsCoarse = false;
 };
 
-ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look) : mRenderer(renderer), mLook(look) {}
+ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
+    : mRenderer(renderer), mLook(look), mFixedChunkBlocks(chunkBlocks)
+{}
 
-ModelDisplay::~ModelDisplay()
+ModelDisplay::~ModelDisplay() { clear(); }
+
+std::size_t ModelDisplay::actorCount() const
 {
-    while (!mBlocks.empty()) remove(mBlocks.begin()->first);
-    for (auto& [origin, chunk] : mChunks) mRenderer->RemoveActor(chunk.actor);
+    std::size_t count = 0;
+    for (const auto& [origin, chunk] : mChunks) count += (chunk.full ? 1 : 0) + (chunk.coarse ? 1 : 0);
+    return count;
 }
 
 openvdb::Coord ModelDisplay::chunkOf(const openvdb::Coord& block) const
 {
-    const int size = kChunkBlocks * mBlockVoxels;
+    const int size = mChunkBlocks * mBlockVoxels;
     return {floorToMultiple(block.x(), size), floorToMultiple(block.y(), size), floorToMultiple(block.z(), size)};
 }
 
-void ModelDisplay::remove(const openvdb::Coord& origin)
-{
-    auto it = mBlocks.find(origin);
-    if (it == mBlocks.end()) return;
-    mRenderer->RemoveActor(it->second.full);
-    mMeshBytes -= it->second.bytes;
-    mBlocks.erase(it);
-    mChunks[chunkOf(origin)].dirty = true;
-}
-
-void ModelDisplay::upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize)
-{
-    remove(origin);
-    Block block{actorOf(mesh, mLook), clusterBlockMesh(mesh, kCoarseCellVoxels * voxelSize), bytesOf(mesh)};
-    block.full->SetVisibility(!mCoarse && !mHidden);
-    mRenderer->AddActor(block.full);
-    mMeshBytes += block.bytes;
-    mLastBytes += block.bytes;
-    mBlocks.emplace(origin, std::move(block));
-    mChunks[chunkOf(origin)].dirty = true;
-}
-
-void ModelDisplay::rebuildChunk(const openvdb::Coord& origin, Chunk& chunk)
-{
-    const int size = kChunkBlocks * mBlockVoxels;
-    BlockMesh joined;
-    // The map orders blocks by x, then y, then z: walk each x slab of the chunk.
-    for (int x = origin.x(); x < origin.x() + size; x += mBlockVoxels) {
-        for (auto it = mBlocks.lower_bound(openvdb::Coord(x, origin.y(), origin.z()));
-             it != mBlocks.end() && it->first.x() == x && it->first.y() < origin.y() + size; ++it) {
-            if (it->first.z() >= origin.z() && it->first.z() < origin.z() + size) append(joined, it->second.coarse);
-        }
-    }
-    if (chunk.actor) mRenderer->RemoveActor(chunk.actor);
-    mCoarseTriangles -= chunk.triangles;
-    chunk.actor = actorOf(joined, mLook);
-    chunk.actor->SetVisibility(mCoarse && !mHidden);
-    chunk.triangles = joined.triangles.size();
-    mCoarseTriangles += chunk.triangles;
-    mRenderer->AddActor(chunk.actor);
-    mLastBytes += bytesOf(joined);
-    chunk.dirty = false;
-}
-
-void ModelDisplay::rebuildDirtyChunks()
+void ModelDisplay::clear()
 {
     for (auto& [origin, chunk] : mChunks) {
-        if (chunk.dirty) rebuildChunk(origin, chunk);
+        if (chunk.full) mRenderer->RemoveActor(chunk.full);
+        if (chunk.coarse) mRenderer->RemoveActor(chunk.coarse);
+    }
+    mChunks.clear();
+    mMeshBytes = 0;
+}
+
+void ModelDisplay::layOut(const IncrementalMesher& mesher)
+{
+    mBlockVoxels = mesher.blockVoxels();
+    mChunkBlocks = mFixedChunkBlocks > 0 ? mFixedChunkBlocks : kMinChunkBlocks;
+    std::set<openvdb::Coord> origins;
+    for (;;) {
+        origins.clear();
+        for (const auto& [block, mesh] : mesher.blocks()) origins.insert(chunkOf(block));
+        if (mFixedChunkBlocks > 0 || origins.size() <= kMaxChunks || mChunkBlocks >= kMaxChunkBlocks) break;
+        mChunkBlocks *= 2;
+    }
+    for (const openvdb::Coord& origin : origins) mChunks.emplace(origin, Chunk{});
+}
+
+BlockMesh ModelDisplay::joined(const IncrementalMesher& mesher, const openvdb::Coord& origin) const
+{
+    const int size = mChunkBlocks * mBlockVoxels;
+    BlockMesh whole;
+    // Blocks are ordered by x, then y, then z: one range per column of the chunk.
+    for (int x = origin.x(); x < origin.x() + size; x += mBlockVoxels) {
+        for (int y = origin.y(); y < origin.y() + size; y += mBlockVoxels) {
+            for (auto it = mesher.blocks().lower_bound(openvdb::Coord(x, y, origin.z()));
+                 it != mesher.blocks().end() && it->first.x() == x && it->first.y() == y &&
+                 it->first.z() < origin.z() + size;
+                 ++it) {
+                append(whole, it->second);
+            }
+        }
+    }
+    return whole;
+}
+
+void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk)
+{
+    const BlockMesh mesh = joined(mesher, origin);
+    if (!chunk.full) {
+        chunk.full = newActor(mLook);
+        chunk.full->SetVisibility(!mHidden);
+        mRenderer->AddActor(chunk.full);
+    }
+    setMesh(chunk.full, mesh);
+    mMeshBytes += bytesOf(mesh) - chunk.bytes;
+    chunk.bytes = bytesOf(mesh);
+    mLastBytes += chunk.bytes;
+    chunk.fullTriangles = mesh.triangles.size();
+    chunk.lo = glm::dvec3(std::numeric_limits<double>::max());
+    chunk.hi = -chunk.lo;
+    for (const auto& p : mesh.positions) {
+        chunk.lo = glm::min(chunk.lo, glm::dvec3(p[0], p[1], p[2]));
+        chunk.hi = glm::max(chunk.hi, glm::dvec3(p[0], p[1], p[2]));
+    }
+    chunk.fullStale = false;
+    chunk.coarseStale = true;
+    ++mLastChunkUploads;
+}
+
+void ModelDisplay::uploadCoarse(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk,
+                                double voxelSize)
+{
+    const BlockMesh mesh = clusterBlockMesh(joined(mesher, origin), kCoarseCellVoxels * voxelSize);
+    if (!chunk.coarse) {
+        chunk.coarse = newActor(mLook);
+        chunk.coarse->SetVisibility(false);
+        mRenderer->AddActor(chunk.coarse);
+    }
+    setMesh(chunk.coarse, mesh);
+    mLastBytes += bytesOf(mesh);
+    chunk.coarseTriangles = mesh.triangles.size();
+    chunk.coarseStale = false;
+}
+
+void ModelDisplay::show(Chunk& chunk, bool coarse)
+{
+    chunk.drawsCoarse = coarse;
+    chunk.full->SetVisibility(!mHidden && !coarse);
+    if (chunk.coarse) chunk.coarse->SetVisibility(!mHidden && coarse);
+}
+
+void ModelDisplay::chooseDetail(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
+{
+    mTrianglesDrawn = mCoarseChunks = 0;
+    for (auto& [origin, chunk] : mChunks) {
+        const bool coarse = drawsCoarse(chunk.lo, chunk.hi, voxelSize, view);
+        if (coarse && chunk.coarseStale) uploadCoarse(mesher, origin, chunk, voxelSize);
+        if (coarse != chunk.drawsCoarse) show(chunk, coarse);
+        mTrianglesDrawn += coarse ? chunk.coarseTriangles : chunk.fullTriangles;
+        mCoarseChunks += coarse ? 1 : 0;
     }
 }
 
-void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize)
+void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
 {
-    mLastUploads = mLastRemovals = mLastBytes = 0;
-    IncrementalMesher::Changes changes;
+    mLastUploads = mLastRemovals = mLastChunkUploads = mLastBytes = 0;
     if (mesher.id() != mSourceId) {
-        while (!mBlocks.empty()) remove(mBlocks.begin()->first);
-        for (auto& [origin, chunk] : mChunks) mRenderer->RemoveActor(chunk.actor);
-        mChunks.clear();
-        mCoarseTriangles = 0;
-        for (const auto& [origin, mesh] : mesher.blocks()) changes.updated.push_back(origin);
+        clear();
+        layOut(mesher);
         mSourceId = mesher.id();
-        mBlockVoxels = mesher.blockVoxels();
-    } else {
-        if (mesher.version() == mVersion) return;
-        changes = mesher.changesSince(mVersion);
+        mLastUploads = mesher.blocks().size();
+    } else if (mesher.version() != mVersion) {
+        const IncrementalMesher::Changes changes = mesher.changesSince(mVersion);
+        for (const auto* list : {&changes.updated, &changes.removed}) {
+            for (const openvdb::Coord& block : *list) mChunks[chunkOf(block)].fullStale = true;
+        }
+        mLastUploads = changes.updated.size();
+        mLastRemovals = changes.removed.size();
+        if (mFixedChunkBlocks == 0 && mChunks.size() > 2 * kMaxChunks && mChunkBlocks < kMaxChunkBlocks) {
+            clear();  // the model outgrew its chunks: lay them out again
+            layOut(mesher);
+        }
     }
     mVersion = mesher.version();
-    for (const openvdb::Coord& origin : changes.removed) {
-        remove(origin);
-        ++mLastRemovals;
+    mBlockCount = mesher.blocks().size();
+    for (auto it = mChunks.begin(); it != mChunks.end();) {
+        Chunk& chunk = it->second;
+        if (chunk.fullStale) uploadFull(mesher, it->first, chunk);
+        if (chunk.fullTriangles > 0) {
+            ++it;
+            continue;
+        }
+        mRenderer->RemoveActor(chunk.full);  // every block of it is gone
+        if (chunk.coarse) mRenderer->RemoveActor(chunk.coarse);
+        mMeshBytes -= chunk.bytes;
+        it = mChunks.erase(it);
     }
-    for (const openvdb::Coord& origin : changes.updated) {
-        upload(origin, mesher.blocks().at(origin), voxelSize);
-        ++mLastUploads;
-    }
-    if (mCoarse) rebuildDirtyChunks();
-}
-
-void ModelDisplay::setCoarse(bool coarse)
-{
-    if (coarse == mCoarse) return;
-    mCoarse = coarse;
-    if (coarse) rebuildDirtyChunks();
-    setHidden(mHidden);
+    chooseDetail(mesher, voxelSize, view);
 }
 
 void ModelDisplay::setHidden(bool hidden)
 {
     if (hidden == mHidden) return;  // asked every frame: touch the actors only on a change
     mHidden = hidden;
-    for (auto& [origin, block] : mBlocks) block.full->SetVisibility(!mCoarse && !hidden);
-    for (auto& [origin, chunk] : mChunks) {
-        if (chunk.actor) chunk.actor->SetVisibility(mCoarse && !hidden);  // built when first shown
-    }
-}
-
-BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld)
-{
-    BlockMesh out;
-    std::unordered_map<std::uint64_t, std::uint32_t> clusterOf;
-    std::vector<std::uint32_t> counts;
-    std::vector<std::uint32_t> remap(mesh.positions.size());
-    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-        const auto& p = mesh.positions[v];
-        std::uint64_t key = 0;
-        for (int a = 0; a < 3; ++a)
-            key = key << 21 | (std::uint64_t(std::int64_t(std::floor(p[a] / cellWorld)) + (1 << 20)) & 0x1FFFFF);
-        auto [it, fresh] = clusterOf.try_emplace(key, std::uint32_t(out.positions.size()));
-        if (fresh) {
-            out.positions.push_back({0.f, 0.f, 0.f});
-            out.normals.push_back({0.f, 0.f, 0.f});
-            counts.push_back(0);
-        }
-        const std::uint32_t c = it->second;
-        for (int a = 0; a < 3; ++a) {
-            out.positions[c][a] += p[a];
-            out.normals[c][a] += mesh.normals[v][a];
-        }
-        ++counts[c];
-        remap[v] = c;
-    }
-    for (std::size_t c = 0; c < out.positions.size(); ++c) {
-        float length = 0.f;
-        for (int a = 0; a < 3; ++a) {
-            out.positions[c][a] /= float(counts[c]);
-            length += out.normals[c][a] * out.normals[c][a];
-        }
-        length = std::sqrt(length) > 0.f ? std::sqrt(length) : 1.f;
-        for (int a = 0; a < 3; ++a) out.normals[c][a] /= length;
-    }
-    for (const auto& t : mesh.triangles) {
-        const std::array<std::uint32_t, 3> r{remap[t[0]], remap[t[1]], remap[t[2]]};
-        if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) out.triangles.push_back(r);
-    }
-    return out;
+    for (auto& [origin, chunk] : mChunks) show(chunk, chunk.drawsCoarse);
 }
 
 }  // namespace sculpt::ui

@@ -1,17 +1,20 @@
 #pragma once
 /// @file model_display.h
-/// @brief The sculpt on screen: one VTK actor per mesher block, re-uploaded only when the
-///        mesher re-meshed that block, and a coarse display shown while the camera moves (the
-///        display's level of detail).
+/// @brief The sculpt on screen: the mesher's blocks grouped into display chunks, one VTK actor
+///        per chunk (and one for its coarse twin), so the actors stay a few hundred whatever the
+///        model's size.
 ///
-/// Every actor shares the SurfaceLook's property and shader. vtkCompositePolyDataMapper2 is not
-/// used: in VTK 9.1 it re-uploads every block when any block changes. The coarse display is
-/// each block's mesh with vertices clustered (about 9x fewer triangles), joined into chunks of
-/// 4^3 blocks: on Mesa each actor costs ~30 us a frame, so a million triangles in 1,800 block
-/// actors would stay slow however few triangles each had. A chunk is rebuilt from its blocks'
-/// cached coarse meshes only when shown after one of them changed.
+/// Each actor costs Mesa ~30 us a frame, and VTK's bookkeeping of actors and buffers is linear
+/// in their number: one actor per 16^3 block made a stroke on an 8 M-triangle scan cost O(15,000)
+/// per changed block. A chunk is a cube of C^3 blocks; C starts at 4 (about 10^4 triangles on a
+/// surface, as Blender's PBVH leaves) and doubles until there are at most kMaxChunks. A chunk is
+/// re-joined and re-uploaded, into the actor it already has, once per sync when one of its
+/// blocks changed; its coarse twin (the chunk's mesh clustered, about 9x fewer triangles) is
+/// rebuilt only when drawn after a change. Which of the two a chunk draws is the DetailView's
+/// rule. Every actor shares the SurfaceLook's property and shader.
 
 #include "core/mesh/incremental_mesher.h"
+#include "ui/view/detail_view.h"
 
 #include <vtkSmartPointer.h>
 
@@ -26,51 +29,60 @@ class SurfaceLook;
 
 class ModelDisplay {
 public:
-    ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look);
+    /// Chunks at most, unless a chunk of kMaxChunkBlocks^3 blocks cannot get there.
+    static constexpr std::size_t kMaxChunks = 512;
+    static constexpr int kMinChunkBlocks = 4, kMaxChunkBlocks = 32;
+
+    /// @param chunkBlocks C, blocks per chunk edge; 0 chooses it from the model (see above).
+    ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks = 0);
     ~ModelDisplay();
 
-    /// Uploads the blocks the mesher changed since the last sync (all of them for a new mesher).
-    /// `voxelSize` sizes the coarse twins' clusters.
-    void sync(const IncrementalMesher& mesher, double voxelSize);
-    /// Shows the coarse twins (true) or the full blocks.
-    void setCoarse(bool coarse);
-    bool coarse() const { return mCoarse; }
+    /// Uploads the chunks whose blocks the mesher changed since the last sync (all of them for a
+    /// new mesher), then gives each chunk the detail `view` asks. `voxelSize` sizes the coarse
+    /// twins' clusters. Once per frame.
+    void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {});
     /// Hides every actor (another view of the model, the scales, is shown instead).
     void setHidden(bool hidden);
 
-    /// Of the last sync: blocks uploaded, blocks dropped, and the bytes handed to VTK.
+    /// Of the last sync: blocks changed and dropped, chunks re-uploaded, bytes handed to VTK.
     std::size_t lastUploads() const { return mLastUploads; }
     std::size_t lastRemovals() const { return mLastRemovals; }
+    std::size_t lastChunkUploads() const { return mLastChunkUploads; }
     std::size_t lastUploadBytes() const { return mLastBytes; }
-    std::size_t blockCount() const { return mBlocks.size(); }
-    std::size_t coarseTriangles() const { return mCoarseTriangles; }
-    /// Bytes of every full-detail block as handed to VTK: what one upload of the whole mesh costs.
+    std::size_t blockCount() const { return mBlockCount; }
+    std::size_t chunkCount() const { return mChunks.size(); }
+    int chunkBlocks() const { return mChunkBlocks; }
+    /// Actors of the model the renderer holds, and those drawn this frame.
+    std::size_t actorCount() const;
+    std::size_t actorsDrawn() const { return mHidden ? 0 : mChunks.size(); }
+    /// Triangles drawn this frame, and how many chunks draw their coarse twin.
+    std::size_t trianglesDrawn() const { return mHidden ? 0 : mTrianglesDrawn; }
+    std::size_t coarseChunks() const { return mCoarseChunks; }
+    /// Bytes of every full-detail chunk as handed to VTK: what one upload of the whole mesh costs.
     std::size_t meshBytes() const { return mMeshBytes; }
 
 private:
-    struct Block;
     struct Chunk;
-    void remove(const openvdb::Coord& origin);
-    void upload(const openvdb::Coord& origin, const BlockMesh& mesh, double voxelSize);
     openvdb::Coord chunkOf(const openvdb::Coord& block) const;
-    void rebuildChunk(const openvdb::Coord& origin, Chunk& chunk);
-    void rebuildDirtyChunks();
+    void clear();
+    void layOut(const IncrementalMesher& mesher);
+    BlockMesh joined(const IncrementalMesher& mesher, const openvdb::Coord& origin) const;
+    void uploadFull(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk);
+    void uploadCoarse(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk, double voxelSize);
+    void chooseDetail(const IncrementalMesher& mesher, double voxelSize, const DetailView& view);
+    void show(Chunk& chunk, bool coarse);
 
     vtkRenderer* mRenderer;
     const SurfaceLook& mLook;
-    std::map<openvdb::Coord, Block> mBlocks;
+    const int mFixedChunkBlocks;
     std::map<openvdb::Coord, Chunk> mChunks;
     int mBlockVoxels = IncrementalMesher::kDefaultBlockVoxels;
+    int mChunkBlocks = kMinChunkBlocks;
     std::uint64_t mSourceId = 0;  // IncrementalMesher::id of the mesher shown
     std::uint64_t mVersion = 0;
-    bool mCoarse = false;
     bool mHidden = false;
-    std::size_t mLastUploads = 0, mLastRemovals = 0, mLastBytes = 0, mCoarseTriangles = 0, mMeshBytes = 0;
+    std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0;
+    std::size_t mLastUploads = 0, mLastRemovals = 0, mLastChunkUploads = 0, mLastBytes = 0;
 };
-
-/// A block's mesh with its vertices merged into clusters of `cellWorld` (a cube grid fixed in
-/// world space, so neighbouring blocks cluster alike): about (cell / voxel)^2 times fewer
-/// triangles. Degenerate triangles are dropped.
-BlockMesh clusterBlockMesh(const BlockMesh& mesh, double cellWorld);
 
 }  // namespace sculpt::ui

@@ -1,8 +1,8 @@
 #include "ui/view/shape_display.h"
 
 #include "core/mesh/incremental_mesher.h"
+#include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
-#include "ui/view/model_display.h"
 
 #include <vtkActor.h>
 #include <vtkPolyData.h>

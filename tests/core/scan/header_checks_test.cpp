@@ -108,6 +108,29 @@ TEST(HeaderChecks, NiftiSpacingsBelowTheLimitAndOffsetsBeyondTheModelAreRefused)
     }
 }
 
+// Found by scripts/fuzz.sh: an sform spacing of 3e29 (an invalid sform_code) made the default
+// voxel size 2e28 and the anti-aliasing Gaussian's sigma as large: VTK sized its kernel in an
+// int and crashed. A kernel wider than the image is clamped to it.
+TEST(HeaderChecks, AnAntiAliasingGaussianWiderThanTheImageIsClampedToIt)
+{
+    TempDir dir;
+    std::string bytes = fileBytes(writeNifti(dir, "ball.nii"));
+    const float rows[12] = {3e29f, 0.f, 0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 0.f, 1.f, 0.f};  // srow_x/y/z
+    const std::int16_t codes[2] = {0, 1};  // qform_code 0, sform_code 1
+    std::memcpy(bytes.data() + 252, codes, sizeof codes);
+    std::memcpy(bytes.data() + 280, rows, sizeof rows);
+    writeFileBytes(dir / "wide.nii", bytes);
+    const ScanVolume scan = readScan(dir / "wide.nii");
+    ASSERT_GT(scan.spacing(0), 1e29);
+    const std::optional<ScanVolume> smoothed = scan.antiAliased(2e28);
+    ASSERT_TRUE(smoothed);
+    EXPECT_EQ(smoothed->dims(), scan.dims());
+    const auto [lo, hi] = scan.range();
+    const auto [smoothLo, smoothHi] = smoothed->range();
+    EXPECT_GE(smoothLo, lo - 1e-3);  // a Gaussian stays within the samples' range
+    EXPECT_LE(smoothHi, hi + 1e-3);
+}
+
 TEST(HeaderChecks, CompressedNiftiThatDoesNotInflateIsRefused)
 {
     TempDir dir;
