@@ -2,7 +2,7 @@
 // figures come from one replayed session per model, as a person would see them). For each model
 // it replays: 3 s still (static frame time), a 10-second stroke at 60 events a second, a 3-second
 // orbit drag, and prints medians and 95th percentiles. Run by hand:
-//   build/tests/bench/ui_frame_measure [--big-radius 80]
+//   build/tests/bench/ui_frame_measure [--big-radius 80 | --document DOC.vdb]
 // Figures go in the issue notes.
 
 #include "tests/support/temp_dir.h"
@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 
@@ -89,8 +90,14 @@ void measure(const std::string& model, const std::string& document, const std::s
 
 int main(int argc, char** argv)
 {
-    const std::string radius = argc > 2 && std::string(argv[1]) == "--big-radius" ? argv[2] : "80";
     TempDir dir;
+    if (argc > 2 && std::string(argv[1]) == "--document") {  // a model of your own, e.g. an imported scan
+        const std::string document = std::filesystem::absolute(argv[2]).string();
+        measure(document, "'" + document + "'", "", dir);
+        measure(document + " (a chunk per block)", "'" + document + "'", "--display-chunk 1", dir);
+        return 0;
+    }
+    const std::string radius = argc > 2 && std::string(argv[1]) == "--big-radius" ? argv[2] : "80";
     measure("clay ball", "", "", dir);
     const CommandResult made = runSculpt("new --radius " + radius + " -o big.vdb", dir.path().string());
     if (made.exitCode != 0) return 1;
