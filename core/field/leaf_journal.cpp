@@ -45,6 +45,13 @@ LeafJournal::Saved LeafJournal::capture(const openvdb::FloatTree& tree, const op
 
 bool LeafJournal::contains(const openvdb::Coord& leafOrigin) const { return mEntries.count(leafOrigin) != 0; }
 
+std::optional<LeafJournal::SavedState> LeafJournal::saved(const openvdb::Coord& leafOrigin) const
+{
+    const auto it = mEntries.find(leafOrigin);
+    if (it == mEntries.end()) return std::nullopt;
+    return SavedState{it->second.leaf.get(), it->second.value};
+}
+
 void LeafJournal::save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin)
 {
     if (contains(leafOrigin)) return;

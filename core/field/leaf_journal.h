@@ -18,6 +18,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace sculpt {
 
@@ -34,6 +35,15 @@ public:
     /// Keeps the tree's state at this leaf position, unless this journal already holds it.
     void save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
     bool contains(const openvdb::Coord& leafOrigin) const;
+
+    /// What the tree held at a saved leaf position: that leaf (its values), or, where there was
+    /// none, the value of the tile or background that covered it.
+    struct SavedState {
+        const openvdb::FloatTree::LeafNodeType* leaf = nullptr;
+        float value = 0.0f;
+    };
+    /// The state saved at `leafOrigin`, if any (a whole-grid journal answers none).
+    std::optional<SavedState> saved(const openvdb::Coord& leafOrigin) const;
 
     /// Restores every saved position and keeps what it replaced; marks them dirty in `field`.
     void swap(FieldImage& field);

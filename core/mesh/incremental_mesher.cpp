@@ -70,9 +70,11 @@ void IncrementalMesher::rebuild(const FieldImage& field, const Progress& progres
     std::map<openvdb::Coord, BlockMesh> previous;
     previous.swap(mBlocks);
     remesh(field, origins, progress);
+    std::vector<openvdb::Coord> dropped;
     for (const auto& [origin, mesh] : previous) {
-        if (!mBlocks.count(origin)) mRemoved[origin] = mVersion;
+        if (!mBlocks.count(origin)) dropped.push_back(origin);
     }
+    logChanges(std::move(dropped));
 }
 
 std::size_t IncrementalMesher::update(const FieldImage& field, const DirtyRegion& dirty)
@@ -81,7 +83,7 @@ std::size_t IncrementalMesher::update(const FieldImage& field, const DirtyRegion
     for (const openvdb::Coord& origin : dirty.leafOrigins()) box.expand(openvdb::CoordBBox::createCube(origin, 8));
     requireKeyRange(box);
     const auto origins = blocksReading(dirty, mBlockVoxels);
-    remesh(field, origins);
+    if (!origins.empty()) remesh(field, origins);  // nothing dirty: the same version
     return origins.size();
 }
 
@@ -100,27 +102,47 @@ void IncrementalMesher::remesh(const FieldImage& field, const std::vector<openvd
             }
         });
     });
+    std::vector<openvdb::Coord> changed;
     for (size_t i = 0; i < origins.size(); ++i) {
         const openvdb::Coord& origin = origins[i];
         if (meshes[i].empty()) {
-            if (mBlocks.erase(origin)) mRemoved[origin] = mVersion;
+            if (mBlocks.erase(origin)) changed.push_back(origin);
             continue;
         }
         meshes[i].version = mVersion;
         mBlocks[origin] = std::move(meshes[i]);
-        mRemoved.erase(origin);
+        changed.push_back(origin);
     }
+    logChanges(std::move(changed));
+}
+
+void IncrementalMesher::logChanges(std::vector<openvdb::Coord> origins)
+{
+    if (origins.empty()) return;
+    mLoggedOrigins += origins.size();
+    auto& entry = mChangeLog[mVersion];
+    entry.insert(entry.end(), origins.begin(), origins.end());
+    if (mLoggedOrigins <= mCompactAbove || mChangeLog.size() < 2) return;
+    // Merge the older half into its newest version: amortised O(1) per logged origin.
+    auto middle = std::next(mChangeLog.begin(), std::ptrdiff_t(mChangeLog.size() / 2));
+    std::set<openvdb::Coord> merged;
+    for (auto it = mChangeLog.begin(); it != middle; ++it) merged.insert(it->second.begin(), it->second.end());
+    const std::uint64_t newest = std::prev(middle)->first;
+    mChangeLog.erase(mChangeLog.begin(), middle);
+    mChangeLog[newest].assign(merged.begin(), merged.end());
+    mLoggedOrigins = 0;
+    for (const auto& [version, logged] : mChangeLog) mLoggedOrigins += logged.size();
+    mCompactAbove = 2 * (mLoggedOrigins + mBlocks.size()) + 4096;
 }
 
 IncrementalMesher::Changes IncrementalMesher::changesSince(std::uint64_t version) const
 {
+    std::set<openvdb::Coord> origins;
+    for (auto it = mChangeLog.upper_bound(version); it != mChangeLog.end(); ++it)
+        origins.insert(it->second.begin(), it->second.end());
     Changes changes;
-    for (const auto& [origin, mesh] : mBlocks) {
-        if (mesh.version > version) changes.updated.push_back(origin);
-    }
-    for (const auto& [origin, when] : mRemoved) {
-        if (when > version) changes.removed.push_back(origin);
-    }
+    for (const openvdb::Coord& origin : origins)
+        (mBlocks.count(origin) ? changes.updated : changes.removed).push_back(origin);
     return changes;
 }
 

@@ -35,7 +35,7 @@ public:
     /// @return the number of blocks re-meshed. Cost: linear in the dirty region.
     std::size_t update(const FieldImage& field, const DirtyRegion& dirty);
 
-    /// Incremented by every rebuild() and update().
+    /// Incremented by every rebuild() and by every update() of a non-empty region.
     std::uint64_t version() const { return mVersion; }
     /// Never the same for two meshers of this process (an address is: a freed mesher's is reused),
     /// so (id, version) names what a viewer shows.
@@ -46,6 +46,7 @@ public:
         std::vector<openvdb::Coord> updated;
         std::vector<openvdb::Coord> removed;
     };
+    /// Cost: the blocks changed since `version`, not the model.
     Changes changesSince(std::uint64_t version) const;
 
     /// The cached blocks, by origin (index space).
@@ -60,12 +61,17 @@ public:
 
 private:
     void remesh(const FieldImage& field, const std::vector<openvdb::Coord>& origins, const Progress& progress = {});
+    void logChanges(std::vector<openvdb::Coord> origins);
 
     int mBlockVoxels;
     UniqueId mId;
     std::uint64_t mVersion = 0;
     std::map<openvdb::Coord, BlockMesh> mBlocks;
-    std::map<openvdb::Coord, std::uint64_t> mRemoved;  // origin -> version when dropped
+    // Version -> the blocks it re-meshed or dropped, so that changesSince() costs what changed
+    // since, not the model. Old entries are merged (into the newest version among them) once
+    // the log outgrows the blocks: a viewer that far behind is told a superset, never less.
+    std::map<std::uint64_t, std::vector<openvdb::Coord>> mChangeLog;
+    std::size_t mLoggedOrigins = 0, mCompactAbove = 4096;
 };
 
 /// One-shot: the welded zero iso-surface of a field image. Cost: linear in the band.

@@ -73,11 +73,17 @@ void validateStroke(const Stroke& stroke)
 }
 
 struct SculptSession::LiveStroke {
-    explicit LiveStroke(const Stroke& settings) : stroke(settings), stepper(settings) { stroke.samples.clear(); }
+    LiveStroke(const Stroke& settings, const openvdb::BBoxd& box) : stroke(settings), stepper(settings), reach(box)
+    {
+        stroke.samples.clear();
+    }
     Stroke stroke;
     StrokeStepper stepper;
     LeafJournal journal;
     StrokeReport report;
+    /// The model's world box at the stroke's start, grown by each stamp's reach: a superset of
+    /// the band's leaves kept per stamp, so no sample walks the whole tree.
+    openvdb::BBoxd reach;
 };
 
 SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBudgetBytes, const Progress& meshing)
@@ -94,23 +100,28 @@ SculptSession::~SculptSession() = default;
 SculptSession::SculptSession(SculptSession&&) noexcept = default;
 SculptSession& SculptSession::operator=(SculptSession&&) noexcept = default;
 
+std::optional<openvdb::BBoxd> SculptSession::modelBox() const
+{
+    openvdb::CoordBBox box;  // of the leaves: a voxel-exact box would visit every voxel
+    if (!mField.grid().tree().evalLeafBoundingBox(box)) return std::nullopt;
+    return mField.grid().transform().indexToWorld(box);
+}
+
 double SculptSession::modelSize() const
 {
-    openvdb::CoordBBox box;  // of the leaves: a voxel-exact box would visit every voxel per stroke
-    if (!mField.grid().tree().evalLeafBoundingBox(box)) return 0.0;
-    return double(box.dim().asVec3d().length()) * mField.voxelSize();
+    const std::optional<openvdb::BBoxd> box = modelBox();
+    return box ? box->extents().length() : 0.0;
 }
 
 void SculptSession::checkNearModel(const StrokeSample& sample, std::size_t index) const
 {
-    openvdb::CoordBBox box;
-    if (!mField.grid().tree().evalLeafBoundingBox(box)) return;
-    const openvdb::BBoxd world = mField.grid().transform().indexToWorld(box);
+    const openvdb::BBoxd& world = mLive->reach;
+    if (world.empty()) return;
     const openvdb::Vec3d p = sample.positionWorld;
     const openvdb::Vec3d nearest(std::clamp(p.x(), world.min().x(), world.max().x()),
                                  std::clamp(p.y(), world.min().y(), world.max().y()),
                                  std::clamp(p.z(), world.min().z(), world.max().z()));
-    const double size = modelSize(), away = (p - nearest).length();
+    const double size = world.extents().length(), away = (p - nearest).length();
     if (away > kSampleReachModels * size) {
         throw InputError("field 'samples[" + std::to_string(index) + "].position' lies " + formatNumber(away) +
                          " from the model (" + formatNumber(size) + " " + mField.units() +
@@ -118,9 +129,8 @@ void SculptSession::checkNearModel(const StrokeSample& sample, std::size_t index
     }
 }
 
-void SculptSession::checkRadius(const BrushSettings& brush) const
+void SculptSession::checkRadius(const BrushSettings& brush, double size) const
 {
-    const double size = modelSize();
     if (brush.radiusWorld > size) {
         throw InputError("field 'radius' (" + formatNumber(brush.radiusWorld) + ") is larger than the model (" +
                          formatNumber(size) + " " + mField.units() + " across)");
@@ -144,15 +154,18 @@ void SculptSession::beginStroke(const Stroke& settings)
 {
     if (mLive) throw std::logic_error("beginStroke: a stroke is already active");
     validateSettings(settings);
-    checkRadius(settings.brush);
-    mLive = std::make_unique<LiveStroke>(settings);
+    const std::optional<openvdb::BBoxd> box = modelBox();
+    checkRadius(settings.brush, box ? box->extents().length() : 0.0);
+    mLive = std::make_unique<LiveStroke>(settings, box.value_or(openvdb::BBoxd()));
 }
 
 void SculptSession::stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report)
 {
     for (const BrushStamp& s : stamps) {
         applyStamp(mField, mLive->stroke.brush, s, &mLive->journal);
-        updateMesh();
+        const openvdb::Vec3d reach(mLive->stroke.brush.radiusWorld + mField.halfWidthVoxels() * mField.voxelSize());
+        for (const openvdb::Vec3d& c : {s.centreWorld, s.previousWorld})
+            mLive->reach.expand(openvdb::BBoxd(c - reach, c + reach));
         ++report.stamps;
     }
 }
@@ -173,12 +186,15 @@ SculptSession::FinishedStroke SculptSession::endStroke()
 {
     if (!mLive) throw std::logic_error("endStroke: no active stroke");
     stamp(mLive->stepper.finish(), mLive->report);
+    updateMesh();
     std::unique_ptr<LiveStroke> live = std::move(mLive);
     live->report.leavesChanged = live->journal.leafCount();
     live->report.journalBytes = live->journal.memoryBytes();
     mHistory.push(std::move(live->journal));
     return {std::move(live->stroke), live->report};
 }
+
+const LeafJournal* SculptSession::strokeJournal() const { return mLive ? &mLive->journal : nullptr; }
 
 void SculptSession::cancelStroke()
 {

@@ -3,7 +3,7 @@
 /// @brief The document being sculpted: its field, its undo history and, optionally, a live mesh.
 ///
 /// Everything the UI and the scripts do to a document goes through here: a stroke is applied
-/// stamp by stamp (each stamp journals the leaves it changes, then the mesher re-meshes just
+/// stamp by stamp (each stamp journals the leaves it changes; the mesher later re-meshes just
 /// those), then recorded as one undo step.
 
 #include "core/field/field_image.h"
@@ -18,7 +18,7 @@ namespace sculpt {
 
 class SculptSession {
 public:
-    /// @param liveMesh keep an IncrementalMesher up to date after every stamp (the UI does).
+    /// @param liveMesh keep an IncrementalMesher up to date (the UI does; see updateMesh()).
     /// @param meshing reports the first full mesh (Cancelled if it says stop).
     explicit SculptSession(FieldImage field, bool liveMesh = false,
                            std::size_t undoBudgetBytes = UndoHistory::kDefaultBudgetBytes,
@@ -52,6 +52,8 @@ public:
     /// Puts the field back as before the live stroke and forgets it.
     void cancelStroke();
     bool strokeActive() const { return mLive != nullptr; }
+    /// The live stroke's journal (what its stamps changed, as it was before), or null.
+    const LeafJournal* strokeJournal() const;
     /// Makes `result` (a whole-model edit of this field: a filter, a morph frame) the field, as
     /// one undo step that keeps the whole previous grid. Not during a live stroke.
     /// @throws InputError unless `result` has the field's transform; nothing changes then.
@@ -70,12 +72,18 @@ public:
     std::size_t remeshedBlocks() const { return mRemeshed; }
 
     /// Largest extent of the model's band, world units: brushes larger than this are refused.
+    /// A pass over the tree's nodes: not per event.
     double modelSize() const;
+
+    /// Re-meshes the blocks changed since the last call. A live stroke's stamps do not (the UI
+    /// calls this once per frame, so events never wait for the mesher); every other edit, and
+    /// a stroke's end, re-mesh at once.
+    void updateMesh();
 
 private:
     struct LiveStroke;
-    void updateMesh();
-    void checkRadius(const BrushSettings& brush) const;
+    std::optional<openvdb::BBoxd> modelBox() const;
+    void checkRadius(const BrushSettings& brush, double modelSize) const;
     /// @throws InputError if the sample lies far beyond the model (its stamps would reach nothing).
     void checkNearModel(const StrokeSample& sample, std::size_t index) const;
     void stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report);

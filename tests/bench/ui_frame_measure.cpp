@@ -92,9 +92,10 @@ int main(int argc, char** argv)
 {
     TempDir dir;
     if (argc > 2 && std::string(argv[1]) == "--document") {  // a model of your own, e.g. an imported scan
-        const std::string document = std::filesystem::absolute(argv[2]).string();
-        measure(document, "'" + document + "'", "", dir);
-        measure(document + " (a chunk per block)", "'" + document + "'", "--display-chunk 1", dir);
+        const std::filesystem::path document = std::filesystem::absolute(argv[2]);
+        const std::string name = document.filename().string(), quoted = "'" + document.string() + "'";
+        measure(name, quoted, "", dir);
+        measure(name + " (a chunk per block)", quoted, "--display-chunk 1", dir);
         return 0;
     }
     const std::string radius = argc > 2 && std::string(argv[1]) == "--big-radius" ? argv[2] : "80";

@@ -176,6 +176,37 @@ TEST(SculptUi, AStrokeRecordedInTheUiReplaysBitForBitWithSculptApply)
     EXPECT_NE(checksumOfFile(dir / "ball.vdb"), ui);
 }
 
+TEST(SculptUi, StrokesOnASlowMachineFollowEveryEventToTheSameGridBitForBit)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;  // 20 ms apart: with 250 ms added to each frame, a dozen events come per frame
+    events.report(r, "start").drag(560, 330, 760, 470, 30).key("S").drag(700, 450, 540, 350, 20);
+    events.report(r, "end");
+    const std::string save = " --save-as ";
+    ASSERT_EQ(play(dir, events, (dir / "ball.vdb").string(), save + shellQuoted(dir / "fast.vdb")).exitCode, 0);
+    const std::size_t fastFrames =
+        Reports(r)["end"]["frame"].get<std::size_t>() - Reports(r)["start"]["frame"].get<std::size_t>();
+    fs::remove(r);
+    const CommandResult slow = play(dir, events, (dir / "ball.vdb").string(),
+                                    "--slow-frames 250 --stroke-log " + shellQuoted(dir / "strokes.json") + save +
+                                        shellQuoted(dir / "slow.vdb"));
+    ASSERT_EQ(slow.exitCode, 0) << slow.err;
+    const Reports reports(r);
+    const std::size_t slowFrames =
+        reports["end"]["frame"].get<std::size_t>() - reports["start"]["frame"].get<std::size_t>();
+    EXPECT_LT(slowFrames, fastFrames);
+    EXPECT_LT(4 * slowFrames, 50u) << "the 50 moves should have come four and more to a frame";
+    EXPECT_EQ(reports["end"]["undo"], 2);
+    ASSERT_EQ(runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string()).exitCode, 0);
+    const std::string slowGrid = reports["end"]["checksum"];
+    EXPECT_EQ(checksumOfFile(dir / "slow.vdb"), slowGrid);
+    EXPECT_EQ(checksumOfFile(dir / "fast.vdb"), slowGrid);
+    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), slowGrid);
+    EXPECT_NE(checksumOfFile(dir / "ball.vdb"), slowGrid);
+}
+
 TEST(SculptUi, ARecordingReplaysToTheSameGridAndAResizeResizesTheView)
 {
     TempDir dir;

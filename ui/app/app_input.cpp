@@ -105,7 +105,7 @@ void SculptApp::pressButton(const InputEvent& event)
 void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
 {
     try {
-        mPicker.freeze(mDocument->session().field());
+        mPicker.freeze(mDocument->session().field(), mDocument->session().mesher()->version());
         mStrokeMods = event.mods | mHeldMods;
         mStroke.begin(*mDocument, mBrush, mStrokeMods, hit, mViewport.rayThrough(mMouseX, mMouseY), event.time, mMouseX,
                       mMouseY);

@@ -72,13 +72,17 @@ int main(int argc, char** argv)
     cli.add_option("--state-dir", options.stateDir, "where recovery files and recent files live")
         ->capture_default_str();
     cli.add_option("--lod-triangles", options.lodTriangles,
-                   "above this many triangles, parts of the model under a pixel per voxel are drawn coarse "
+                   "above this many triangles, parts of the model under two pixels per voxel are drawn coarse "
                    "while the camera moves or a stroke runs (full detail near the brush and when still)")
         ->capture_default_str();
     cli.add_option("--display-chunk", options.chunkBlocks,
                    "blocks per edge of a display chunk (one draw call each); 0 chooses from the model's size")
         ->capture_default_str()
         ->check(CLI::Range(0, 32));
+    cli.add_option("--slow-frames", options.slowFramesMs,
+                   "add this many milliseconds to every frame, as a slow machine would (input then arrives "
+                   "faster than frames: strokes must still follow every event)")
+        ->check(CLI::Range(0, 5000));
     CLI11_PARSE(cli, argc, argv);
 
     int width = 0, height = 0;

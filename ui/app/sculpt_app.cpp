@@ -15,10 +15,12 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <thread>
 
 namespace sculpt::ui {
 
@@ -103,7 +105,8 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
 {
     if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
     const SculptSession& session = mDocument->session();
-    return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y));
+    return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y),
+                        session.strokeJournal());
 }
 
 HoverKey SculptApp::hoverKey() const
@@ -162,7 +165,8 @@ void SculptApp::refreshStatus(bool topology)
     mStatus.triangles = mStatistics.triangles();
     mStatus.volume = mStatistics.volume();
     mStatus.area = mStatistics.area();
-    if (mMeasuredVersion != session.mesher()->version()) {  // whole-tree passes: only after a change
+    // Whole-tree passes: only after a change, and not per frame of a stroke (at its end).
+    if (mMeasuredVersion != session.mesher()->version() && !mStroke.active()) {
         mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
         mModelSize = session.modelSize();
         mMeasuredVersion = session.mesher()->version();
@@ -200,6 +204,7 @@ void SculptApp::frame()
 {
     const double now = mWindow.time();
     pollJob();
+    mDocument->session().updateMesh();  // once per frame: a stroke's events only stamp
 
     const SculptSession& session = mDocument->session();
     const std::size_t remeshed = session.remeshedBlocks();
@@ -235,6 +240,7 @@ void SculptApp::frame()
     mPendingScreenshots.clear();
     mPendingReports.clear();
     mWindow.swapBuffers();
+    if (mOptions.slowFramesMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(mOptions.slowFramesMs));
 
     const double end = mWindow.time();
     mStatus.frameMs = 1000.0 * (end - now);

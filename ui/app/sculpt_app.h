@@ -49,6 +49,7 @@ struct AppOptions {
     double autosaveSeconds = Autosave::kDefaultIntervalSeconds;
     std::size_t lodTriangles = 300000;  ///< far chunks coarse while moving or sculpting above this many
     int chunkBlocks = 0;                ///< blocks per display chunk edge; 0: chosen from the model
+    int slowFramesMs = 0;               ///< added to every frame (a slow machine, for tests)
     bool stay = false;                  ///< keep the window open after a replay
 };
 

@@ -1,50 +1,41 @@
 #include "ui/sculpting/surface_picker.h"
 
-#include <openvdb/tools/RayIntersector.h>
+#include "core/field/surface_ray.h"
 
 namespace sculpt::ui {
 
-struct SurfacePicker::Intersector {
-    explicit Intersector(const openvdb::FloatGrid& grid) : isect(grid) {}
-    openvdb::tools::LevelSetRayIntersector<openvdb::FloatGrid> isect;
-};
-
-SurfacePicker::SurfacePicker() = default;
-SurfacePicker::~SurfacePicker() = default;
-
 void SurfacePicker::reset()
 {
-    mIntersector.reset();
-    mFrozen.reset();
+    mBox = openvdb::CoordBBox();
     mFieldId = 0;
+    mFrozen = false;
 }
 
-void SurfacePicker::freeze(const FieldImage& field)
+void SurfacePicker::refreshBox(const FieldImage& field, std::uint64_t fieldVersion)
 {
-    mFrozen = field.grid().deepCopy();
-    mIntersector = std::make_unique<Intersector>(*mFrozen);
+    if (mFieldId == field.id() && mVersion == fieldVersion) return;
+    mBox = openvdb::CoordBBox();  // a pass over the tree's nodes: once per change, never per pick
+    field.grid().tree().evalLeafBoundingBox(mBox);
+    mFieldId = field.id();
+    mVersion = fieldVersion;
 }
 
-void SurfacePicker::thaw()
+void SurfacePicker::freeze(const FieldImage& field, std::uint64_t fieldVersion)
 {
-    mFrozen.reset();
-    mIntersector.reset();
+    refreshBox(field, fieldVersion);
+    mFrozen = true;
 }
 
-std::optional<SurfaceHit> SurfacePicker::pick(const FieldImage& field, std::uint64_t fieldVersion, const Ray& ray)
+std::optional<SurfaceHit> SurfacePicker::pick(const FieldImage& field, std::uint64_t fieldVersion, const Ray& ray,
+                                              const LeafJournal* editedSince)
 {
-    if (field.grid().tree().activeVoxelCount() == 0) return std::nullopt;
-    if (!mFrozen && (!mIntersector || mFieldId != field.id() || mVersion != fieldVersion)) {
-        mIntersector = std::make_unique<Intersector>(field.grid());
-        mFieldId = field.id();
-        mVersion = fieldVersion;
-    }
-    const openvdb::math::Ray<double> r(openvdb::Vec3d(ray.origin.x, ray.origin.y, ray.origin.z),
-                                       openvdb::Vec3d(ray.direction.x, ray.direction.y, ray.direction.z));
-    openvdb::Vec3d hit, normal;
-    if (!mIntersector->isect.intersectsWS(r, hit, normal)) return std::nullopt;
-    if (normal.length() > 0.0) normal.normalize();
-    return SurfaceHit{{hit.x(), hit.y(), hit.z()}, {normal.x(), normal.y(), normal.z()}};
+    if (!mFrozen) refreshBox(field, fieldVersion);
+    const auto crossing =
+        firstSurfaceCrossing(PreEditField(field, editedSince), mBox, {ray.origin.x, ray.origin.y, ray.origin.z},
+                             {ray.direction.x, ray.direction.y, ray.direction.z});
+    if (!crossing) return std::nullopt;
+    const openvdb::Vec3d p = crossing->position, n = crossing->normal;
+    return SurfaceHit{{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}};
 }
 
 }  // namespace sculpt::ui

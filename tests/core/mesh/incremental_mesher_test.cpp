@@ -17,6 +17,7 @@
 #include <vtkPointData.h>
 
 #include <random>
+#include <set>
 
 namespace sculpt {
 namespace {
@@ -118,6 +119,47 @@ TEST(IncrementalMesher, RandomEditsMatchAFullRemesh)
     expectIdentical(mesher.weldedMesh(), fresh.weldedMesh());
     const test::MeshTopology t = meshTopology(mesher.weldedMesh());
     EXPECT_TRUE(t.closedManifold()) << "seed " << seed;
+}
+
+TEST(IncrementalMesher, AViewerFarBehindIsToldEveryChangeAfterItsLogIsCompacted)
+{
+    std::mt19937 random(20261204);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    FieldImage field = makeSphere(20.0, 1.0);
+    IncrementalMesher mesher;
+    mesher.rebuild(field);
+    const auto atStart = mesher.blocks();
+    const std::uint64_t start = mesher.version();
+    std::size_t logged = 0, lastRemeshed = 0;
+    std::uint64_t beforeLast = start;
+    for (int edit = 0; edit < 600; ++edit) {  // far more origins than 2 x blocks + 4096: compacted
+        openvdb::Vec3d direction(unit(random), unit(random), unit(random));
+        const openvdb::Vec3d centre = direction.unit() * (20.0 + 2.0 * unit(random));
+        beforeLast = mesher.version();
+        lastRemeshed = mesher.update(field, stampSphere(field, centre, 3.0, edit % 2 ? CsgMode::Add : CsgMode::Carve));
+        logged += lastRemeshed;
+    }
+    ASSERT_GT(logged, 2 * mesher.blocks().size() + 4096);
+    const auto changes = mesher.changesSince(start);
+    const std::set<openvdb::Coord> updated(changes.updated.begin(), changes.updated.end());
+    const std::set<openvdb::Coord> removed(changes.removed.begin(), changes.removed.end());
+    for (const auto& [origin, mesh] : mesher.blocks()) {
+        if (mesh.version > start) {
+            EXPECT_TRUE(updated.count(origin)) << origin;
+        }
+        EXPECT_FALSE(removed.count(origin)) << origin;
+    }
+    for (const auto& [origin, mesh] : atStart) {
+        if (!mesher.blocks().count(origin)) {
+            EXPECT_TRUE(removed.count(origin)) << origin;
+        }
+    }
+    const auto last = mesher.changesSince(beforeLast);  // a viewer one update behind: just that one
+    EXPECT_LE(last.updated.size() + last.removed.size(), lastRemeshed);
+    EXPECT_TRUE(mesher.changesSince(mesher.version()).updated.empty());
+    const std::uint64_t version = mesher.version();
+    mesher.update(field, DirtyRegion());
+    EXPECT_EQ(mesher.version(), version);  // nothing dirty, nothing new
 }
 
 TEST(IncrementalMesher, OneEditRemeshesOnlyNearbyBlocks)
