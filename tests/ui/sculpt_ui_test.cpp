@@ -147,6 +147,11 @@ TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
     EXPECT_GT(uploaded, 0u);
     EXPECT_EQ(uploaded + reports["pressed"]["removed"].get<std::size_t>(), changed);
     EXPECT_LT(double(uploaded), 0.05 * double(blocks)) << uploaded << " of " << blocks;
+    // The display re-uploads the chunks holding those blocks, and no others.
+    const std::size_t chunks = reports["pressed"]["chunks"], chunksUploaded = reports["pressed"]["chunks_uploaded"];
+    EXPECT_GT(chunksUploaded, 0u);
+    EXPECT_LE(chunksUploaded, uploaded + reports["pressed"]["removed"].get<std::size_t>());
+    EXPECT_LT(double(chunksUploaded), 0.2 * double(chunks)) << chunksUploaded << " of " << chunks;
     EXPECT_NE(reports["pressed"]["checksum"], reports["before"]["checksum"]);  // stamped on the press, before any frame
 }
 

@@ -78,6 +78,7 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
     mReportVersion = session.mesher()->version();
     r["bytes_uploaded"] = mStatus.bytesUploaded;
+    r["chunks_uploaded"] = mStatus.chunksUploaded;
     r["mesh_bytes"] = mDisplay.meshBytes();
     mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = mStatus.chunksUploaded = 0;
     mLastRemeshed = 0;
@@ -119,7 +120,6 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["chunk_blocks"] = mDisplay.chunkBlocks();
     r["actors"] = mDisplay.actorCount();
     r["triangles_drawn"] = mDisplay.trianglesDrawn();
-    r["chunks_uploaded"] = mStatus.chunksUploaded;
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";
