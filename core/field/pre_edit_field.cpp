@@ -1,5 +1,7 @@
 #include "core/field/pre_edit_field.h"
 
+#include "core/field/central_difference.h"
+
 #include <cmath>
 
 namespace sculpt {
@@ -37,13 +39,8 @@ double PreEditField::sample(const openvdb::Vec3d& index) const
 
 openvdb::Vec3d PreEditField::gradient(const openvdb::Vec3d& index) const
 {
-    openvdb::Vec3d g;
-    for (int axis = 0; axis < 3; ++axis) {
-        openvdb::Vec3d step(0.0);
-        step[axis] = 0.5;
-        g[axis] = sample(index + step) - sample(index - step);
-    }
-    return g;
+    return centralDifference([&](int x, int y, int z) { return sample(index + openvdb::Vec3d(x, y, z) * 0.5); }, 0, 0,
+                             0);
 }
 
 }  // namespace sculpt

@@ -1,5 +1,7 @@
 #include "core/field/surface_ray.h"
 
+#include <openvdb/math/Ray.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,25 +12,6 @@ namespace {
 constexpr double kStepOfDistance = 0.5;  // of |phi|: safe for the trilinear field's slope
 constexpr double kMinStepVoxels = 0.1;
 constexpr int kBisections = 20;  // 2^-20 of a step: far below a voxel
-
-/// [t0, t1] of the ray o + t d inside the box, if it meets it at t >= 0.
-std::optional<std::pair<double, double>> clip(const openvdb::BBoxd& box, const openvdb::Vec3d& o,
-                                              const openvdb::Vec3d& d)
-{
-    double t0 = 0.0, t1 = std::numeric_limits<double>::max();
-    for (int axis = 0; axis < 3; ++axis) {
-        if (d[axis] == 0.0) {
-            if (o[axis] < box.min()[axis] || o[axis] > box.max()[axis]) return std::nullopt;
-            continue;
-        }
-        double a = (box.min()[axis] - o[axis]) / d[axis], b = (box.max()[axis] - o[axis]) / d[axis];
-        if (a > b) std::swap(a, b);
-        t0 = std::max(t0, a);
-        t1 = std::min(t1, b);
-    }
-    if (t0 > t1) return std::nullopt;
-    return std::make_pair(t0, t1);
-}
 
 }  // namespace
 
@@ -43,14 +26,14 @@ std::optional<RayCrossing> firstSurfaceCrossing(const PreEditField& field, const
     d.normalize();
     // A voxel more on each side: the trilinear field reaches past the last voxel's centre.
     const openvdb::BBoxd searched(box.min().asVec3d() - openvdb::Vec3d(1.0), box.max().asVec3d() + openvdb::Vec3d(1.0));
-    const auto span = clip(searched, o, d);
-    if (!span) return std::nullopt;
+    openvdb::math::Ray<double> ray(o, d, 0.0);
+    if (!ray.clip(searched)) return std::nullopt;
     const double h = field.field().voxelSize();
     auto phiAt = [&](double t) { return field.sample(o + d * t) / h; };  // in voxels
 
-    double t = span->first, phi = phiAt(t);
-    while (t < span->second) {
-        const double next = std::min(span->second, t + std::max(kStepOfDistance * std::abs(phi), kMinStepVoxels));
+    double t = ray.t0(), phi = phiAt(t);
+    while (t < ray.t1()) {
+        const double next = std::min(ray.t1(), t + std::max(kStepOfDistance * std::abs(phi), kMinStepVoxels));
         const double phiNext = phiAt(next);
         if ((phi > 0.0) != (phiNext > 0.0)) {
             double lo = t, hi = next;  // phi(lo) on the side phi started, phi(hi) across

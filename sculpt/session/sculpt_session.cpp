@@ -100,18 +100,19 @@ SculptSession::~SculptSession() = default;
 SculptSession::SculptSession(SculptSession&&) noexcept = default;
 SculptSession& SculptSession::operator=(SculptSession&&) noexcept = default;
 
-std::optional<openvdb::BBoxd> SculptSession::modelBox() const
+openvdb::CoordBBox SculptSession::leafBox() const
 {
     openvdb::CoordBBox box;  // of the leaves: a voxel-exact box would visit every voxel
-    if (!mField.grid().tree().evalLeafBoundingBox(box)) return std::nullopt;
-    return mField.grid().transform().indexToWorld(box);
+    mField.grid().tree().evalLeafBoundingBox(box);
+    return box;
 }
 
-double SculptSession::modelSize() const
+double SculptSession::sizeOf(const openvdb::CoordBBox& box) const
 {
-    const std::optional<openvdb::BBoxd> box = modelBox();
-    return box ? box->extents().length() : 0.0;
+    return box.empty() ? 0.0 : double(box.dim().asVec3d().length()) * mField.voxelSize();
 }
+
+double SculptSession::modelSize() const { return sizeOf(leafBox()); }
 
 void SculptSession::checkNearModel(const StrokeSample& sample, std::size_t index) const
 {
@@ -154,9 +155,10 @@ void SculptSession::beginStroke(const Stroke& settings)
 {
     if (mLive) throw std::logic_error("beginStroke: a stroke is already active");
     validateSettings(settings);
-    const std::optional<openvdb::BBoxd> box = modelBox();
-    checkRadius(settings.brush, box ? box->extents().length() : 0.0);
-    mLive = std::make_unique<LiveStroke>(settings, box.value_or(openvdb::BBoxd()));
+    const openvdb::CoordBBox box = leafBox();  // the one pass over the tree's nodes a stroke makes
+    checkRadius(settings.brush, sizeOf(box));
+    mLive = std::make_unique<LiveStroke>(settings,
+                                         box.empty() ? openvdb::BBoxd() : mField.grid().transform().indexToWorld(box));
 }
 
 void SculptSession::stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report)

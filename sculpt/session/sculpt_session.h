@@ -82,7 +82,8 @@ public:
 
 private:
     struct LiveStroke;
-    std::optional<openvdb::BBoxd> modelBox() const;
+    openvdb::CoordBBox leafBox() const;
+    double sizeOf(const openvdb::CoordBBox& leafBox) const;
     void checkRadius(const BrushSettings& brush, double modelSize) const;
     /// @throws InputError if the sample lies far beyond the model (its stamps would reach nothing).
     void checkNearModel(const StrokeSample& sample, std::size_t index) const;
