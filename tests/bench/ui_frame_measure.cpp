@@ -1,10 +1,15 @@
 // A scripted measurement of sculpt-ui under Mesa's software OpenGL (not a Google Benchmark: the
-// figures come from one replayed session per model, as a person would see them). For each model
-// it replays: 3 s still (static frame time), a 10-second stroke at 60 events a second, a 3-second
-// orbit drag, and prints medians and 95th percentiles. Run by hand:
-//   build/tests/bench/ui_frame_measure [--big-radius 80 | --document DOC.vdb]
+// figures come from replayed sessions, as a person would see them). For each model it replays 3 s
+// still (static frame), a 10-second stroke at 60 events a second, a 3-second orbit drag and 30
+// key-orbit steps, and prints medians and 95th percentiles, triangles drawn, actors, stamps per
+// second, first-frame time and peak memory. The models are issue 31's: the clay ball, and
+// ch2better (mricron-data) imported at 0.5 mm and at 0.25 mm (8 M triangles), made at run time.
+// Run by hand (about 12 minutes; the 0.25 mm model alone about 6):
+//   build/tests/bench/ui_frame_measure [--reference] [--document DOC.vdb]
+// --reference adds, for each model, the display of one actor per block it had before chunks.
 // Figures go in the issue notes.
 
+#include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
 #include "tests/ui/ui_driver.h"
 
@@ -13,12 +18,16 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
+#include <regex>
 #include <string>
 
 namespace {
 
 using namespace sculpt::test;
 using nlohmann::json;
+
+const char* const kScan = "/usr/share/mricron/templates/ch2better.nii.gz";
 
 double percentile(std::vector<double> v, double q)
 {
@@ -29,17 +38,27 @@ double percentile(std::vector<double> v, double q)
 
 std::vector<double> numbers(const json& list) { return list.get<std::vector<double>>(); }
 
-void summarise(const std::string& model, const Reports& r)
+/// The seconds sculpt-ui says its first frame took.
+double firstFrameSeconds(const std::string& out)
 {
-    const auto line = [&](const char* what, const std::vector<double>& ms) {
-        std::printf("  %-28s median %6.1f ms  p95 %6.1f ms  (%zu frames, %.1f fps)\n", what, percentile(ms, 0.5),
-                    percentile(ms, 0.95), ms.size(), 1000.0 / std::max(1e-9, percentile(ms, 0.5)));
-    };
-    std::printf("%s: %zu triangles, %zu blocks, %zu chunks (C = %d), %zu actors\n", model.c_str(),
-                r["still"]["triangles"].get<std::size_t>(), r["still"]["blocks"].get<std::size_t>(),
-                r["still"]["chunks"].get<std::size_t>(), r["still"]["chunk_blocks"].get<int>(),
-                r["still"]["actors"].get<std::size_t>());
-    line("static", numbers(r["still"]["frame_times_ms"]));
+    std::smatch m;
+    return std::regex_search(out, m, std::regex("first frame in ([0-9.e+-]+) s")) ? std::stod(m[1]) : -1.0;
+}
+
+void line(const char* what, const std::vector<double>& ms)
+{
+    std::printf("  %-28s median %6.1f ms  p95 %6.1f ms  (%zu frames, %.1f fps)\n", what, percentile(ms, 0.5),
+                percentile(ms, 0.95), ms.size(), 1000.0 / std::max(1e-9, percentile(ms, 0.5)));
+}
+
+void summarise(const std::string& model, const Reports& r, double firstFrame)
+{
+    const json& still = r["still"];
+    std::printf("%s: %zu triangles, %zu blocks, %zu chunks (C = %d), %zu actors; first frame %.2f s\n", model.c_str(),
+                still["triangles"].get<std::size_t>(), still["blocks"].get<std::size_t>(),
+                still["chunks"].get<std::size_t>(), still["chunk_blocks"].get<int>(),
+                still["actors"].get<std::size_t>(), firstFrame);
+    line("static", numbers(still["frame_times_ms"]));
     line("sculpting (10 s stroke)", numbers(r["stroked"]["frame_times_ms"]));
     const std::vector<double> latency = numbers(r["stroked"]["latencies_ms"]);
     std::printf("  %-28s median %6.1f ms  p95 %6.1f ms\n", "event -> stamp on screen", percentile(latency, 0.5),
@@ -49,41 +68,60 @@ void summarise(const std::string& model, const Reports& r)
                 "stamps", stamps, stamps / 10.0,
                 r["stroked"]["bytes_uploaded"].get<double>() / std::max(1.0, stamps) / 1024.0,
                 r["stroked"]["mesh_bytes"].get<double>() / 1024.0);
-    line(r["orbiting"]["coarse"].get<bool>() ? "orbit (coarse display)" : "orbit (full detail)",
-         numbers(r["orbiting"]["frame_times_ms"]));
-    std::printf("  %-28s still %zu, orbiting %zu\n", "triangles drawn",
-                r["still"]["triangles_drawn"].get<std::size_t>(), r["orbiting"]["triangles_drawn"].get<std::size_t>());
+    line("orbit, mouse drag", numbers(r["orbiting"]["frame_times_ms"]));
+    line("orbit, keys", numbers(r["keyed"]["frame_times_ms"]));
+    std::printf("  %-28s still %zu, sculpting %zu, orbiting %zu (%zu of %zu chunks coarse), keys %zu\n",
+                "triangles drawn", still["triangles_drawn"].get<std::size_t>(),
+                r["stroke-mid"]["triangles_drawn"].get<std::size_t>(),
+                r["orbiting"]["triangles_drawn"].get<std::size_t>(), r["orbiting"]["coarse_chunks"].get<std::size_t>(),
+                r["orbiting"]["chunks"].get<std::size_t>(), r["keyed"]["triangles_drawn"].get<std::size_t>());
+    const double peak = std::max(r["stroked"]["peak_rss"].get<double>(), r["keyed"]["peak_rss"].get<double>());
+    std::printf("  %-28s %.2f GB\n", "peak RSS", peak / 1e9);
 }
 
-CommandResult replay(const UiEvents& events, const std::string& document, const std::string& extra, const TempDir& dir)
+/// The replay's stdout, or nothing if sculpt-ui failed.
+std::optional<std::string> replay(const UiEvents& events, const std::string& document, const std::string& extra,
+                                  const TempDir& dir)
 {
     events.write(dir / "events.json");
     const CommandResult run = runUi(document + " --play '" + (dir / "events.json").string() + "' --state-dir '" +
                                         (dir / "state").string() + "' " + extra,
                                     dir.path().string());
-    if (run.exitCode != 0) std::cerr << "sculpt-ui failed: " << run.err << "\n";
-    std::cout << run.out;
-    return run;
+    if (run.exitCode != 0) {
+        std::cerr << "sculpt-ui failed: " << run.err << "\n";
+        return std::nullopt;
+    }
+    return run.out;
 }
 
-/// Two runs, so a stroke that falls behind its schedule cannot crowd the orbit's events.
+/// Two runs, so a stroke that falls behind its schedule cannot crowd the orbits' events.
 void measure(const std::string& model, const std::string& document, const std::string& extra, const TempDir& dir)
 {
     const auto r = dir / (model + ".jsonl");
+    std::filesystem::remove(r);
     UiEvents sculpting;
     sculpting.move(760, 400).wait(3.0).report(r, "still").press();
     for (int i = 1; i <= 600; ++i) {  // 10 s at 60 Hz, circles of 120 px
         const double a = 2.0 * M_PI * i / 150.0;
         sculpting.wait(1.0 / 60.0 - 0.02).move(640 + 120 * std::cos(a), 400 + 120 * std::sin(a));
+        if (i == 300) sculpting.report(r, "stroke-mid");
     }
     sculpting.release().report(r, "stroked");
     UiEvents orbit;
     orbit.move(200, 650).wait(1.0).report(r, "orbit-start").press("right");
     for (int i = 1; i <= 180; ++i) orbit.wait(1.0 / 60.0 - 0.02).move(200 + 3 * i, 650);
-    orbit.report(r, "orbiting").release("right");
-    if (replay(sculpting, document, extra, dir).exitCode != 0 || replay(orbit, document, extra, dir).exitCode != 0)
-        return;
-    summarise(model, Reports(r));
+    orbit.report(r, "orbiting").release("right").wait(1.0).report(r, "keys-start");
+    for (int i = 0; i < 30; ++i) orbit.wait(0.1).key("Right");
+    orbit.report(r, "keyed");
+    const std::optional<std::string> first = replay(sculpting, document, extra, dir);
+    if (!first || !replay(orbit, document, extra, dir)) return;
+    summarise(model, Reports(r), firstFrameSeconds(*first));
+}
+
+void measureWithReference(const std::string& model, const std::string& document, bool reference, const TempDir& dir)
+{
+    measure(model, document, "", dir);
+    if (reference) measure(model + " (a chunk per block)", document, "--display-chunk 1", dir);
 }
 
 }  // namespace
@@ -91,20 +129,33 @@ void measure(const std::string& model, const std::string& document, const std::s
 int main(int argc, char** argv)
 {
     TempDir dir;
-    if (argc > 2 && std::string(argv[1]) == "--document") {  // a model of your own, e.g. an imported scan
-        const std::filesystem::path document = std::filesystem::absolute(argv[2]);
-        const std::string name = document.filename().string(), quoted = "'" + document.string() + "'";
-        measure(name, quoted, "", dir);
-        measure(name + " (a chunk per block)", quoted, "--display-chunk 1", dir);
+    bool reference = false;
+    std::string document;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--reference") reference = true;
+        else if (arg == "--document" && i + 1 < argc) document = std::filesystem::absolute(argv[++i]).string();
+        else {
+            std::cerr << "usage: ui_frame_measure [--reference] [--document DOC.vdb]\n";
+            return 2;
+        }
+    }
+    if (!document.empty()) {  // a model of your own, e.g. an imported scan
+        measureWithReference(std::filesystem::path(document).filename().string(), "'" + document + "'", reference, dir);
         return 0;
     }
-    const std::string radius = argc > 2 && std::string(argv[1]) == "--big-radius" ? argv[2] : "80";
-    measure("clay ball", "", "", dir);
-    const CommandResult made = runSculpt("new --radius " + radius + " -o big.vdb", dir.path().string());
-    if (made.exitCode != 0) return 1;
-    measure("big ball (LOD)", "big.vdb", "", dir);
-    measure("big ball (no LOD)", "big.vdb", "--lod-triangles 1000000000", dir);
-    // The reference: one actor per block, as the display drew before it had chunks.
-    measure("big ball (a chunk per block)", "big.vdb", "--display-chunk 1", dir);
+    measureWithReference("clay ball", "", reference, dir);
+    for (const char* voxel : {"0.5", "0.25"}) {
+        const std::string name = std::string("ch2better-") + voxel + ".vdb";
+        const CommandResult made =
+            runSculpt(std::string("import ") + kScan + " --largest-component --voxel-size " + voxel + " -o " + name,
+                      dir.path().string());
+        if (made.exitCode != 0) {
+            std::cerr << "could not import " << kScan << ": " << made.err << "\n";
+            return 1;
+        }
+        measureWithReference("ch2better at " + std::string(voxel) + " mm", "'" + (dir / name).string() + "'", reference,
+                             dir);
+    }
     return 0;
 }

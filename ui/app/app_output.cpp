@@ -1,6 +1,7 @@
 // SculptApp: what it writes for replays and tests, the composed frame and the state report.
 
 #include "core/field/grid_checksum.h"
+#include "ui/app/process_memory.h"
 #include "ui/app/sculpt_app.h"
 
 #include <nlohmann/json.hpp>
@@ -120,6 +121,7 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["chunk_blocks"] = mDisplay.chunkBlocks();
     r["actors"] = mDisplay.actorCount();
     r["triangles_drawn"] = mDisplay.trianglesDrawn();
+    r["peak_rss"] = peakResidentBytes();
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";

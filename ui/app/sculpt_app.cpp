@@ -2,11 +2,10 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "ui/app/process_memory.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
 #include "ui/window/app_window.h"
-
-#include <unistd.h>
 
 #include <imgui.h>
 #include <vtkRenderer.h>
@@ -17,7 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <new>
 #include <thread>
@@ -30,14 +28,6 @@ namespace {
 
 /// The coarse display stays on this long after the camera last moved.
 constexpr double kNavigationSettleSeconds = 0.25;
-
-std::size_t residentBytes()
-{
-    std::ifstream statm("/proc/self/statm");
-    std::size_t pages = 0, resident = 0;
-    statm >> pages >> resident;
-    return resident * std::size_t(sysconf(_SC_PAGESIZE));
-}
 
 std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& grid)
 {
@@ -197,7 +187,14 @@ DetailView SculptApp::detailView(double now)
         view.brushCentre = mHover->position;
         view.brushRadius = mBrush.radius;
     }
+    view.triangleBudget = std::size_t(mViewport.width()) * std::size_t(mViewport.height());
     return view;
+}
+
+const IncrementalMesher& SculptApp::shownMesher() const
+{
+    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
+    return modeMesh ? *modeMesh : *mDocument->session().mesher();
 }
 
 void SculptApp::frame()
@@ -211,8 +208,7 @@ void SculptApp::frame()
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
-    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
-    const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
+    const IncrementalMesher& shown = shownMesher();
     mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
@@ -364,8 +360,12 @@ void SculptApp::loopOnce(bool& replayDone)
             finishReplay();
             if (mQuit) return;
         }
-        // Idle (no input for a while): sleep until an event, waking to autosave.
-        mWindow.pollEvents(idle() ? 0.25 : 0.0);
+        // Idle (no input for a while): build the coarse twins the next camera move draws, a slice
+        // at a time, then sleep until an event, waking to autosave.
+        constexpr double kIdleSliceSeconds = 0.02;
+        const bool building = idle() && mDisplay.buildCoarseTwins(
+                                            shownMesher(), mDocument->session().field().voxelSize(), kIdleSliceSeconds);
+        mWindow.pollEvents(idle() && !building ? 0.25 : 0.0);
     }
     autosave();
     if (replaying || !idle()) frame();

@@ -163,6 +163,8 @@ private:
     void frame();
     /// What the display's level of detail needs of this frame (camera motion noticed here).
     DetailView detailView(double now);
+    /// The surface on show: a mode's preview, or the document's.
+    const IncrementalMesher& shownMesher() const;
     /// One pass of the loop: input (live or replayed), autosave, a frame.
     void loopOnce(bool& replayDone);
     /// An exception no handler expected (out of memory, a bug, an OpenVDB error) reached the

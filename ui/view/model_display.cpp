@@ -10,6 +10,7 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <chrono>
 #include <set>
 
 namespace sculpt::ui {
@@ -17,6 +18,16 @@ namespace sculpt::ui {
 namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
+/// Of a still frame, spent building coarse twins ahead of the next camera move; as much again
+/// at most on a moving frame for a twin it needs (the others draw full detail meanwhile).
+constexpr double kTwinSecondsPerFrame = 0.010;
+
+using Clock = std::chrono::steady_clock;
+
+Clock::time_point after(double seconds)
+{
+    return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+}
 
 vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
 {
@@ -46,6 +57,7 @@ struct ModelDisplay::Chunk {
     std::size_t fullTriangles = 0, coarseTriangles = 0, bytes = 0;
     glm::dvec3 lo{0.0}, hi{0.0};  // world bounds of its vertices
     bool fullStale = true, coarseStale = true, drawsCoarse = false;
+    bool fresh = false;  // uploaded by this sync: drawn in full, its twin not yet built
 };
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
@@ -130,6 +142,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
     }
     chunk.fullStale = false;
     chunk.coarseStale = true;
+    chunk.fresh = true;
     ++mLastChunkUploads;
 }
 
@@ -157,14 +170,41 @@ void ModelDisplay::show(Chunk& chunk, bool coarse)
 
 void ModelDisplay::chooseDetail(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
 {
+    const double twinShrink = kCoarseCellVoxels * kCoarseCellVoxels;  // a twin not yet built, estimated
+    std::vector<ChunkDetail> details;
+    details.reserve(mChunks.size());
+    for (const auto& [origin, chunk] : mChunks) {
+        const std::size_t twin =
+            chunk.coarseStale ? std::size_t(double(chunk.fullTriangles) / twinShrink) : chunk.coarseTriangles;
+        details.push_back({chunk.lo, chunk.hi, chunk.fullTriangles, twin, chunk.fresh});
+    }
+    const std::vector<bool> wanted = chooseCoarse(details, voxelSize, view);
+    const Clock::time_point deadline = after(kTwinSecondsPerFrame);
     mTrianglesDrawn = mCoarseChunks = 0;
+    std::size_t i = 0;
     for (auto& [origin, chunk] : mChunks) {
-        const bool coarse = drawsCoarse(chunk.lo, chunk.hi, voxelSize, view);
-        if (coarse && chunk.coarseStale) uploadCoarse(mesher, origin, chunk, voxelSize);
+        bool coarse = wanted[i++];
+        if (coarse && chunk.coarseStale) {
+            if (Clock::now() < deadline) uploadCoarse(mesher, origin, chunk, voxelSize);
+            else coarse = false;  // full detail this frame; the twin is built on a later one
+        }
         if (coarse != chunk.drawsCoarse) show(chunk, coarse);
+        chunk.fresh = false;
         mTrianglesDrawn += coarse ? chunk.coarseTriangles : chunk.fullTriangles;
         mCoarseChunks += coarse ? 1 : 0;
     }
+}
+
+bool ModelDisplay::buildCoarseTwins(const IncrementalMesher& mesher, double voxelSize, double seconds)
+{
+    if (mesher.id() != mSourceId || mesher.version() != mVersion) return false;  // the next sync lays out anew
+    const Clock::time_point deadline = after(seconds);
+    for (auto& [origin, chunk] : mChunks) {
+        if (!chunk.coarseStale) continue;
+        if (Clock::now() >= deadline) return true;
+        uploadCoarse(mesher, origin, chunk, voxelSize);
+    }
+    return false;
 }
 
 void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
@@ -202,6 +242,7 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const
         it = mChunks.erase(it);
     }
     chooseDetail(mesher, voxelSize, view);
+    if (view.still) buildCoarseTwins(mesher, voxelSize, kTwinSecondsPerFrame);
 }
 
 void ModelDisplay::setHidden(bool hidden)

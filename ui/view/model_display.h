@@ -10,8 +10,10 @@
 /// surface, as Blender's PBVH leaves) and doubles until there are at most kMaxChunks. A chunk is
 /// re-joined and re-uploaded, into the actor it already has, once per sync when one of its
 /// blocks changed; its coarse twin (the chunk's mesh clustered, about 9x fewer triangles) is
-/// rebuilt only when drawn after a change. Which of the two a chunk draws is the DetailView's
-/// rule. Every actor shares the SurfaceLook's property and shader.
+/// rebuilt after a change in a slice of still frames and of idle time, so that a camera move
+/// finds it ready (one a moving frame needs and lacks is built within a time slice, the chunk
+/// drawn in full until then). Which of the two a chunk draws is the DetailView's rule. Every
+/// actor shares the SurfaceLook's property and shader.
 
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/detail_view.h"
@@ -41,6 +43,9 @@ public:
     /// new mesher), then gives each chunk the detail `view` asks. `voxelSize` sizes the coarse
     /// twins' clusters. Once per frame.
     void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {});
+    /// Builds the coarse twins a change left stale, for about `seconds` (at least one twin), with
+    /// the mesher last synced. For idle time. Returns whether some are left.
+    bool buildCoarseTwins(const IncrementalMesher& mesher, double voxelSize, double seconds);
     /// Hides every actor (another view of the model, the scales, is shown instead).
     void setHidden(bool hidden);
 
