@@ -121,6 +121,7 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["chunk_blocks"] = mDisplay.chunkBlocks();
     r["actors"] = mDisplay.actorCount();
     r["triangles_drawn"] = mDisplay.trianglesDrawn();
+    r["triangles_drawn_per_frame"] = mMeasures.trianglesDrawn;
     r["peak_rss"] = peakResidentBytes();
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);

@@ -191,12 +191,6 @@ DetailView SculptApp::detailView(double now)
     return view;
 }
 
-const IncrementalMesher& SculptApp::shownMesher() const
-{
-    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
-    return modeMesh ? *modeMesh : *mDocument->session().mesher();
-}
-
 void SculptApp::frame()
 {
     const double now = mWindow.time();
@@ -208,7 +202,8 @@ void SculptApp::frame()
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
-    const IncrementalMesher& shown = shownMesher();
+    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
+    const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
     mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
@@ -241,6 +236,7 @@ void SculptApp::frame()
     const double end = mWindow.time();
     mStatus.frameMs = 1000.0 * (end - now);
     mMeasures.frameMs.push_back(mStatus.frameMs);
+    mMeasures.trianglesDrawn.push_back(double(mDisplay.trianglesDrawn()));
     if (mPreviewPendingSince >= 0.0) {
         mMeasures.previewLatencyMs.push_back(1000.0 * (end - mPreviewPendingSince));
         mPreviewPendingSince = -1.0;
@@ -360,12 +356,8 @@ void SculptApp::loopOnce(bool& replayDone)
             finishReplay();
             if (mQuit) return;
         }
-        // Idle (no input for a while): build the coarse twins the next camera move draws, a slice
-        // at a time, then sleep until an event, waking to autosave.
-        constexpr double kIdleSliceSeconds = 0.02;
-        const bool building = idle() && mDisplay.buildCoarseTwins(
-                                            shownMesher(), mDocument->session().field().voxelSize(), kIdleSliceSeconds);
-        mWindow.pollEvents(idle() && !building ? 0.25 : 0.0);
+        // Idle (no input for a while): sleep until an event, waking to autosave.
+        mWindow.pollEvents(idle() ? 0.25 : 0.0);
     }
     autosave();
     if (replaying || !idle()) frame();

@@ -163,8 +163,6 @@ private:
     void frame();
     /// What the display's level of detail needs of this frame (camera motion noticed here).
     DetailView detailView(double now);
-    /// The surface on show: a mode's preview, or the document's.
-    const IncrementalMesher& shownMesher() const;
     /// One pass of the loop: input (live or replayed), autosave, a frame.
     void loopOnce(bool& replayDone);
     /// An exception no handler expected (out of memory, a bug, an OpenVDB error) reached the
@@ -312,9 +310,10 @@ private:
     double mLastFrame = 0.0, mPlayStart = -1.0, mLastInput = 0.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
     std::uint64_t mReportVersion = 0;
-    /// Figures for reports, since the previous one: frame times, event-to-screen latencies, stamps.
+    /// Figures for reports, since the previous one: frame times, event-to-screen latencies,
+    /// triangles drawn per frame, stamps.
     struct Measures {
-        std::vector<double> frameMs, latencyMs, previewLatencyMs;
+        std::vector<double> frameMs, latencyMs, previewLatencyMs, trianglesDrawn;
         std::size_t stamps = 0;
         double pendingSince = -1.0;  // a stamp not yet on screen: when its event arrived
     };

@@ -22,6 +22,16 @@ vtkSmartPointer<vtkFloatArray> floatTriples(const std::vector<std::array<float, 
     return array;
 }
 
+/// The values of a VTK array of triples, copied out as triples.
+template <typename Triple, typename Array>
+std::vector<Triple> triplesOf(Array* array)
+{
+    static_assert(sizeof(Triple) == 3 * sizeof(*array->GetPointer(0)));
+    std::vector<Triple> values(std::size_t(array->GetNumberOfValues() / 3));
+    if (!values.empty()) std::memcpy(values.data(), array->GetPointer(0), values.size() * sizeof(Triple));
+    return values;
+}
+
 }  // namespace
 
 void append(BlockMesh& whole, const BlockMesh& part)
@@ -53,6 +63,17 @@ vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh)
     poly->GetPointData()->SetNormals(normals);
     poly->SetPolys(cells);
     return poly;
+}
+
+BlockMesh blockMeshOf(const vtkPolyData* poly)
+{
+    auto* data = const_cast<vtkPolyData*>(poly);  // VTK's getters are not const; nothing is changed
+    BlockMesh mesh;
+    mesh.positions = triplesOf<std::array<float, 3>>(vtkFloatArray::SafeDownCast(data->GetPoints()->GetData()));
+    mesh.normals = triplesOf<std::array<float, 3>>(vtkFloatArray::SafeDownCast(data->GetPointData()->GetNormals()));
+    mesh.triangles = triplesOf<std::array<std::uint32_t, 3>>(
+        vtkTypeInt32Array::SafeDownCast(data->GetPolys()->GetConnectivityArray()));
+    return mesh;
 }
 
 }  // namespace sculpt::ui

@@ -15,5 +15,8 @@ void append(BlockMesh& whole, const BlockMesh& part);
 
 /// The mesh's points, normals and triangles, copied into VTK arrays.
 vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh);
+/// The points, normals and triangles of a polydata polyDataOf made, copied back (only reads it:
+/// safe on another thread while the UI thread draws it).
+BlockMesh blockMeshOf(const vtkPolyData* poly);
 
 }  // namespace sculpt::ui

@@ -3,6 +3,7 @@
 #include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
 #include "ui/view/surface_look.h"
+#include "ui/view/twin_builder.h"
 
 #include <vtkActor.h>
 #include <vtkPolyData.h>
@@ -10,7 +11,6 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
-#include <chrono>
 #include <set>
 
 namespace sculpt::ui {
@@ -18,17 +18,6 @@ namespace sculpt::ui {
 namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
-/// Of a still frame, spent building coarse twins ahead of the next camera move; as much again
-/// at most on a moving frame for a twin it needs (the others draw full detail meanwhile).
-constexpr double kTwinSecondsPerFrame = 0.010;
-
-using Clock = std::chrono::steady_clock;
-
-Clock::time_point after(double seconds)
-{
-    return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
-}
-
 vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
@@ -40,9 +29,9 @@ vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
 }
 
 /// Hands `mesh` to the actor's mapper: its buffers are re-uploaded at the next render.
-void setMesh(vtkActor* actor, const BlockMesh& mesh)
+void setMesh(vtkActor* actor, vtkPolyData* mesh)
 {
-    vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->SetInputData(polyDataOf(mesh));
+    vtkPolyDataMapper::SafeDownCast(actor->GetMapper())->SetInputData(mesh);
 }
 
 std::size_t bytesOf(const BlockMesh& mesh)
@@ -53,15 +42,17 @@ std::size_t bytesOf(const BlockMesh& mesh)
 }  // namespace
 
 struct ModelDisplay::Chunk {
-    vtkSmartPointer<vtkActor> full, coarse;  // coarse: made when first drawn
+    vtkSmartPointer<vtkActor> full, coarse;  // coarse: made when its first twin comes back
+    vtkSmartPointer<vtkPolyData> mesh;       // what `full` draws, never changed once made
     std::size_t fullTriangles = 0, coarseTriangles = 0, bytes = 0;
-    glm::dvec3 lo{0.0}, hi{0.0};  // world bounds of its vertices
-    bool fullStale = true, coarseStale = true, drawsCoarse = false;
-    bool fresh = false;  // uploaded by this sync: drawn in full, its twin not yet built
+    glm::dvec3 lo{0.0}, hi{0.0};   // world bounds of its vertices
+    std::uint64_t generation = 0;  // of `mesh`: a twin of an older one is dropped
+    bool fullStale = true, coarseStale = true, twinAsked = false, drawsCoarse = false;
+    bool fresh = false;  // uploaded by this sync: drawn full, its twin asked for at a later one
 };
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
-    : mRenderer(renderer), mLook(look), mFixedChunkBlocks(chunkBlocks)
+    : mRenderer(renderer), mLook(look), mFixedChunkBlocks(chunkBlocks), mTwins(std::make_unique<TwinBuilder>())
 {}
 
 ModelDisplay::~ModelDisplay() { clear(); }
@@ -129,7 +120,8 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
         chunk.full->SetVisibility(!mHidden);
         mRenderer->AddActor(chunk.full);
     }
-    setMesh(chunk.full, mesh);
+    chunk.mesh = polyDataOf(mesh);
+    setMesh(chunk.full, chunk.mesh);
     mMeshBytes += bytesOf(mesh) - chunk.bytes;
     chunk.bytes = bytesOf(mesh);
     mLastBytes += chunk.bytes;
@@ -140,25 +132,47 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
         chunk.lo = glm::min(chunk.lo, glm::dvec3(p[0], p[1], p[2]));
         chunk.hi = glm::max(chunk.hi, glm::dvec3(p[0], p[1], p[2]));
     }
+    chunk.generation = ++mGenerations;
     chunk.fullStale = false;
     chunk.coarseStale = true;
+    chunk.twinAsked = false;
     chunk.fresh = true;
     ++mLastChunkUploads;
 }
 
-void ModelDisplay::uploadCoarse(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk,
-                                double voxelSize)
+void ModelDisplay::collectTwins()
 {
-    const BlockMesh mesh = clusterBlockMesh(joined(mesher, origin), kCoarseCellVoxels * voxelSize);
-    if (!chunk.coarse) {
-        chunk.coarse = newActor(mLook);
-        chunk.coarse->SetVisibility(false);
-        mRenderer->AddActor(chunk.coarse);
+    for (TwinBuilder::Twin& twin : mTwins->collect()) {
+        const auto it = mChunks.find(twin.origin);
+        if (it == mChunks.end() || it->second.generation != twin.generation) continue;  // changed since
+        Chunk& chunk = it->second;
+        if (!chunk.coarse) {
+            chunk.coarse = newActor(mLook);
+            chunk.coarse->SetVisibility(false);
+            mRenderer->AddActor(chunk.coarse);
+        }
+        setMesh(chunk.coarse, polyDataOf(twin.mesh));
+        mLastBytes += bytesOf(twin.mesh);
+        chunk.coarseTriangles = twin.mesh.triangles.size();
+        chunk.coarseStale = false;
     }
-    setMesh(chunk.coarse, mesh);
-    mLastBytes += bytesOf(mesh);
-    chunk.coarseTriangles = mesh.triangles.size();
-    chunk.coarseStale = false;
+}
+
+void ModelDisplay::askTwins(double voxelSize)
+{
+    for (auto& [origin, chunk] : mChunks) {
+        if (std::exchange(chunk.fresh, false) || !chunk.coarseStale || chunk.twinAsked) continue;
+        mTwins->request(origin, chunk.generation, chunk.mesh, kCoarseCellVoxels * voxelSize);
+        chunk.twinAsked = true;
+    }
+}
+
+void ModelDisplay::finishTwins(double voxelSize)
+{
+    for (auto& [origin, chunk] : mChunks) chunk.fresh = false;
+    askTwins(voxelSize);
+    mTwins->wait();
+    collectTwins();
 }
 
 void ModelDisplay::show(Chunk& chunk, bool coarse)
@@ -168,9 +182,9 @@ void ModelDisplay::show(Chunk& chunk, bool coarse)
     if (chunk.coarse) chunk.coarse->SetVisibility(!mHidden && coarse);
 }
 
-void ModelDisplay::chooseDetail(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
+void ModelDisplay::chooseDetail(double voxelSize, const DetailView& view)
 {
-    const double twinShrink = kCoarseCellVoxels * kCoarseCellVoxels;  // a twin not yet built, estimated
+    const double twinShrink = kCoarseCellVoxels * kCoarseCellVoxels;  // a twin not yet back, estimated
     std::vector<ChunkDetail> details;
     details.reserve(mChunks.size());
     for (const auto& [origin, chunk] : mChunks) {
@@ -179,32 +193,14 @@ void ModelDisplay::chooseDetail(const IncrementalMesher& mesher, double voxelSiz
         details.push_back({chunk.lo, chunk.hi, chunk.fullTriangles, twin, chunk.fresh});
     }
     const std::vector<bool> wanted = chooseCoarse(details, voxelSize, view);
-    const Clock::time_point deadline = after(kTwinSecondsPerFrame);
     mTrianglesDrawn = mCoarseChunks = 0;
     std::size_t i = 0;
     for (auto& [origin, chunk] : mChunks) {
-        bool coarse = wanted[i++];
-        if (coarse && chunk.coarseStale) {
-            if (Clock::now() < deadline) uploadCoarse(mesher, origin, chunk, voxelSize);
-            else coarse = false;  // full detail this frame; the twin is built on a later one
-        }
+        const bool coarse = wanted[i++] && !chunk.coarseStale;  // full detail until its twin is back
         if (coarse != chunk.drawsCoarse) show(chunk, coarse);
-        chunk.fresh = false;
         mTrianglesDrawn += coarse ? chunk.coarseTriangles : chunk.fullTriangles;
         mCoarseChunks += coarse ? 1 : 0;
     }
-}
-
-bool ModelDisplay::buildCoarseTwins(const IncrementalMesher& mesher, double voxelSize, double seconds)
-{
-    if (mesher.id() != mSourceId || mesher.version() != mVersion) return false;  // the next sync lays out anew
-    const Clock::time_point deadline = after(seconds);
-    for (auto& [origin, chunk] : mChunks) {
-        if (!chunk.coarseStale) continue;
-        if (Clock::now() >= deadline) return true;
-        uploadCoarse(mesher, origin, chunk, voxelSize);
-    }
-    return false;
 }
 
 void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
@@ -241,8 +237,9 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const
         mMeshBytes -= chunk.bytes;
         it = mChunks.erase(it);
     }
-    chooseDetail(mesher, voxelSize, view);
-    if (view.still) buildCoarseTwins(mesher, voxelSize, kTwinSecondsPerFrame);
+    collectTwins();
+    chooseDetail(voxelSize, view);
+    askTwins(voxelSize);
 }
 
 void ModelDisplay::setHidden(bool hidden)

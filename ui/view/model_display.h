@@ -10,10 +10,9 @@
 /// surface, as Blender's PBVH leaves) and doubles until there are at most kMaxChunks. A chunk is
 /// re-joined and re-uploaded, into the actor it already has, once per sync when one of its
 /// blocks changed; its coarse twin (the chunk's mesh clustered, about 9x fewer triangles) is
-/// rebuilt after a change in a slice of still frames and of idle time, so that a camera move
-/// finds it ready (one a moving frame needs and lacks is built within a time slice, the chunk
-/// drawn in full until then). Which of the two a chunk draws is the DetailView's rule. Every
-/// actor shares the SurfaceLook's property and shader.
+/// clustered on a worker thread (TwinBuilder) once the chunk has rested a frame, so that a
+/// camera move finds it ready; until it is back the chunk draws full detail. Which of the two a
+/// chunk draws is the DetailView's rule. Every actor shares the SurfaceLook's property and shader.
 
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/detail_view.h"
@@ -21,6 +20,7 @@
 #include <vtkSmartPointer.h>
 
 #include <map>
+#include <memory>
 
 class vtkActor;
 class vtkRenderer;
@@ -28,6 +28,7 @@ class vtkRenderer;
 namespace sculpt::ui {
 
 class SurfaceLook;
+class TwinBuilder;
 
 class ModelDisplay {
 public:
@@ -43,9 +44,8 @@ public:
     /// new mesher), then gives each chunk the detail `view` asks. `voxelSize` sizes the coarse
     /// twins' clusters. Once per frame.
     void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {});
-    /// Builds the coarse twins a change left stale, for about `seconds` (at least one twin), with
-    /// the mesher last synced. For idle time. Returns whether some are left.
-    bool buildCoarseTwins(const IncrementalMesher& mesher, double voxelSize, double seconds);
+    /// Waits for the coarse twin of every chunk and takes them (for tests: a frame never waits).
+    void finishTwins(double voxelSize);
     /// Hides every actor (another view of the model, the scales, is shown instead).
     void setHidden(bool hidden);
 
@@ -73,8 +73,11 @@ private:
     void layOut(const IncrementalMesher& mesher);
     BlockMesh joined(const IncrementalMesher& mesher, const openvdb::Coord& origin) const;
     void uploadFull(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk);
-    void uploadCoarse(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk, double voxelSize);
-    void chooseDetail(const IncrementalMesher& mesher, double voxelSize, const DetailView& view);
+    /// Takes the twins the worker finished, for the chunks that have not changed since.
+    void collectTwins();
+    void chooseDetail(double voxelSize, const DetailView& view);
+    /// Asks the worker for the twins left stale, of chunks that did not change this sync.
+    void askTwins(double voxelSize);
     void show(Chunk& chunk, bool coarse);
 
     vtkRenderer* mRenderer;
@@ -85,6 +88,8 @@ private:
     int mChunkBlocks = kMinChunkBlocks;
     std::uint64_t mSourceId = 0;  // IncrementalMesher::id of the mesher shown
     std::uint64_t mVersion = 0;
+    std::uint64_t mGenerations = 0;  // chunk meshes made
+    std::unique_ptr<TwinBuilder> mTwins;
     bool mHidden = false;
     std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0;
     std::size_t mLastUploads = 0, mLastRemovals = 0, mLastChunkUploads = 0, mLastBytes = 0;
