@@ -5,12 +5,15 @@
 #include "core/io/vdb_tree_check.h"
 
 #include <openvdb/Grid.h>
+#include <openvdb/io/DelayedLoadMetadata.h>
 #include <openvdb/io/GridDescriptor.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/version.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
+#include <limits>
 
 namespace sculpt {
 
@@ -39,6 +42,42 @@ bool readHeader(BoundedReader& in)
     return hasOffsets;
 }
 
+/// OpenVDB's delayed-load table ("__delayedload": a leaf count, then a mask byte and a
+/// compressed size per leaf, each part raw or Blosc-compressed, the sizes optional). Its reader
+/// allocates for the count, and for the size a Blosc header claims, before reading, so both are
+/// held to the leaves the rest of the file could hold (each stores at least its 64-byte value
+/// mask; OpenVDB's own sizes part may hold more entries than leaves), and each part to the
+/// value's bytes.
+void checkDelayedLoad(BoundedReader& in, std::uint32_t bytes)
+{
+    if (bytes == 0) return;
+    const std::int64_t end = in.position() + bytes;
+    const auto count = in.read<std::uint32_t>("a delayed-load table");
+    if (std::int64_t(count) * 64 > in.size() - end)
+        throw InputError("corrupt (a delayed-load table for more leaves than the file holds)");
+    const auto part = [&](std::uint32_t stored, std::int64_t itemBytes) {
+        if (stored == 0) {  // raw
+            in.skip(std::int64_t(count) * itemBytes, "a delayed-load table");
+            return;
+        }
+        constexpr std::int64_t kBloscHeader = 16;  // version, flags, type size, then 4 bytes of size
+        std::uint32_t unpacked = 0;
+        if (stored >= kBloscHeader) {
+            const std::string header = in.readBytes(kBloscHeader, "a delayed-load table");
+            std::memcpy(&unpacked, header.data() + 4, sizeof unpacked);
+        }
+        if (stored < kBloscHeader || std::int64_t(unpacked) / itemBytes * 64 > in.size() - end)
+            throw InputError("corrupt (a delayed-load table's compressed part unpacks to more than the file holds)");
+        in.skip(std::int64_t(stored) - kBloscHeader, "a delayed-load table");
+    };
+    part(in.read<std::uint32_t>("a delayed-load table"), sizeof(openvdb::io::DelayedLoadMetadata::MaskType));
+    const auto sizes = in.read<std::uint32_t>("a delayed-load table");  // all ones: no sizes stored
+    if (sizes != std::numeric_limits<std::uint32_t>::max())
+        part(sizes, sizeof(openvdb::io::DelayedLoadMetadata::CompressedSizeType));
+    if (in.position() > end) throw InputError("corrupt (a delayed-load table overruns its metadata)");
+    in.seek(end, "a delayed-load table");
+}
+
 /// The entries of a metadata map we use; the others are skipped.
 struct MetadataSeen {
     std::string gridClass;         // a grid's "class"
@@ -63,6 +102,8 @@ MetadataSeen readMetadata(BoundedReader& in)
         } else if (name == openvdb::GridBase::META_FILE_MEM_BYTES && type == "int64" && bytes == 8) {
             seen.memoryBytes = in.read<std::int64_t>("a metadata value");
             if (seen.memoryBytes < 0) throw InputError("corrupt (negative grid size)");
+        } else if (type == openvdb::io::DelayedLoadMetadata::staticTypeName()) {
+            checkDelayedLoad(in, bytes);
         } else {
             in.skip(bytes, "a metadata value");
         }

@@ -77,7 +77,10 @@ void summarise(const std::string& model, const Reports& r, double firstFrame)
     std::printf("  %-28s still %.0f, sculpting %.0f, orbiting %.0f, keys %.0f (medians of their frames)\n",
                 "triangles drawn", drawn("still"), drawn("stroked"), drawn("orbiting"), drawn("keyed"));
     const double peak = std::max(r["stroked"]["peak_rss"].get<double>(), r["keyed"]["peak_rss"].get<double>());
-    std::printf("  %-28s %.2f GB\n", "peak RSS", peak / 1e9);
+    const json& memory = still["memory"];
+    const auto gb = [&](const char* part) { return memory[part].get<double>() / 1e9; };
+    std::printf("  %-28s %.2f GB; resident when still %.2f GB: grid %.2f, mesher %.2f, display %.2f, undo %.2f\n",
+                "peak RSS", peak / 1e9, gb("resident"), gb("grid"), gb("mesher"), gb("display"), gb("undo"));
 }
 
 /// The replay's stdout, or nothing if sculpt-ui failed.

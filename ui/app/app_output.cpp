@@ -123,6 +123,11 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["triangles_drawn"] = mDisplay.trianglesDrawn();
     r["triangles_drawn_per_frame"] = mMeasures.trianglesDrawn;
     r["peak_rss"] = peakResidentBytes();
+    r["memory"] = {{"resident", residentBytes()},
+                   {"grid", mStatus.gridBytes},
+                   {"mesher", mStatus.mesherBytes},
+                   {"display", mStatus.displayBytes},
+                   {"undo", mStatus.undoBytes}};
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";

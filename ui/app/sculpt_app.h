@@ -57,6 +57,9 @@ struct AppOptions {
 struct StatusFigures {
     double frameMs = 0.0;
     std::size_t triangles = 0, activeVoxels = 0, blocks = 0, memoryBytes = 0, undoBytes = 0;
+    /// Where the memory goes: the field's tree, the mesher's block meshes, the display's VTK
+    /// geometry (the rest of memoryBytes: the GL driver's copy of it, libraries, the window).
+    std::size_t gridBytes = 0, mesherBytes = 0, displayBytes = 0;
     double volume = 0.0, area = 0.0;
     long long euler = 0;
     std::size_t shells = 0;

@@ -22,6 +22,13 @@ void drawStatusBar(SculptApp& app)
         s.frameMs, formatNumber(double(s.triangles)).c_str(), formatNumber(double(s.activeVoxels)).c_str(),
         formatBytes(double(s.memoryBytes)).c_str(), formatBytes(double(s.undoBytes)).c_str(),
         formatNumber(s.volume).c_str(), units.c_str(), formatNumber(s.area).c_str(), units.c_str(), s.euler, s.shells);
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("memory %s: grid %s, surface mesh %s, display %s (the GL driver holds as much again), "
+                          "undo %s, the rest libraries and the window",
+                          formatBytes(double(s.memoryBytes)).c_str(), formatBytes(double(s.gridBytes)).c_str(),
+                          formatBytes(double(s.mesherBytes)).c_str(), formatBytes(double(s.displayBytes)).c_str(),
+                          formatBytes(double(s.undoBytes)).c_str());
+    }
     if (!app.dialogs().notice.empty()) {
         ImGui::SameLine();
         ImGui::TextDisabled("| %s", app.dialogs().notice.c_str());

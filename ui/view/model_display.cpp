@@ -44,7 +44,7 @@ std::size_t bytesOf(const BlockMesh& mesh)
 struct ModelDisplay::Chunk {
     vtkSmartPointer<vtkActor> full, coarse;  // coarse: made when its first twin comes back
     vtkSmartPointer<vtkPolyData> mesh;       // what `full` draws, never changed once made
-    std::size_t fullTriangles = 0, coarseTriangles = 0, bytes = 0;
+    std::size_t fullTriangles = 0, coarseTriangles = 0, bytes = 0, twinBytes = 0;
     glm::dvec3 lo{0.0}, hi{0.0};   // world bounds of its vertices
     std::uint64_t generation = 0;  // of `mesh`: a twin of an older one is dropped
     bool fullStale = true, coarseStale = true, twinAsked = false, drawsCoarse = false;
@@ -77,7 +77,7 @@ void ModelDisplay::clear()
         if (chunk.coarse) mRenderer->RemoveActor(chunk.coarse);
     }
     mChunks.clear();
-    mMeshBytes = 0;
+    mMeshBytes = mTwinBytes = 0;
 }
 
 void ModelDisplay::layOut(const IncrementalMesher& mesher)
@@ -154,6 +154,8 @@ void ModelDisplay::collectTwins()
         setMesh(chunk.coarse, polyDataOf(twin.mesh));
         mLastBytes += bytesOf(twin.mesh);
         chunk.coarseTriangles = twin.mesh.triangles.size();
+        mTwinBytes += bytesOf(twin.mesh) - chunk.twinBytes;
+        chunk.twinBytes = bytesOf(twin.mesh);
         chunk.coarseStale = false;
     }
 }
@@ -235,6 +237,7 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const
         mRenderer->RemoveActor(chunk.full);  // every block of it is gone
         if (chunk.coarse) mRenderer->RemoveActor(chunk.coarse);
         mMeshBytes -= chunk.bytes;
+        mTwinBytes -= chunk.twinBytes;
         it = mChunks.erase(it);
     }
     collectTwins();

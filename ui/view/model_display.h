@@ -65,6 +65,8 @@ public:
     std::size_t coarseChunks() const { return mCoarseChunks; }
     /// Bytes of every full-detail chunk as handed to VTK: what one upload of the whole mesh costs.
     std::size_t meshBytes() const { return mMeshBytes; }
+    /// Bytes of VTK geometry held, full chunks and twins (the GL driver keeps a copy as large).
+    std::size_t heldBytes() const { return mMeshBytes + mTwinBytes; }
 
 private:
     struct Chunk;
@@ -91,7 +93,7 @@ private:
     std::uint64_t mGenerations = 0;  // chunk meshes made
     std::unique_ptr<TwinBuilder> mTwins;
     bool mHidden = false;
-    std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0;
+    std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0, mTwinBytes = 0;
     std::size_t mLastUploads = 0, mLastRemovals = 0, mLastChunkUploads = 0, mLastBytes = 0;
 };
 

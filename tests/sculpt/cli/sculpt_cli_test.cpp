@@ -303,6 +303,7 @@ INSTANTIATE_TEST_SUITE_P(Corpus, SculptCliRegression,
                                            Regression{"vdb_topology_leak.vdb", "offset FILE --distance 1"},
                                            Regression{"vdb_blosc_huge_chunk.vdb", "offset FILE --distance 1"},
                                            Regression{"vdb_raw_chunk_int64_min.vdb", "offset FILE --distance 1"},
+                                           Regression{"vdb_delayed_load_4G_leaves.vdb", "offset FILE --distance 1"},
                                            Regression{"dicom_element_length_3_7GB/slice.dcm", "import FILE --iso 100"},
                                            Regression{"dicom_gdcm_abort", "import FILE --iso 100"}),
                          [](const auto& test) { return "case" + std::to_string(test.index); });
