@@ -48,7 +48,7 @@ struct ModelDisplay::Chunk {
     glm::dvec3 lo{0.0}, hi{0.0};   // world bounds of its vertices
     std::uint64_t generation = 0;  // of `mesh`: a twin of an older one is dropped
     bool fullStale = true, coarseStale = true, twinAsked = false, drawsCoarse = false;
-    bool fresh = false;  // uploaded by this sync: drawn full, its twin asked for at a later one
+    bool fresh = false;  // changed by this sync: drawn full, its twin asked for at a later one
 };
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
@@ -132,11 +132,11 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
         chunk.lo = glm::min(chunk.lo, glm::dvec3(p[0], p[1], p[2]));
         chunk.hi = glm::max(chunk.hi, glm::dvec3(p[0], p[1], p[2]));
     }
+    chunk.fresh = chunk.generation != 0;  // changed, not new: a new one's twin is asked at once
     chunk.generation = ++mGenerations;
     chunk.fullStale = false;
     chunk.coarseStale = true;
     chunk.twinAsked = false;
-    chunk.fresh = true;
     ++mLastChunkUploads;
 }
 
