@@ -5,8 +5,9 @@
 // second, first-frame time and peak memory. The models are issue 31's: the clay ball, and
 // ch2better (mricron-data) imported at 0.5 mm and at 0.25 mm (8 M triangles), made at run time.
 // Run by hand (about 12 minutes; the 0.25 mm model alone about 6):
-//   build/tests/bench/ui_frame_measure [--reference] [--document DOC.vdb]
-// --reference adds, for each model, the display of one actor per block it had before chunks.
+//   build/tests/bench/ui_frame_measure [--reference] [--chunk C]... [--document DOC.vdb]
+// --reference adds, for each model, the display of one actor per block it had before chunks;
+// --chunk C adds the display with chunks of C^3 blocks (the default chooses C from the model).
 // Figures go in the issue notes.
 
 #include "tests/support/run_sculpt.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -121,10 +123,15 @@ void measure(const std::string& model, const std::string& document, const std::s
     summarise(model, Reports(r), firstFrameSeconds(*first));
 }
 
-void measureWithReference(const std::string& model, const std::string& document, bool reference, const TempDir& dir)
+/// The display as it chooses its chunks, then with each chunk size of `chunkSizes` (1: a chunk per block).
+void measureChunkSizes(const std::string& model, const std::string& document, const std::vector<int>& chunkSizes,
+                       const TempDir& dir)
 {
     measure(model, document, "", dir);
-    if (reference) measure(model + " (a chunk per block)", document, "--display-chunk 1", dir);
+    for (int c : chunkSizes) {
+        const std::string label = c == 1 ? " (a chunk per block)" : " (C = " + std::to_string(c) + ")";
+        measure(model + label, document, "--display-chunk " + std::to_string(c), dir);
+    }
 }
 
 }  // namespace
@@ -132,22 +139,24 @@ void measureWithReference(const std::string& model, const std::string& document,
 int main(int argc, char** argv)
 {
     TempDir dir;
-    bool reference = false;
+    std::vector<int> chunkSizes;
     std::string document;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--reference") reference = true;
+        if (arg == "--reference") chunkSizes.push_back(1);
+        else if (arg == "--chunk" && i + 1 < argc && std::atoi(argv[i + 1]) > 0)
+            chunkSizes.push_back(std::atoi(argv[++i]));
         else if (arg == "--document" && i + 1 < argc) document = std::filesystem::absolute(argv[++i]).string();
         else {
-            std::cerr << "usage: ui_frame_measure [--reference] [--document DOC.vdb]\n";
+            std::cerr << "usage: ui_frame_measure [--reference] [--chunk C]... [--document DOC.vdb]\n";
             return 2;
         }
     }
     if (!document.empty()) {  // a model of your own, e.g. an imported scan
-        measureWithReference(std::filesystem::path(document).filename().string(), "'" + document + "'", reference, dir);
+        measureChunkSizes(std::filesystem::path(document).filename().string(), "'" + document + "'", chunkSizes, dir);
         return 0;
     }
-    measureWithReference("clay ball", "", reference, dir);
+    measureChunkSizes("clay ball", "", chunkSizes, dir);
     for (const char* voxel : {"0.5", "0.25"}) {
         const std::string name = std::string("ch2better-") + voxel + ".vdb";
         const CommandResult made =
@@ -157,8 +166,8 @@ int main(int argc, char** argv)
             std::cerr << "could not import " << kScan << ": " << made.err << "\n";
             return 1;
         }
-        measureWithReference("ch2better at " + std::string(voxel) + " mm", "'" + (dir / name).string() + "'", reference,
-                             dir);
+        measureChunkSizes("ch2better at " + std::string(voxel) + " mm", "'" + (dir / name).string() + "'", chunkSizes,
+                          dir);
     }
     return 0;
 }

@@ -1,6 +1,7 @@
-// The model display on a renderer that never draws: what it uploads when the mesher it shows
-// is replaced.
+// The model display on a renderer that never draws: what it uploads when the mesher it shows is
+// replaced or a stamp changes it, and what its level of detail draws.
 
+#include "core/brushes/brush.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
 #include "ui/view/block_cluster.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <new>
+#include <set>
 
 using namespace sculpt;
 using namespace sculpt::ui;
@@ -110,4 +112,45 @@ TEST(ModelDisplay, ActorsStayBoundedAndAMovingViewDrawsWithinItsBudgetWhileAStil
     display.sync(mesher, 1.0, DetailView{});  // the camera rests: full detail everywhere
     EXPECT_EQ(display.coarseChunks(), 0u);
     EXPECT_EQ(display.trianglesDrawn(), mesher.triangleCount());
+}
+
+// Issue 31: a stamp on a model of over 10,000 blocks re-uploads the chunks holding the blocks the
+// mesher changed, and those lie within the brush's reach: nothing else of the model is touched.
+TEST(ModelDisplay, AStampOnAModelOfOver10000BlocksReuploadsOnlyTheChunksWithinItsReach)
+{
+    vtkNew<vtkRenderer> renderer;
+    SurfaceLook look;
+    ModelDisplay display(renderer, look);
+    FieldImage ball = makeSphere(200.0, 1.0);
+    IncrementalMesher mesher(8);
+    mesher.rebuild(ball);
+    ASSERT_GT(mesher.blocks().size(), 10000u);
+    display.sync(mesher, 1.0);
+
+    BrushSettings brush;
+    brush.radiusWorld = 6.0;
+    BrushStamp stamp;
+    stamp.centreWorld = stamp.previousWorld = openvdb::Vec3d(200.0, 0.0, 0.0);
+    const std::uint64_t before = mesher.version();
+    ASSERT_GT(mesher.update(ball, applyStamp(ball, brush, stamp, nullptr)), 0u);
+    const IncrementalMesher::Changes changes = mesher.changesSince(before);
+    display.sync(mesher, 1.0);
+
+    const int size = display.chunkBlocks() * mesher.blockVoxels();
+    std::set<openvdb::Coord> reached;
+    for (const auto* list : {&changes.updated, &changes.removed}) {
+        for (const openvdb::Coord& b : *list)
+            reached.insert({floorToMultiple(b.x(), size), floorToMultiple(b.y(), size), floorToMultiple(b.z(), size)});
+    }
+    EXPECT_EQ(display.lastUploads(), changes.updated.size());
+    EXPECT_EQ(display.lastChunkUploads(), reached.size());
+    EXPECT_LT(reached.size(), display.chunkCount()) << "the whole model was re-uploaded";
+    // A block is re-meshed when its cells or normals read a dirty leaf, and a leaf is dirty when
+    // the stamp's radius plus the band reaches it: a leaf and a block beyond radius + band.
+    const double reach = brush.radiusWorld + 3.0 + 8.0 + 8.0 + 1.0;
+    for (const openvdb::Coord& origin : reached) {
+        const glm::dvec3 lo(origin.x(), origin.y(), origin.z()), centre(200.0, 0.0, 0.0);
+        const glm::dvec3 nearest = glm::clamp(centre, lo, lo + glm::dvec3(size));
+        EXPECT_LE(glm::length(nearest - centre), reach) << "a chunk at " << origin << " is out of the brush's reach";
+    }
 }
