@@ -12,12 +12,14 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
 namespace sculpt::ui {
 
 namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
+
 vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();

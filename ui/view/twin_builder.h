@@ -10,7 +10,7 @@
 
 #include "core/mesh/block_mesh.h"
 
-#include <openvdb/math/Coord.h>
+#include <openvdb/Types.h>
 #include <tbb/task_group.h>
 #include <vtkSmartPointer.h>
 
