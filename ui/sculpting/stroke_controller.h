@@ -2,7 +2,8 @@
 /// @file stroke_controller.h
 /// @brief Turns a mouse drag into a live stroke: each mouse event becomes a sample and its
 ///        stamps are applied at once (never waiting for a frame: the mesh follows once a frame);
-///        the release ends the stroke, one undo step. Pressure comes from the pointer's speed (GLFW has no tablet pressure).
+///        the release ends the stroke, one undo step. Pressure comes from the pointer's speed
+///        (GLFW has no tablet pressure).
 
 #include "ui/sculpting/brush_options.h"
 #include "ui/sculpting/surface_picker.h"

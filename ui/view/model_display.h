@@ -78,7 +78,8 @@ private:
     /// Takes the twins the worker finished, for the chunks that have not changed since.
     void collectTwins();
     void chooseDetail(double voxelSize, const DetailView& view);
-    /// Asks the worker for the twins left stale, of chunks that did not change this sync.
+    /// Asks the worker for the twins left stale, of chunks that did not change this sync; ends
+    /// every chunk's fresh mark.
     void askTwins(double voxelSize);
     void show(Chunk& chunk, bool coarse);
 

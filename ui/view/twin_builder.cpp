@@ -15,7 +15,6 @@ TwinBuilder::~TwinBuilder() { mTasks.wait(); }
 void TwinBuilder::request(const openvdb::Coord& origin, std::uint64_t generation, vtkSmartPointer<vtkPolyData> full,
                           double cellWorld)
 {
-    ++mPending;
     // Shared, not captured by value: TBB calls its tasks as const, and the source must move on.
     auto twin = std::make_shared<Twin>(Twin{origin, generation, {}, std::move(full)});
     mTasks.run([this, twin, cellWorld] {
@@ -28,11 +27,8 @@ void TwinBuilder::request(const openvdb::Coord& origin, std::uint64_t generation
 std::vector<TwinBuilder::Twin> TwinBuilder::collect()
 {
     std::vector<Twin> done;
-    {
-        const std::lock_guard<std::mutex> lock(mMutex);
-        done.swap(mDone);
-    }
-    mPending -= done.size();
+    const std::lock_guard<std::mutex> lock(mMutex);
+    done.swap(mDone);
     return done;
 }
 

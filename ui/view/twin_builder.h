@@ -14,7 +14,6 @@
 #include <tbb/task_group.h>
 #include <vtkSmartPointer.h>
 
-#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -38,8 +37,6 @@ public:
                  double cellWorld);
     /// The twins finished since the last call.
     std::vector<Twin> collect();
-    /// Twins requested and not yet collected.
-    std::size_t pending() const { return mPending; }
     /// Waits until every request has finished (then collect() has them all).
     void wait();
 
@@ -47,7 +44,6 @@ private:
     tbb::task_group mTasks;
     std::mutex mMutex;
     std::vector<Twin> mDone;  // guarded by mMutex
-    std::atomic<std::size_t> mPending{0};
 };
 
 }  // namespace sculpt::ui
