@@ -1,5 +1,6 @@
 #include "core/base/text_format.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace sculpt {
@@ -10,6 +11,15 @@ std::string formatNumber(double value)
     std::snprintf(text, sizeof text, "%g", value);
     return text;
 }
+
+std::string formatCount(std::uint64_t count)
+{
+    std::string digits = std::to_string(count);
+    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), ",");
+    return digits;
+}
+
+std::string formatSeconds(double seconds) { return formatNumber(std::round(seconds * 1000.0) / 1000.0); }
 
 std::string formatBytes(double bytes)
 {

@@ -7,6 +7,7 @@
 #include "core/field/band_repair.h"
 #include "core/field/grid_checksum.h"
 #include "core/io/bounded_reader.h"
+#include "core/io/memory_stream.h"
 #include "core/io/vdb_layout.h"
 #include "core/io/vdb_tree_check.h"
 
@@ -16,7 +17,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <memory>
 
 namespace sculpt {
 
@@ -81,31 +82,36 @@ struct DecodedFile {
     openvdb::MetaMap::Ptr metadata;
 };
 
-/// Walks a float grid's tree before OpenVDB reads it (see vdb_tree_check.h).
-void checkTree(const fs::path& path, const VdbGridEntry& grid)
+/// Walks a float grid's tree before OpenVDB reads it (see vdb_tree_check.h); `in` holds the
+/// grid's bytes at their file positions.
+void checkTree(std::istream& in, const VdbGridEntry& grid)
 {
-    std::ifstream file(path, std::ios::binary);
-    throwOnShortReads(file);
-    file.seekg(grid.transformBegin);
-    BoundedReader in(file, grid.end);
-    checkVdbFloatTree(in, grid.coding, /*throughBuffers=*/true, grid.buffersBegin != 0 ? grid.buffersBegin : -1);
+    throwOnShortReads(in);
+    in.seekg(grid.transformBegin);
+    BoundedReader bounded(in, grid.end);
+    checkVdbFloatTree(bounded, grid.coding, /*throughBuffers=*/true, grid.buffersBegin != 0 ? grid.buffersBegin : -1);
 }
 
 /// Decodes one grid alone: the file's header and metadata, a grid count of one and that grid's
 /// bytes go through OpenVDB's stream reader, so other grids (of types this build may not know)
-/// are never touched. Float grids are walked first; other types go to OpenVDB unchecked.
+/// are never touched. Float grids are walked first; other types go to OpenVDB unchecked. Both
+/// read the bytes from memory (MemoryStream), read once.
 DecodedFile decodeOne(const fs::path& path, const VdbLayout& layout, const VdbGridEntry& grid)
 {
-    if (grid.isFloat()) checkTree(path, grid);
     std::ifstream file(path, std::ios::binary);
     throwOnShortReads(file);
     const std::int32_t one = 1;
-    std::string bytes(std::size_t(layout.gridTableOffset + std::int64_t(sizeof one) + grid.end - grid.begin), '\0');
-    file.read(bytes.data(), std::streamsize(layout.gridTableOffset));
-    std::memcpy(bytes.data() + layout.gridTableOffset, &one, sizeof one);
+    const std::int64_t head = layout.gridTableOffset + std::int64_t(sizeof one), size = head + grid.end - grid.begin;
+    const std::unique_ptr<char[]> bytes(new char[std::size_t(size)]);  // the layout walk bounded it by the file
+    file.read(bytes.get(), std::streamsize(layout.gridTableOffset));
+    std::memcpy(bytes.get() + layout.gridTableOffset, &one, sizeof one);
     file.seekg(grid.begin);
-    file.read(bytes.data() + layout.gridTableOffset + sizeof one, std::streamsize(grid.end - grid.begin));
-    std::istringstream in(std::move(bytes));
+    file.read(bytes.get() + head, std::streamsize(grid.end - grid.begin));
+    if (grid.isFloat()) {
+        MemoryStream gridBytes(bytes.get() + head, bytes.get() + size, grid.begin);
+        checkTree(gridBytes, grid);
+    }
+    MemoryStream in(bytes.get(), bytes.get() + size);
     throwOnShortReads(in);
     openvdb::io::Stream stream(in, /*delayLoad=*/false);
     return {*stream.getGrids(), stream.getMetadata()};

@@ -3,6 +3,7 @@
 
 #include "core/brushes/brush.h"
 #include "core/mesh/incremental_mesher.h"
+#include "core/mesh/preview_mesh.h"
 #include "core/primitives/analytic_shapes.h"
 #include "ui/view/block_cluster.h"
 #include "ui/view/model_display.h"
@@ -153,4 +154,51 @@ TEST(ModelDisplay, AStampOnAModelOfOver10000BlocksReuploadsOnlyTheChunksWithinIt
         const glm::dvec3 nearest = glm::clamp(centre, lo, lo + glm::dvec3(size));
         EXPECT_LE(glm::length(nearest - centre), reach) << "a chunk at " << origin << " is out of the brush's reach";
     }
+}
+
+// Issue 31, item 5: opening a large model shows its preview at once, then fills in full detail
+// within the budget a sync, each chunk drawing its part of the preview until its own upload.
+TEST(ModelDisplay, APreviewStandsInUntilEveryChunkHasFilledInWithinTheBudget)
+{
+    vtkNew<vtkRenderer> renderer;
+    SurfaceLook look;
+    ModelDisplay display(renderer, look);
+    const FieldImage ball = makeSphere(120.0, 1.0);
+    IncrementalMesher before(16), opened(16);
+    before.rebuild(makeSphere(30.0, 1.0));
+    display.sync(before, 1.0);
+    const TriangleMesh preview = previewMesh(ball, 4);
+
+    display.showPreview(preview, ball.grid().transform());
+    display.sync(before, 1.0);  // the old model's mesher: the preview alone is shown
+    EXPECT_TRUE(display.showsPreview());
+    EXPECT_EQ(display.chunkCount(), 0u);
+    EXPECT_EQ(std::size_t(renderer->GetActors()->GetNumberOfItems()), 1u);
+    EXPECT_EQ(display.trianglesDrawn(), preview.triangles.size());
+
+    opened.rebuild(ball);
+    display.setFillBudget(opened.triangleCount() / 5);
+    display.sync(opened, 1.0);
+    EXPECT_FALSE(display.showsPreview());
+    EXPECT_GT(display.pendingChunks(), 0u);
+    EXPECT_LE(display.lastUploadBytes(), display.meshBytes());
+    int syncs = 1;
+    for (std::size_t pending = display.pendingChunks(); pending > 0; pending = display.pendingChunks(), ++syncs) {
+        // Each sync fills in at most the budget and a chunk more; the rest draw their preview.
+        EXPECT_LT(display.trianglesDrawn(), opened.triangleCount() + preview.triangles.size());
+        EXPECT_EQ(display.coarseChunks(), pending);
+        display.sync(opened, 1.0);
+        EXPECT_LT(display.pendingChunks(), pending);
+        ASSERT_LT(syncs, 20);
+    }
+    EXPECT_GE(syncs, 5);  // a fifth of the model a sync
+    EXPECT_LE(syncs, 8);
+    EXPECT_EQ(display.coarseChunks(), 0u);
+    EXPECT_EQ(display.trianglesDrawn(), opened.triangleCount());  // still: full detail everywhere
+
+    display.showPreview(preview, ball.grid().transform());  // an open that fails:
+    display.dropPreview();
+    display.sync(opened, 1.0);  // the model shown before comes back whole
+    EXPECT_EQ(display.trianglesDrawn(), opened.triangleCount());
+    EXPECT_EQ(display.pendingChunks(), 0u);
 }

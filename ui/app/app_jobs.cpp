@@ -2,6 +2,7 @@
 // imported, exports, targets, morphs) and how its result lands.
 
 #include "core/base/errors.h"
+#include "core/base/text_format.h"
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_layout.h"
 #include "sculpt/session/morph_run.h"
@@ -13,6 +14,7 @@
 #include "ui/window/app_window.h"
 
 #include <chrono>
+#include <iostream>
 
 namespace sculpt::ui {
 
@@ -66,6 +68,42 @@ void SculptApp::pollJob()
         break;
     }
     mLastInput = mWindow.time();  // show the notice
+    mOpenPreview.reset();
+    if (outcome.ending != JobRunner::Ending::Finished) mDisplay.dropPreview();
+    if (mOpeningAtStart) followStartupOpen(outcome.ending, outcome.error);
+}
+
+void SculptApp::showOpenPreview()
+{
+    std::optional<OpenPreview::Surface> preview = mOpenPreview ? mOpenPreview->take() : std::nullopt;
+    if (!preview) return;
+    mDisplay.showPreview(preview->mesh, *preview->xform);
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi = -lo;
+    for (const auto& p : preview->mesh.positions) {
+        lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2]));
+        hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
+    }
+    if (!preview->mesh.positions.empty()) mCamera.frame(lo, hi);
+    if (mOpeningAtStart) std::cout << "sculpt-ui: preview in " << formatSeconds(mWindow.time()) << " s" << std::endl;
+}
+
+void SculptApp::followStartupOpen(JobRunner::Ending ending, const std::string& error)
+{
+    switch (ending) {
+    case JobRunner::Ending::Running:  // the job is done when its chunks all are
+        if (mJobs.running() || mDisplay.pendingChunks() > 0) return;
+        std::cout << "sculpt-ui: full detail in " << formatSeconds(mWindow.time()) << " s" << std::endl;
+        break;
+    case JobRunner::Ending::Finished:
+        mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
+        return;  // its chunks fill in from now
+    case JobRunner::Ending::Cancelled:
+        setDocument(std::make_unique<Document>(Document::create(NewShape{})), true);
+        mDialogs.notice = "opening cancelled: a new clay ball instead (File > Open to try again)";
+        break;
+    case JobRunner::Ending::Failed: throw InputError(error);  // as if it failed before the window
+    }
+    mOpeningAtStart = false;
 }
 
 void SculptApp::startEdit(ModelEdit edit)
@@ -86,7 +124,8 @@ void SculptApp::startDocument(std::string label, DocumentMaker make, std::functi
 {
     startJob<std::unique_ptr<Document>>(std::move(label), std::move(make),
                                         [this, landed = std::move(landed)](std::unique_ptr<Document> document) {
-                                            setDocument(std::move(document), true);
+                                            // A preview was framed: the view stays as the user left it.
+                                            setDocument(std::move(document), !mDisplay.showsPreview());
                                             mDialogs.notice = landed();
                                         });
 }
@@ -133,12 +172,19 @@ void SculptApp::startOpen(const fs::path& path, const std::string& grid)
             }
         } catch (const InputError&) {}
     }
+    openInJob(path, grid);
+}
+
+void SculptApp::openInJob(const fs::path& path, const std::string& grid)
+{
     // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
     auto warnings = std::make_shared<std::vector<std::string>>();
+    auto preview = mOpenPreview = std::make_shared<OpenPreview>();
     startDocument(
         "open " + path.filename().string(),
-        [path, warnings, grid](const Progress& p) {
-            return std::make_unique<Document>(Document::open(path, p, warnings.get(), grid));
+        [path, warnings, grid, preview](const Progress& p) {
+            return std::make_unique<Document>(
+                Document::open(path, p, warnings.get(), grid, [&](const FieldImage& f) { preview->offer(f); }));
         },
         [this, path, warnings] {
             mRecent.add(path);

@@ -44,9 +44,18 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
       mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
-    setDocument(openOrCreate(mOptions.document, mOptions.grid), true);
-    mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
     mDialogs.recovery = mAutosave.pending(mOptions.document);
+    if (!mOptions.document.empty() && !mDialogs.recovery) {
+        // Opened as a job: the window is up at once, a large model's preview shortly after.
+        setDocument(std::make_unique<Document>(
+                        FieldImage(makeLevelSetGrid(NewShape{}.voxelSize, FieldImage::kDefaultHalfWidthVoxels))),
+                    false);
+        mOpeningAtStart = true;
+        openInJob(mOptions.document, mOptions.grid);
+    } else {  // offering its recovery asks for the document as it is
+        setDocument(openOrCreate(mOptions.document, mOptions.grid), true);
+    }
+    mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
     if (!mOptions.document.empty()) mRecent.add(mOptions.document);
 
     ImGui::CreateContext();
@@ -197,6 +206,7 @@ DetailView SculptApp::detailView(double now)
 void SculptApp::frame()
 {
     const double now = mWindow.time();
+    showOpenPreview();  // before the job lands: a preview taken after would hide its document
     pollJob();
     mDocument->session().updateMesh();  // once per frame: a stroke's events only stamp
 
@@ -210,6 +220,7 @@ void SculptApp::frame()
     mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
+    if (mOpeningAtStart) followStartupOpen(JobRunner::Ending::Running, {});
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
@@ -320,7 +331,7 @@ bool SculptApp::idle() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
     return mDrag == Drag::None && !holdsReplay() && mWindow.time() - mLastInput > kSettleSeconds &&
-           mPendingScreenshots.empty() && mPendingReports.empty();
+           mPendingScreenshots.empty() && mPendingReports.empty() && mDisplay.pendingChunks() == 0;
 }
 
 void SculptApp::autosave()
@@ -388,16 +399,22 @@ void SculptApp::recoverFromInternalError(const std::string& what)
 int SculptApp::run()
 {
     frame();  // the first frame compiles shaders and uploads everything: 150-400 ms here
-    std::cout << "sculpt-ui: first frame in " << formatNumber(std::round(mWindow.time() * 1000.0) / 1000.0) << " s"
-              << std::endl;
-    if (!mOptions.strokes.empty()) replayStrokes();
+    std::cout << "sculpt-ui: first frame in " << formatSeconds(mWindow.time()) << " s" << std::endl;
     const bool scripted = mPlayer || !mOptions.strokes.empty() || !mOptions.screenshot.empty();
+    while (scripted && mOpeningAtStart) {  // a script starts on the document, in full detail
+        mWindow.pollEvents(0.01);
+        frame();
+    }
+    if (!mOptions.strokes.empty()) replayStrokes();
     if (!mPlayer && scripted) finishReplay();
     mPlayStart = mWindow.time();
     bool replayDone = false;
     while (!mQuit) {
         try {
             loopOnce(replayDone);
+        } catch (const InputError& e) {
+            if (mOpeningAtStart) throw;  // the command line's document failed: exit 2, as before the window
+            recoverFromInternalError(e.what());
         } catch (const std::bad_alloc&) {
             recoverFromInternalError("out of memory");
         } catch (const std::exception& e) {

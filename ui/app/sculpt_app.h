@@ -11,6 +11,7 @@
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
 #include "ui/document/file_listing.h"
+#include "ui/document/open_preview.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
 #include "ui/jobs/job_runner.h"
@@ -238,6 +239,13 @@ private:
     void startFilter(const ModelFilter& filter);
     /// Opens the document at `path` as a job; the old one stays if it fails.
     void startOpen(const std::filesystem::path& path, const std::string& grid = {});
+    /// The open job itself: a large model shows its preview first (OpenPreview), then fills in.
+    void openInJob(const std::filesystem::path& path, const std::string& grid);
+    /// Shows the open job's preview once it is ready, the camera framing it.
+    void showOpenPreview();
+    /// The command line's document: how its opening ends (a failure ends the program, exit 2),
+    /// and when its full detail is on screen.
+    void followStartupOpen(JobRunner::Ending ending, const std::string& error);
     /// Writes the surface as a mesh file as a job.
     void startExport(const std::filesystem::path& path);
     /// Reads the file at `path` as the follow brush's target (and the ghost), as a job.
@@ -284,12 +292,14 @@ private:
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     JobRunner mJobs;
-    std::unique_ptr<Mode> mMode;         // after the viewport and the look: it draws into them
-    bool mUnsavedAnswered = false;       // "save changes?" was answered: the command it held runs
-    double mLastEventArrival = 0.0;      // when the latest input was due (its replay time, if replayed)
-    double mPreviewPendingSince = -1.0;  // a mode's settings changed then, its preview not yet on screen
-    std::string mLastJob;                // how the last job ended: "finished", "cancelled", "failed"
-    double mWaitingSince = -1.0;         // a replay waiting for the job (wait event): since when
+    std::shared_ptr<OpenPreview> mOpenPreview;  // of the open job running, if one is
+    bool mOpeningAtStart = false;               // the command line's document is opening
+    std::unique_ptr<Mode> mMode;                // after the viewport and the look: it draws into them
+    bool mUnsavedAnswered = false;              // "save changes?" was answered: the command it held runs
+    double mLastEventArrival = 0.0;             // when the latest input was due (its replay time, if replayed)
+    double mPreviewPendingSince = -1.0;         // a mode's settings changed then, its preview not yet on screen
+    std::string mLastJob;                       // how the last job ended: "finished", "cancelled", "failed"
+    double mWaitingSince = -1.0;                // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
 
     // Pointer state.

@@ -48,10 +48,11 @@ Document Document::create(const NewShape& shape)
 }
 
 Document Document::open(const std::filesystem::path& path, const Progress& progress, std::vector<std::string>* warnings,
-                        const std::string& grid)
+                        const std::string& grid, const std::function<void(const FieldImage&)>& beforeMeshing)
 {
     VdbDocument file = readVdbDocument(path, grid);
     report(progress, 0.3);  // reading is quick next to meshing
+    if (beforeMeshing) beforeMeshing(file.field);
     Document document(std::move(file.field), path, scaledProgress(progress, 0.3, 1.0));
     document.mCompanions = std::move(file.companions);
     if (warnings) *warnings = std::move(file.warnings);

@@ -8,6 +8,7 @@
 #include "sculpt/session/stroke_script.h"
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,10 @@ public:
     /// Reads a document (its other grids and metadata kept for saving); `warnings` gets what
     /// the file could not give whole. @throws InputError naming the file and what is wrong with it.
     /// `grid` names the grid to sculpt in a file of several (empty: readVdbDocument's choice).
+    /// `beforeMeshing` sees the field once read, before the mesh is made (a preview of it).
     static Document open(const std::filesystem::path& path, const Progress& progress = {},
-                         std::vector<std::string>* warnings = nullptr, const std::string& grid = {});
+                         std::vector<std::string>* warnings = nullptr, const std::string& grid = {},
+                         const std::function<void(const FieldImage&)>& beforeMeshing = {});
 
     /// The document at `documentPath` as its recovery file holds it, unsaved until saved.
     static Document recover(const std::filesystem::path& recoveryFile, std::filesystem::path documentPath);

@@ -19,7 +19,7 @@ void drawStatusBar(SculptApp& app)
     const std::string& units = app.document().session().field().units();
     ImGui::Text(
         "%.0f ms | %s tris | %s voxels | mem %s | undo %s | volume %s %s3 | area %s %s2 | Euler %lld | shells %zu",
-        s.frameMs, formatNumber(double(s.triangles)).c_str(), formatNumber(double(s.activeVoxels)).c_str(),
+        s.frameMs, formatCount(s.triangles).c_str(), formatCount(s.activeVoxels).c_str(),
         formatBytes(double(s.memoryBytes)).c_str(), formatBytes(double(s.undoBytes)).c_str(),
         formatNumber(s.volume).c_str(), units.c_str(), formatNumber(s.area).c_str(), units.c_str(), s.euler, s.shells);
     if (ImGui::IsItemHovered()) {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 #include <utility>
 
 namespace sculpt::ui {
@@ -41,6 +42,44 @@ std::size_t bytesOf(const BlockMesh& mesh)
     return mesh.positions.size() * 24 + mesh.triangles.size() * 3 * sizeof(std::int32_t);
 }
 
+/// The world box of the mesh's vertices.
+std::pair<glm::dvec3, glm::dvec3> boundsOf(const BlockMesh& mesh)
+{
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi = -lo;
+    for (const auto& p : mesh.positions) {
+        lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2]));
+        hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
+    }
+    return {lo, hi};
+}
+
+constexpr std::uint32_t kUnnumbered = ~std::uint32_t(0);
+
+/// The `triangles` of `whole` as a mesh of their own, its vertices numbered anew. `scratch`
+/// (one entry per vertex of `whole`, all kUnnumbered) is left as it was given.
+BlockMesh subMesh(const BlockMesh& whole, const std::vector<std::uint32_t>& triangles,
+                  std::vector<std::uint32_t>& scratch)
+{
+    BlockMesh part;
+    std::vector<std::uint32_t> taken;
+    for (const std::uint32_t t : triangles) {
+        std::array<std::uint32_t, 3> triangle{};
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t v = whole.triangles[t][k];
+            if (scratch[v] == kUnnumbered) {
+                scratch[v] = std::uint32_t(part.positions.size());
+                taken.push_back(v);
+                part.positions.push_back(whole.positions[v]);
+                part.normals.push_back(whole.normals[v]);
+            }
+            triangle[k] = scratch[v];
+        }
+        part.triangles.push_back(triangle);
+    }
+    for (const std::uint32_t v : taken) scratch[v] = kUnnumbered;
+    return part;
+}
+
 }  // namespace
 
 struct ModelDisplay::Chunk {
@@ -51,6 +90,13 @@ struct ModelDisplay::Chunk {
     std::uint64_t generation = 0;  // of `mesh`: a twin of an older one is dropped
     bool fullStale = true, coarseStale = true, twinAsked = false, drawsCoarse = false;
     bool fresh = false;  // changed by this sync: drawn full, its twin asked for at a later one
+};
+
+struct ModelDisplay::Preview {
+    BlockMesh mesh;
+    openvdb::math::Transform::Ptr xform;
+    vtkSmartPointer<vtkActor> actor;
+    std::uint64_t replaces = 0;  // the id of the mesher it stands in for
 };
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
@@ -128,12 +174,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
     chunk.bytes = bytesOf(mesh);
     mLastBytes += chunk.bytes;
     chunk.fullTriangles = mesh.triangles.size();
-    chunk.lo = glm::dvec3(std::numeric_limits<double>::max());
-    chunk.hi = -chunk.lo;
-    for (const auto& p : mesh.positions) {
-        chunk.lo = glm::min(chunk.lo, glm::dvec3(p[0], p[1], p[2]));
-        chunk.hi = glm::max(chunk.hi, glm::dvec3(p[0], p[1], p[2]));
-    }
+    std::tie(chunk.lo, chunk.hi) = boundsOf(mesh);
     chunk.fresh = chunk.generation != 0;  // changed, not new: a new one's twin is asked at once
     chunk.generation = ++mGenerations;
     chunk.fullStale = false;
@@ -182,7 +223,7 @@ void ModelDisplay::finishTwins(double voxelSize)
 void ModelDisplay::show(Chunk& chunk, bool coarse)
 {
     chunk.drawsCoarse = coarse;
-    chunk.full->SetVisibility(!mHidden && !coarse);
+    if (chunk.full) chunk.full->SetVisibility(!mHidden && !coarse);
     if (chunk.coarse) chunk.coarse->SetVisibility(!mHidden && coarse);
 }
 
@@ -200,7 +241,9 @@ void ModelDisplay::chooseDetail(double voxelSize, const DetailView& view)
     mTrianglesDrawn = mCoarseChunks = 0;
     std::size_t i = 0;
     for (auto& [origin, chunk] : mChunks) {
-        const bool coarse = wanted[i++] && !chunk.coarseStale;  // full detail until its twin is back
+        // Full detail until its twin is back; its preview part until its first upload.
+        const bool coarse = !chunk.full || (wanted[i] && !chunk.coarseStale);
+        ++i;
         if (coarse != chunk.drawsCoarse) show(chunk, coarse);
         mTrianglesDrawn += coarse ? chunk.coarseTriangles : chunk.fullTriangles;
         mCoarseChunks += coarse ? 1 : 0;
@@ -210,9 +253,11 @@ void ModelDisplay::chooseDetail(double voxelSize, const DetailView& view)
 void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
 {
     mLastUploads = mLastRemovals = mLastChunkUploads = mLastBytes = 0;
+    if (mPreview && mesher.id() == mPreview->replaces) return;  // the preview alone is shown
     if (mesher.id() != mSourceId) {
         clear();
         layOut(mesher);
+        cutPreview();
         mSourceId = mesher.id();
         mLastUploads = mesher.blocks().size();
     } else if (mesher.version() != mVersion) {
@@ -229,9 +274,26 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const
     }
     mVersion = mesher.version();
     mBlockCount = mesher.blocks().size();
+    uploadStale(mesher);
+    collectTwins();
+    chooseDetail(voxelSize, view);
+    askTwins(voxelSize);
+}
+
+void ModelDisplay::uploadStale(const IncrementalMesher& mesher)
+{
+    std::size_t filled = 0;
+    mPendingChunks = 0;
     for (auto it = mChunks.begin(); it != mChunks.end();) {
         Chunk& chunk = it->second;
+        const bool first = !chunk.full;
+        if (chunk.fullStale && first && chunk.coarse && filled >= mFillBudget) {
+            ++mPendingChunks;  // its preview part stands in for it a sync longer
+            ++it;
+            continue;
+        }
         if (chunk.fullStale) uploadFull(mesher, it->first, chunk);
+        if (first) filled += chunk.fullTriangles;
         if (chunk.fullTriangles > 0) {
             ++it;
             continue;
@@ -242,9 +304,62 @@ void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const
         mTwinBytes -= chunk.twinBytes;
         it = mChunks.erase(it);
     }
-    collectTwins();
-    chooseDetail(voxelSize, view);
-    askTwins(voxelSize);
+}
+
+void ModelDisplay::showPreview(const TriangleMesh& preview, const openvdb::math::Transform& xform)
+{
+    dropPreview();
+    clear();
+    mPreview = std::make_unique<Preview>();
+    mPreview->mesh.positions.assign(preview.positions.begin(), preview.positions.end());
+    mPreview->mesh.normals.assign(preview.normals.begin(), preview.normals.end());
+    mPreview->mesh.triangles.assign(preview.triangles.begin(), preview.triangles.end());
+    mPreview->xform = xform.copy();
+    mPreview->actor = newActor(mLook);
+    mPreview->actor->SetVisibility(!mHidden);
+    setMesh(mPreview->actor, polyDataOf(mPreview->mesh));
+    mPreview->replaces = mSourceId;
+    mRenderer->AddActor(mPreview->actor);
+    mTrianglesDrawn = preview.triangles.size();
+}
+
+void ModelDisplay::dropPreview()
+{
+    if (!mPreview) return;
+    mRenderer->RemoveActor(mPreview->actor);
+    mPreview.reset();
+    mSourceId = 0;  // lay the mesher shown before out again
+}
+
+void ModelDisplay::cutPreview()
+{
+    if (!mPreview) return;
+    const BlockMesh& whole = mPreview->mesh;
+    // Each triangle goes to the chunk holding its centroid (none: dropped, it strays a coarse
+    // voxel out of the model's blocks).
+    std::map<Chunk*, std::vector<std::uint32_t>> parts;
+    for (std::uint32_t t = 0; t < whole.triangles.size(); ++t) {
+        openvdb::Vec3d centroid(0.0);
+        for (const std::uint32_t v : whole.triangles[t])
+            centroid += openvdb::Vec3d(whole.positions[v][0], whole.positions[v][1], whole.positions[v][2]) / 3.0;
+        const auto it = mChunks.find(chunkOf(openvdb::Coord::floor(mPreview->xform->worldToIndex(centroid))));
+        if (it != mChunks.end()) parts[&it->second].push_back(t);
+    }
+    std::vector<std::uint32_t> scratch(whole.positions.size(), kUnnumbered);
+    for (auto& [chunk, triangles] : parts) {
+        const BlockMesh part = subMesh(whole, triangles, scratch);
+        chunk->coarse = newActor(mLook);
+        mRenderer->AddActor(chunk->coarse);
+        setMesh(chunk->coarse, polyDataOf(part));
+        chunk->coarseTriangles = part.triangles.size();
+        chunk->twinBytes = bytesOf(part);
+        mTwinBytes += chunk->twinBytes;
+        chunk->coarseStale = false;
+        std::tie(chunk->lo, chunk->hi) = boundsOf(part);
+        show(*chunk, true);
+    }
+    mRenderer->RemoveActor(mPreview->actor);
+    mPreview.reset();
 }
 
 void ModelDisplay::setHidden(bool hidden)

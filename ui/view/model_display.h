@@ -13,6 +13,12 @@
 /// clustered on a worker thread (TwinBuilder) once the chunk has rested a frame, so that a
 /// camera move finds it ready; until it is back the chunk draws full detail. Which of the two a
 /// chunk draws is the DetailView's rule. Every actor shares the SurfaceLook's property and shader.
+///
+/// Opening a large document, a coarse preview (previewMesh) stands in for the model: whole, until
+/// the new mesher comes, then cut into the chunks' coarse actors, each drawn until its chunk's
+/// first full upload. Those uploads fill in at most fillBudget() triangles a sync, so that no
+/// frame carries the whole model's upload (2.8 s of Mesa for 8 M triangles) and the window stays
+/// responsive while the detail fills in.
 
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/detail_view.h"
@@ -46,6 +52,17 @@ public:
     void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {});
     /// Waits for the coarse twin of every chunk and takes them (for tests: a frame never waits).
     void finishTwins(double voxelSize);
+    /// Shows `preview` (world coordinates, of a grid on `xform`) instead of the mesher shown now,
+    /// until sync() is given another mesher (see above).
+    void showPreview(const TriangleMesh& preview, const openvdb::math::Transform& xform);
+    /// Drops a preview still whole (its document did not come): the mesher shown before returns.
+    void dropPreview();
+    bool showsPreview() const { return mPreview != nullptr; }
+    /// Chunks waiting for their first full upload, drawn from their part of the preview meanwhile.
+    std::size_t pendingChunks() const { return mPendingChunks; }
+    /// Triangles of first uploads a sync makes at most, for chunks that have a preview to draw.
+    std::size_t fillBudget() const { return mFillBudget; }
+    void setFillBudget(std::size_t triangles) { mFillBudget = triangles; }
     /// Hides every actor (another view of the model, the scales, is shown instead).
     void setHidden(bool hidden);
 
@@ -70,9 +87,14 @@ public:
 
 private:
     struct Chunk;
+    struct Preview;
     openvdb::Coord chunkOf(const openvdb::Coord& block) const;
     void clear();
     void layOut(const IncrementalMesher& mesher);
+    /// Gives each chunk its part of the preview as its coarse actor, and drops the whole one.
+    void cutPreview();
+    /// Re-joins and uploads the chunks whose blocks changed, first uploads within the budget.
+    void uploadStale(const IncrementalMesher& mesher);
     BlockMesh joined(const IncrementalMesher& mesher, const openvdb::Coord& origin) const;
     void uploadFull(const IncrementalMesher& mesher, const openvdb::Coord& origin, Chunk& chunk);
     /// Takes the twins the worker finished, for the chunks that have not changed since.
@@ -93,6 +115,8 @@ private:
     std::uint64_t mVersion = 0;
     std::uint64_t mGenerations = 0;  // chunk meshes made
     std::unique_ptr<TwinBuilder> mTwins;
+    std::unique_ptr<Preview> mPreview;
+    std::size_t mFillBudget = 1'000'000, mPendingChunks = 0;
     bool mHidden = false;
     std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0, mTwinBytes = 0;
     std::size_t mLastUploads = 0, mLastRemovals = 0, mLastChunkUploads = 0, mLastBytes = 0;
