@@ -2,8 +2,9 @@
 // figures come from replayed sessions, as a person would see them). For each model it replays 3 s
 // still (static frame), a 10-second stroke at 60 events a second, a 3-second orbit drag and 30
 // key-orbit steps, and prints medians and 95th percentiles, triangles drawn, actors, stamps per
-// second, first-frame time and peak memory. The models are issue 31's: the clay ball, and
-// ch2better (mricron-data) imported at 0.5 mm and at 0.25 mm (8 M triangles), made at run time.
+// second, opening times (first frame, preview, full detail) and peak memory. The models are issue
+// 31's: the clay ball, and ch2better (mricron-data) imported at 0.5 mm and at 0.25 mm (8 M
+// triangles), made at run time.
 // Run by hand (about 12 minutes; the 0.25 mm model alone about 6):
 //   build/tests/bench/ui_frame_measure [--reference] [--chunk C]... [--document DOC.vdb]
 // --reference adds, for each model, the display of one actor per block it had before chunks;
@@ -40,12 +41,20 @@ double percentile(std::vector<double> v, double q)
 
 std::vector<double> numbers(const json& list) { return list.get<std::vector<double>>(); }
 
-/// The seconds sculpt-ui says its first frame took.
-double firstFrameSeconds(const std::string& out)
+/// The seconds at which sculpt-ui says `stage` ("first frame", "preview", "full detail") came,
+/// or -1 if it did not say (a small model has no preview).
+double stageSeconds(const std::string& out, const std::string& stage)
 {
     std::smatch m;
-    return std::regex_search(out, m, std::regex("first frame in ([0-9.e+-]+) s")) ? std::stod(m[1]) : -1.0;
+    return std::regex_search(out, m, std::regex(stage + " in ([0-9.e+-]+) s")) ? std::stod(m[1]) : -1.0;
 }
+
+/// When the model came on screen: the window, its preview, full detail.
+struct Opening {
+    double firstFrame = -1.0, preview = -1.0, fullDetail = -1.0;
+};
+
+std::string secondsOrNone(double s) { return s < 0.0 ? "none" : std::to_string(s).substr(0, 4) + " s"; }
 
 void line(const char* what, const std::vector<double>& ms)
 {
@@ -54,13 +63,16 @@ void line(const char* what, const std::vector<double>& ms)
                 1000.0 / std::max(1e-9, percentile(ms, 0.5)));
 }
 
-void summarise(const std::string& model, const Reports& r, double firstFrame)
+void summarise(const std::string& model, const Reports& r, const Opening& opening)
 {
     const json& still = r["still"];
-    std::printf("%s: %zu triangles, %zu blocks, %zu chunks (C = %d), %zu actors; first frame %.2f s\n", model.c_str(),
+    std::printf("%s: %zu triangles, %zu blocks, %zu chunks (C = %d), %zu actors\n", model.c_str(),
                 still["triangles"].get<std::size_t>(), still["blocks"].get<std::size_t>(),
                 still["chunks"].get<std::size_t>(), still["chunk_blocks"].get<int>(),
-                still["actors"].get<std::size_t>(), firstFrame);
+                still["actors"].get<std::size_t>());
+    std::printf("  %-28s first frame %s, preview %s, full detail %s\n", "opening",
+                secondsOrNone(opening.firstFrame).c_str(), secondsOrNone(opening.preview).c_str(),
+                secondsOrNone(opening.fullDetail).c_str());
     line("static", numbers(still["frame_times_ms"]));
     line("sculpting (10 s stroke)", numbers(r["stroked"]["frame_times_ms"]));
     const std::vector<double> latency = numbers(r["stroked"]["latencies_ms"]);
@@ -120,7 +132,9 @@ void measure(const std::string& model, const std::string& document, const std::s
     orbit.report(r, "keyed");
     const std::optional<std::string> first = replay(sculpting, document, extra, dir);
     if (!first || !replay(orbit, document, extra, dir)) return;
-    summarise(model, Reports(r), firstFrameSeconds(*first));
+    const Opening opening{stageSeconds(*first, "first frame"), stageSeconds(*first, "preview"),
+                          stageSeconds(*first, "full detail")};
+    summarise(model, Reports(r), opening);
 }
 
 /// The display as it chooses its chunks, then with each chunk size of `chunkSizes` (1: a chunk per block).

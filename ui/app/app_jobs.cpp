@@ -11,6 +11,7 @@
 #include "ui/document/import_draft.h"
 #include "ui/modes/import_mode.h"
 #include "ui/modes/morph_mode.h"
+#include "ui/view/block_polydata.h"
 #include "ui/window/app_window.h"
 
 #include <chrono>
@@ -78,12 +79,10 @@ void SculptApp::showOpenPreview()
     std::optional<OpenPreview::Surface> preview = mOpenPreview ? mOpenPreview->take() : std::nullopt;
     if (!preview) return;
     mDisplay.showPreview(preview->mesh, *preview->xform);
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi = -lo;
-    for (const auto& p : preview->mesh.positions) {
-        lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2]));
-        hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
+    if (!preview->mesh.positions.empty()) {
+        const auto [lo, hi] = boundsOf(preview->mesh.positions.data(), preview->mesh.positions.size());
+        mCamera.frame(lo, hi);
     }
-    if (!preview->mesh.positions.empty()) mCamera.frame(lo, hi);
     if (mOpeningAtStart) std::cout << "sculpt-ui: preview in " << formatSeconds(mWindow.time()) << " s" << std::endl;
 }
 

@@ -327,11 +327,23 @@ void SculptApp::finishReplay()
     if (!mOptions.stay) mQuit = true;
 }
 
-bool SculptApp::idle() const
+bool SculptApp::quiet() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
-    return mDrag == Drag::None && !holdsReplay() && mWindow.time() - mLastInput > kSettleSeconds &&
-           mPendingScreenshots.empty() && mPendingReports.empty() && mDisplay.pendingChunks() == 0;
+    return mDrag == Drag::None && mWindow.time() - mLastInput > kSettleSeconds && mPendingScreenshots.empty() &&
+           mPendingReports.empty() && mDisplay.pendingChunks() == 0 && !(mMode && mMode->holdsReplay());
+}
+
+bool SculptApp::idle() const { return quiet() && !mJobs.running(); }
+
+double SculptApp::inputWait() const
+{
+    // While only a job's progress bar changes, ten frames a second show it: llvmpipe drawing at
+    // full rate would take a core from the job. Input still wakes the loop at once.
+    constexpr double kJobFrameSeconds = 0.1;
+    constexpr double kIdleWakeSeconds = 0.25;  // asleep until input, waking to autosave
+    if (!quiet()) return 0.0;
+    return mJobs.running() ? kJobFrameSeconds : kIdleWakeSeconds;
 }
 
 void SculptApp::autosave()
@@ -367,15 +379,14 @@ void SculptApp::loopOnce(bool& replayDone)
             if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
             handle(event);
         }
-        mWindow.pollEvents(0.0);
+        mWindow.pollEvents(waiting ? inputWait() : 0.0);
     } else {
         if (mPlayer && !replayDone) {
             replayDone = true;
             finishReplay();
             if (mQuit) return;
         }
-        // Idle (no input for a while): sleep until an event, waking to autosave.
-        mWindow.pollEvents(idle() ? 0.25 : 0.0);
+        mWindow.pollEvents(inputWait());
     }
     autosave();
     if (replaying || !idle()) frame();
@@ -402,7 +413,7 @@ int SculptApp::run()
     std::cout << "sculpt-ui: first frame in " << formatSeconds(mWindow.time()) << " s" << std::endl;
     const bool scripted = mPlayer || !mOptions.strokes.empty() || !mOptions.screenshot.empty();
     while (scripted && mOpeningAtStart) {  // a script starts on the document, in full detail
-        mWindow.pollEvents(0.01);
+        mWindow.pollEvents(inputWait());
         frame();
     }
     if (!mOptions.strokes.empty()) replayStrokes();

@@ -175,6 +175,10 @@ private:
     /// A fault event's internal error (tests of that recovery).
     [[noreturn]] static void raiseFault(const std::string& kind);
     bool idle() const;
+    /// Nothing but frames' own state asks for a frame: no drag, no recent input, nothing pending.
+    bool quiet() const;
+    /// How long the loop may wait for input before its next frame (see inputWait's comment).
+    double inputWait() const;
     void autosave();
     /// Writes the recovery copy now, before a file is read: a reader that takes the process down
     /// must not take unsaved work.

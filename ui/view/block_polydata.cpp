@@ -7,7 +7,10 @@
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
 
+#include <glm/common.hpp>
+
 #include <cstring>
+#include <limits>
 
 namespace sculpt::ui {
 
@@ -40,6 +43,17 @@ void append(BlockMesh& whole, const BlockMesh& part)
     whole.positions.insert(whole.positions.end(), part.positions.begin(), part.positions.end());
     whole.normals.insert(whole.normals.end(), part.normals.begin(), part.normals.end());
     for (const auto& t : part.triangles) whole.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+}
+
+std::pair<glm::dvec3, glm::dvec3> boundsOf(const std::array<float, 3>* points, std::size_t count)
+{
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi = -lo;
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 p(points[i][0], points[i][1], points[i][2]);
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    return {lo, hi};
 }
 
 vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh)

@@ -4,7 +4,10 @@
 
 #include "core/mesh/block_mesh.h"
 
+#include <glm/vec3.hpp>
 #include <vtkSmartPointer.h>
+
+#include <utility>
 
 class vtkPolyData;
 
@@ -12,6 +15,9 @@ namespace sculpt::ui {
 
 /// `part` appended to `whole`, its indices shifted (keys and ownership are not kept).
 void append(BlockMesh& whole, const BlockMesh& part);
+
+/// The box of `count` points (none: lo above hi).
+std::pair<glm::dvec3, glm::dvec3> boundsOf(const std::array<float, 3>* points, std::size_t count);
 
 /// The mesh's points, normals and triangles, copied into VTK arrays.
 vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh);

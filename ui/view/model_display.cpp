@@ -42,17 +42,6 @@ std::size_t bytesOf(const BlockMesh& mesh)
     return mesh.positions.size() * 24 + mesh.triangles.size() * 3 * sizeof(std::int32_t);
 }
 
-/// The world box of the mesh's vertices.
-std::pair<glm::dvec3, glm::dvec3> boundsOf(const BlockMesh& mesh)
-{
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi = -lo;
-    for (const auto& p : mesh.positions) {
-        lo = glm::min(lo, glm::dvec3(p[0], p[1], p[2]));
-        hi = glm::max(hi, glm::dvec3(p[0], p[1], p[2]));
-    }
-    return {lo, hi};
-}
-
 constexpr std::uint32_t kUnnumbered = ~std::uint32_t(0);
 
 /// The `triangles` of `whole` as a mesh of their own, its vertices numbered anew. `scratch`
@@ -174,7 +163,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
     chunk.bytes = bytesOf(mesh);
     mLastBytes += chunk.bytes;
     chunk.fullTriangles = mesh.triangles.size();
-    std::tie(chunk.lo, chunk.hi) = boundsOf(mesh);
+    std::tie(chunk.lo, chunk.hi) = boundsOf(mesh.positions.data(), mesh.positions.size());
     chunk.fresh = chunk.generation != 0;  // changed, not new: a new one's twin is asked at once
     chunk.generation = ++mGenerations;
     chunk.fullStale = false;
@@ -355,7 +344,7 @@ void ModelDisplay::cutPreview()
         chunk->twinBytes = bytesOf(part);
         mTwinBytes += chunk->twinBytes;
         chunk->coarseStale = false;
-        std::tie(chunk->lo, chunk->hi) = boundsOf(part);
+        std::tie(chunk->lo, chunk->hi) = boundsOf(part.positions.data(), part.positions.size());
         show(*chunk, true);
     }
     mRenderer->RemoveActor(mPreview->actor);
