@@ -1,13 +1,12 @@
 #include "ui/view/block_polydata.h"
 
+#include <glm/common.hpp>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
-
-#include <glm/common.hpp>
 
 #include <cstring>
 #include <limits>
