@@ -45,6 +45,7 @@ struct StepConstants {
     GradientScheme scheme;
     const openvdb::FloatTree* target = nullptr;
     float alpha = 0.0f, clampWorld = 0.0f;
+    bool matchTargetValues = false;
     double beta = 0.0;
     std::optional<FalloffBall> smoothWeight;
     bool firstOrderTime = false;
@@ -134,13 +135,19 @@ private:
     /// band stays a distance field instead of bunching up where the speed varies.
     double targetSpeed(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
     {
+        const double towards =
+            mC.matchTargetValues ? double(mTarget->getValue(ijk)) - s.at(x, y, z) : targetAtFoot(s, x, y, z, ijk);
+        const double clamped = std::clamp(towards, double(-mC.clampWorld), double(mC.clampWorld));
+        if (std::abs(s.at(x, y, z)) < mC.h) mFastestTarget = std::max(mFastestTarget, std::abs(clamped));
+        return -mC.alpha * clamped;
+    }
+
+    double targetAtFoot(const LeafStencil& s, int x, int y, int z, const openvdb::Coord& ijk)
+    {
         const openvdb::Vec3d foot = closestSurfacePoint(
             ijk.asVec3d(), s.at(x, y, z),
             centralDifference([&s](int i, int j, int k) { return s.at(i, j, k); }, x, y, z), mC.invH);
-        const double phiT = openvdb::tools::BoxSampler::sample(*mTarget, foot);
-        const double clamped = std::clamp(phiT, double(-mC.clampWorld), double(mC.clampWorld));
-        if (std::abs(s.at(x, y, z)) < mC.h) mFastestTarget = std::max(mFastestTarget, std::abs(clamped));
-        return -mC.alpha * clamped;
+        return openvdb::tools::BoxSampler::sample(*mTarget, foot);
     }
 
 public:
@@ -359,6 +366,7 @@ void LevelSetEvolution::applyStep(double dt)
         c.target = &mTerms.target->target->tree();
         c.alpha = float(mTerms.target->alpha);
         c.clampWorld = float(mTargetReach);
+        c.matchTargetValues = mTerms.target->matchValues;
     }
     c.beta = mTerms.smooth ? mTerms.smooth->beta : 0.0;
     if (mTerms.smooth) c.smoothWeight = mTerms.smooth->weight;

@@ -291,8 +291,12 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
             evolution->step(dt);
             report(progress, 0.5 + 0.45 * now() / std::max(duration, 1e-30));
         }
-        if (frame + 1 == o.frames)
+        if (frame + 1 == o.frames) {
+            // The last approach matches the band's values: thin parts, which only the values
+            // near the surface hold, then end on the target's too.
+            evolution->terms().target->matchValues = true;
             settle(*evolution, field, goal, o.maxSteps - secondPassSteps(), summary.stop, part(progress, 0.95, 1.0));
+        }
         emit(frame);
     }
     summary.steps = first.steps + secondPassSteps();

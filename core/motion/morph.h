@@ -6,7 +6,9 @@
 ///        volumes between the two shapes. phi_T is the target's distance widened beyond its band
 ///        over the whole source (wide_distance.h): far parts travel at the full speed alpha w
 ///        and the morph sees them approach, so it stops only once the shapes meet or the
-///        distance stops falling, whatever their placement.
+///        distance stops falling, whatever their placement. The last
+///        frame's approach matches the band's values (TargetTerm::matchValues), so thin parts
+///        end on the target too.
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"

@@ -18,6 +18,10 @@ struct TargetTerm {
     openvdb::FloatGrid::ConstPtr target;
     double alpha = 1.0;       ///< per unit time
     double clampWorld = 0.0;  ///< w; 0 means the target's band half width
+    /// F_T = -alpha clamp(phi_T(x) - phi(x), -w, w) at each voxel instead (OpenVDB's
+    /// LevelSetMorphing): the same speed on the surface, but every value of the band converges
+    /// on the target's, so parts thinner than the band, which only its values hold, do too.
+    bool matchValues = false;
 };
 
 /// F_k = -beta kappa, kappa = div(grad phi / |grad phi|) (2/r on a sphere): mean-curvature flow.
