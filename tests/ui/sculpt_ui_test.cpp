@@ -712,8 +712,10 @@ TEST(SculptUi, TheImportPanelPreviewsTheIsoValueLiveAndAppliesTheGridTheCommandL
     for (int i = 0; i < 8; ++i) events.key("PageUp");
     events.wait(0.3).report(r, "higher").screenshot(dir / "higher.png");
     events.key("Escape").report(r, "cancelled");  // cancelled: nothing changed
-    events.key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds().key("Enter").untilJobEnds().report(r, "applied");
-    const CommandResult run = play(dir, events);
+    events.key("I", {"ctrl"}).text(mri).key("Enter").untilJobEnds().key("Enter").untilJobEnds();
+    events.wait(0.3).report(r, "applied");
+    // A preview budget far under the scan's mesh: the applied import shows a coarse preview first.
+    const CommandResult run = play(dir, events, "", "--preview-triangles 20000");
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const Reports reports(r);
     ASSERT_EQ(reports.size(), 5u);
@@ -732,6 +734,10 @@ TEST(SculptUi, TheImportPanelPreviewsTheIsoValueLiveAndAppliesTheGridTheCommandL
     EXPECT_EQ(reports["applied"]["last_job"], "finished") << reports["applied"]["error"];
     EXPECT_EQ(reports["applied"]["checksum"], checksumOfFile(dir / "cli.vdb"));  // Otsu, largest piece, 1 mm
     EXPECT_EQ(reports["applied"]["shells"], 1);
+    EXPECT_EQ(reports["start"]["previews_shown"], 0);
+    EXPECT_EQ(reports["applied"]["previews_shown"], 1);
+    EXPECT_EQ(reports["applied"]["display_pending_chunks"], 0);  // then full detail everywhere
+    EXPECT_EQ(reports["applied"]["triangles_drawn"], reports["applied"]["triangles"]);
 }
 
 TEST(SculptUi, PrimitivesPlacedInThePanelBakeToTheGridSculptBuildMakesOfTheSceneItSaves)

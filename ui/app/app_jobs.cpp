@@ -79,6 +79,7 @@ void SculptApp::showOpenPreview()
     std::optional<OpenPreview::Surface> preview = mOpenPreview ? mOpenPreview->take() : std::nullopt;
     if (!preview) return;
     mDisplay.showPreview(preview->mesh, *preview->xform);
+    ++mPreviewsShown;
     if (!preview->mesh.positions.empty()) {
         const auto [lo, hi] = boundsOf(preview->mesh.positions.data(), preview->mesh.positions.size());
         mCamera.frame(lo, hi);
@@ -121,12 +122,17 @@ void SculptApp::startEdit(ModelEdit edit)
 
 void SculptApp::startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed)
 {
-    startJob<std::unique_ptr<Document>>(std::move(label), std::move(make),
-                                        [this, landed = std::move(landed)](std::unique_ptr<Document> document) {
-                                            // A preview was framed: the view stays as the user left it.
-                                            setDocument(std::move(document), !mDisplay.showsPreview());
-                                            mDialogs.notice = landed();
-                                        });
+    auto preview = mOpenPreview = std::make_shared<OpenPreview>(mOptions.previewTriangles);
+    startJob<std::unique_ptr<Document>>(
+        std::move(label),
+        [make = std::move(make), preview](const Progress& p) {
+            return make(p, [&](const FieldImage& f) { preview->offer(f); });
+        },
+        [this, landed = std::move(landed)](std::unique_ptr<Document> document) {
+            // A preview was framed: the view stays as the user left it.
+            setDocument(std::move(document), !mDisplay.showsPreview());
+            mDialogs.notice = landed();
+        });
 }
 
 void SculptApp::startFilter(const ModelFilter& filter)
@@ -178,12 +184,10 @@ void SculptApp::openInJob(const fs::path& path, const std::string& grid)
 {
     // The document (its mesh too) is made on the job's thread; the old one stays if it fails.
     auto warnings = std::make_shared<std::vector<std::string>>();
-    auto preview = mOpenPreview = std::make_shared<OpenPreview>();
     startDocument(
         "open " + path.filename().string(),
-        [path, warnings, grid, preview](const Progress& p) {
-            return std::make_unique<Document>(
-                Document::open(path, p, warnings.get(), grid, [&](const FieldImage& f) { preview->offer(f); }));
+        [path, warnings, grid](const Progress& p, const FieldReady& ready) {
+            return std::make_unique<Document>(Document::open(path, p, warnings.get(), grid, ready));
         },
         [this, path, warnings] {
             mRecent.add(path);

@@ -101,6 +101,8 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     const BackgroundJob* job = mJobs.job();
     r["job"] = job ? nlohmann::json{{"label", job->label()}, {"progress", job->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
+    r["previews_shown"] = mPreviewsShown;
+    r["display_pending_chunks"] = mDisplay.pendingChunks();  // still drawn from a preview
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
     r["target"] = mBrush.target.path.string();

@@ -75,6 +75,11 @@ int main(int argc, char** argv)
                    "above this many triangles, parts of the model under two pixels per voxel are drawn coarse "
                    "while the camera moves or a stroke runs (full detail near the brush and when still)")
         ->capture_default_str();
+    cli.add_option("--preview-triangles", options.previewTriangles,
+                   "a document opened or imported whose mesh would exceed this many triangles shows a coarse "
+                   "preview of about as many first, then fills in full detail")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
     cli.add_option("--display-chunk", options.chunkBlocks,
                    "blocks per edge of a display chunk (one draw call each); 0 chooses from the model's size")
         ->capture_default_str()

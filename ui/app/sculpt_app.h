@@ -49,9 +49,11 @@ struct AppOptions {
     std::filesystem::path stateDir;                       ///< recovery files and recent files
     double autosaveSeconds = Autosave::kDefaultIntervalSeconds;
     std::size_t lodTriangles = 300000;  ///< far chunks coarse while moving or sculpting above this many
-    int chunkBlocks = 0;                ///< blocks per display chunk edge; 0: chosen from the model
-    int slowFramesMs = 0;               ///< added to every frame (a slow machine, for tests)
-    bool stay = false;                  ///< keep the window open after a replay
+    /// A document opened or imported whose mesh exceeds this many triangles shows a coarse preview first.
+    std::size_t previewTriangles = OpenPreview::kDefaultTriangleBudget;
+    int chunkBlocks = 0;   ///< blocks per display chunk edge; 0: chosen from the model
+    int slowFramesMs = 0;  ///< added to every frame (a slow machine, for tests)
+    bool stay = false;     ///< keep the window open after a replay
 };
 
 /// The figures of the status bar.
@@ -296,7 +298,8 @@ private:
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     JobRunner mJobs;
-    std::shared_ptr<OpenPreview> mOpenPreview;  // of the open job running, if one is
+    std::shared_ptr<OpenPreview> mOpenPreview;  // of the open or import job running, if one is
+    std::size_t mPreviewsShown = 0;             // reported: a large document showed one first
     bool mOpeningAtStart = false;               // the command line's document is opening
     std::unique_ptr<Mode> mMode;                // after the viewport and the look: it draws into them
     bool mUnsavedAnswered = false;              // "save changes?" was answered: the command it held runs

@@ -6,7 +6,7 @@ namespace sculpt::ui {
 
 void OpenPreview::offer(const FieldImage& field)
 {
-    const int stride = previewStride(field, kTriangleBudget);
+    const int stride = previewStride(field, mBudget);
     if (stride == 1) return;
     Surface surface{previewMesh(field, stride), field.grid().transform().copy()};
     const std::lock_guard<std::mutex> lock(mMutex);

@@ -1,10 +1,11 @@
 #pragma once
 /// @file open_preview.h
-/// @brief The coarse surface an open job hands the window before its document is ready.
+/// @brief The coarse surface a job making a document (open, import) hands the window before
+///        the document is ready.
 ///
-/// The job's thread offers the field once read; if its full mesh would exceed the budget, a
-/// preview (previewMesh) is made and left here, and the UI thread takes it at its next frame.
-/// A model under the budget opens fast enough to show whole, so it gets none.
+/// The job's thread offers the field once read or converted; if its full mesh would exceed the
+/// budget, a preview (previewMesh) is made and left here, and the UI thread takes it at its next
+/// frame. A model under the budget opens fast enough to show whole, so it gets none.
 
 #include "core/field/field_image.h"
 #include "core/mesh/triangle_mesh.h"
@@ -18,7 +19,9 @@ class OpenPreview {
 public:
     /// Models whose full mesh is estimated above this many triangles get a preview of about as
     /// many: Mesa draws that in a few tens of milliseconds.
-    static constexpr std::size_t kTriangleBudget = 1'000'000;
+    static constexpr std::size_t kDefaultTriangleBudget = 1'000'000;
+
+    explicit OpenPreview(std::size_t triangleBudget = kDefaultTriangleBudget) : mBudget(triangleBudget) {}
 
     struct Surface {
         TriangleMesh mesh;                    ///< world coordinates
@@ -31,6 +34,7 @@ public:
     std::optional<Surface> take();
 
 private:
+    const std::size_t mBudget;
     std::mutex mMutex;
     std::optional<Surface> mSurface;
 };

@@ -67,8 +67,9 @@ bool ImportMode::accept(ModeHost& host)
     if (replaces) {  // the new document, its mesh too, made on the job's thread
         host.startDocument(
             "import " + path.filename().string(),
-            [path, options, report](const Progress& p) {
+            [path, options, report](const Progress& p, const ModeHost::FieldReady& ready) {
                 FieldImage field = importShape(path, options, *report, scaledProgress(p, 0.0, 0.7));
+                ready(field);
                 return std::make_unique<Document>(std::move(field), std::filesystem::path(),
                                                   scaledProgress(p, 0.7, 1.0));
             },
