@@ -12,6 +12,7 @@ declare -A allowed=(
   [field]="base"
   [local]="base field"
   [motion]="base field local mesh"
+  [tracking]="base field mesh motion"
   [mesh]="base field"
   [primitives]="base field"
   [brushes]="base field local motion primitives"

@@ -1,0 +1,278 @@
+#include "core/tracking/edge_remesher.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace sculpt {
+
+namespace {
+
+using openvdb::Vec3d;
+
+constexpr double kRateTolerance = 0.1;  // of e: an edge changing faster is left to move
+constexpr int kPasses = 3;              // of splits, then of collapses, per step
+
+struct Edge {
+    std::uint32_t a, b;  // vertex indices
+    double length;
+};
+
+std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
+
+class Remesher {
+public:
+    Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge)
+        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(edge)
+    {
+        mInverted.resize(mesh.triangles.size(), 0);
+    }
+
+    RemeshCounts run()
+    {
+        for (int pass = 0; pass < kPasses && splitPass(); ++pass) {}
+        for (int pass = 0; pass < kPasses && collapsePass(); ++pass) {}
+        compact();
+        remember();
+        return mCounts;
+    }
+
+private:
+    double length(std::uint32_t a, std::uint32_t b) const { return (mMesh.positions[a] - mMesh.positions[b]).length(); }
+    std::uint64_t key(std::uint32_t a, std::uint32_t b) const { return edgeKey(mMesh.ids[a], mMesh.ids[b]); }
+
+    /// Each edge once (from its half-edge whose first vertex is the smaller index).
+    std::vector<Edge> edges() const
+    {
+        std::vector<Edge> list;
+        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t) {
+            if (mDeadTriangle.size() > t && mDeadTriangle[t]) continue;
+            const auto& tri = mMesh.triangles[t];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t u = tri[k], v = tri[(k + 1) % 3];
+                if (u < v) list.push_back({u, v, length(u, v)});
+            }
+        }
+        return list;
+    }
+
+    /// The length change since the last step (0 for an edge that did not exist then).
+    double change(const Edge& e) const
+    {
+        const auto it = mMemory.lengths.find(key(e.a, e.b));
+        return it == mMemory.lengths.end() ? 0.0 : e.length - it->second;
+    }
+    /// Changed at the last step, or already in this one.
+    bool frozen(const Edge& e) const
+    {
+        const std::uint64_t k = key(e.a, e.b);
+        return mMemory.frozen.count(k) > 0 || mFrozenNext.count(k) > 0;
+    }
+
+    bool splitPass()
+    {
+        std::vector<Edge> candidates;
+        for (const Edge& e : edges())
+            if (e.length > 2.0 * mE && !frozen(e) && change(e) >= -kRateTolerance * mE) candidates.push_back(e);
+        if (candidates.empty()) return false;
+        std::sort(candidates.begin(), candidates.end(), [this](const Edge& x, const Edge& y) {
+            return std::make_tuple(-x.length, key(x.a, x.b)) < std::make_tuple(-y.length, key(y.a, y.b));
+        });
+        std::unordered_map<std::uint64_t, std::uint32_t> triangleOf;  // by directed half-edge
+        for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                triangleOf[halfEdgeKey(mMesh.triangles[t][k], mMesh.triangles[t][(k + 1) % 3])] = t;
+        std::vector<std::uint8_t> touched(mMesh.triangles.size(), 0);
+        const std::size_t before = mCounts.splits;
+        for (const Edge& e : candidates) {
+            const auto ab = triangleOf.find(halfEdgeKey(e.a, e.b)), ba = triangleOf.find(halfEdgeKey(e.b, e.a));
+            if (ab == triangleOf.end() || ba == triangleOf.end()) continue;  // not a closed edge
+            const std::uint32_t t1 = ab->second, t2 = ba->second;
+            if (touched[t1] || touched[t2] || mInverted[t1] || mInverted[t2]) continue;
+            touched[t1] = touched[t2] = 1;
+            split(e.a, e.b, t1, t2);
+        }
+        return mCounts.splits > before;
+    }
+
+    /// The vertex of triangle t that is neither a nor b.
+    std::uint32_t opposite(std::uint32_t t, std::uint32_t a, std::uint32_t b) const
+    {
+        for (const std::uint32_t v : mMesh.triangles[t])
+            if (v != a && v != b) return v;
+        return a;
+    }
+
+    /// Splits edge a -> b of triangle t1 (b -> a of t2) at its midpoint m: (a, b, c) becomes
+    /// (a, m, c) and (m, b, c); (b, a, d) becomes (b, m, d) and (m, a, d).
+    void split(std::uint32_t a, std::uint32_t b, std::uint32_t t1, std::uint32_t t2)
+    {
+        const std::uint32_t c = opposite(t1, a, b), d = opposite(t2, a, b);
+        const auto m = std::uint32_t(mMesh.positions.size());
+        mMesh.positions.push_back(0.5 * (mMesh.positions[a] + mMesh.positions[b]));
+        mMesh.ids.push_back(mMesh.nextId++);
+        mMesh.triangles[t1] = {a, m, c};
+        mMesh.triangles[t2] = {b, m, d};
+        mMesh.triangles.push_back({m, b, c});
+        mMesh.triangles.push_back({m, a, d});
+        mInverted.resize(mMesh.triangles.size(), 0);
+        for (const std::uint32_t v : {a, b, c, d}) mFrozenNext.insert(key(m, v));
+        ++mCounts.splits;
+    }
+
+    bool collapsePass()
+    {
+        if (mMesh.positions.size() <= 4) return false;
+        mDeadTriangle.resize(mMesh.triangles.size(), 0);
+        mDeadVertex.resize(mMesh.positions.size(), 0);
+        std::vector<Edge> candidates;
+        for (const Edge& e : edges())
+            if (e.length < mE && !frozen(e) && change(e) <= kRateTolerance * mE) candidates.push_back(e);
+        if (candidates.empty()) return false;
+        std::sort(candidates.begin(), candidates.end(), [this](const Edge& x, const Edge& y) {
+            return std::make_tuple(x.length, key(x.a, x.b)) < std::make_tuple(y.length, key(y.a, y.b));
+        });
+        buildStar();
+        std::vector<std::uint8_t> touched(mMesh.positions.size(), 0);
+        const std::size_t before = mCounts.collapses;
+        for (const Edge& e : candidates) {
+            if (touched[e.a] || touched[e.b] || !collapse(e.a, e.b)) continue;
+            for (const std::uint32_t v : {e.a, e.b})
+                for (const std::uint32_t t : star(v))
+                    for (const std::uint32_t w : mMesh.triangles[t]) touched[w] = 1;
+        }
+        return mCounts.collapses > before;
+    }
+
+    /// Each vertex's triangles, alive ones, as offsets into one list.
+    void buildStar()
+    {
+        mStarStart.assign(mMesh.positions.size() + 1, 0);
+        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t)
+            if (!mDeadTriangle[t])
+                for (const std::uint32_t v : mMesh.triangles[t]) ++mStarStart[v + 1];
+        for (std::size_t v = 0; v < mMesh.positions.size(); ++v) mStarStart[v + 1] += mStarStart[v];
+        mStar.assign(mStarStart.back(), 0);
+        std::vector<std::uint32_t> fill(mStarStart.begin(), mStarStart.end() - 1);
+        for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
+            if (!mDeadTriangle[t])
+                for (const std::uint32_t v : mMesh.triangles[t]) mStar[fill[v]++] = t;
+    }
+    std::vector<std::uint32_t> star(std::uint32_t v) const
+    {
+        std::vector<std::uint32_t> list;
+        for (std::uint32_t i = mStarStart[v]; i < mStarStart[v + 1]; ++i)
+            if (!mDeadTriangle[mStar[i]]) list.push_back(mStar[i]);
+        return list;
+    }
+    std::vector<std::uint32_t> neighbours(std::uint32_t v) const
+    {
+        std::vector<std::uint32_t> list;
+        for (const std::uint32_t t : star(v))
+            for (const std::uint32_t w : mMesh.triangles[t])
+                if (w != v) list.push_back(w);
+        std::sort(list.begin(), list.end());
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+        return list;
+    }
+
+    /// Collapses edge (a, b) to its midpoint, keeping the older vertex (the smaller id); false
+    /// when a rule refuses it.
+    bool collapse(std::uint32_t a, std::uint32_t b)
+    {
+        const std::vector<std::uint32_t> na = neighbours(a), nb = neighbours(b);
+        std::vector<std::uint32_t> common;
+        std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+        if (common.size() != 2) return false;  // the link condition: the result stays a 2-manifold
+        const Vec3d m = 0.5 * (mMesh.positions[a] + mMesh.positions[b]);
+        for (const std::uint32_t v : {a, b}) {
+            for (const std::uint32_t w : v == a ? na : nb)
+                if (w != a && w != b && (mMesh.positions[w] - m).length() > 2.0 * mE) return false;
+            for (const std::uint32_t t : star(v))
+                if (turnsOver(t, a, b, m)) return false;
+        }
+        const std::uint32_t keep = mMesh.ids[a] < mMesh.ids[b] ? a : b, gone = keep == a ? b : a;
+        for (const std::uint32_t t : star(gone)) {
+            auto& tri = mMesh.triangles[t];
+            if (std::find(tri.begin(), tri.end(), keep) != tri.end()) mDeadTriangle[t] = 1;
+            else std::replace(tri.begin(), tri.end(), gone, keep);
+        }
+        mMesh.positions[keep] = m;
+        mDeadVertex[gone] = 1;
+        for (const std::uint32_t w : keep == a ? nb : na)
+            if (w != keep) mFrozenNext.insert(key(keep, w));
+        for (const std::uint32_t w : keep == a ? na : nb)
+            if (w != gone) mFrozenNext.insert(key(keep, w));
+        ++mCounts.collapses;
+        return true;
+    }
+
+    /// Whether triangle t, not on edge (a, b), faces the other way (or degenerates) once a and b
+    /// move to m.
+    bool turnsOver(std::uint32_t t, std::uint32_t a, std::uint32_t b, const Vec3d& m) const
+    {
+        const auto& tri = mMesh.triangles[t];
+        const bool hasA = std::find(tri.begin(), tri.end(), a) != tri.end();
+        const bool hasB = std::find(tri.begin(), tri.end(), b) != tri.end();
+        if (hasA && hasB) return false;  // removed by the collapse
+        Vec3d p[3], q[3];
+        for (int k = 0; k < 3; ++k) {
+            p[k] = mMesh.positions[tri[k]];
+            q[k] = tri[k] == a || tri[k] == b ? m : p[k];
+        }
+        const Vec3d before = (p[1] - p[0]).cross(p[2] - p[0]), after = (q[1] - q[0]).cross(q[2] - q[0]);
+        return after.dot(before) <= 0.1 * before.length() * after.length();  // keeps within ~84 degrees
+    }
+
+    /// Drops dead triangles and vertices, renumbering the rest in order.
+    void compact()
+    {
+        mDeadTriangle.resize(mMesh.triangles.size(), 0);
+        mDeadVertex.resize(mMesh.positions.size(), 0);
+        std::vector<std::uint32_t> index(mMesh.positions.size());
+        std::uint32_t next = 0;
+        for (std::size_t v = 0; v < index.size(); ++v) {
+            index[v] = next;
+            if (mDeadVertex[v]) continue;
+            mMesh.positions[next] = mMesh.positions[v];
+            mMesh.ids[next] = mMesh.ids[v];
+            ++next;
+        }
+        mMesh.positions.resize(next);
+        mMesh.ids.resize(next);
+        std::size_t kept = 0;
+        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t) {
+            if (mDeadTriangle[t]) continue;
+            auto tri = mMesh.triangles[t];
+            for (auto& v : tri) v = index[v];
+            mMesh.triangles[kept++] = tri;
+        }
+        mMesh.triangles.resize(kept);
+        mDeadTriangle.clear();
+        mDeadVertex.clear();
+    }
+
+    void remember()
+    {
+        mMemory.lengths.clear();
+        for (const Edge& e : edges()) mMemory.lengths[key(e.a, e.b)] = e.length;
+        mMemory.frozen = std::move(mFrozenNext);
+    }
+
+    TrackedMesh& mMesh;
+    EdgeMemory& mMemory;
+    std::vector<std::uint8_t> mInverted;
+    const double mE;
+    std::unordered_set<std::uint64_t> mFrozenNext;
+    std::vector<std::uint8_t> mDeadTriangle, mDeadVertex;
+    std::vector<std::uint32_t> mStarStart, mStar;
+    RemeshCounts mCounts;
+};
+
+}  // namespace
+
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge)
+{
+    return Remesher(mesh, memory, inverted, edge).run();
+}
+
+}  // namespace sculpt

@@ -1,0 +1,38 @@
+#pragma once
+/// @file edge_remesher.h
+/// @brief ALTERMESH (Nesme and Bouthors): the local changes that keep a tracked mesh's edges
+///        between e and 2e while the surface stretches and shrinks.
+///
+/// With e the target edge length: an edge longer than 2e is split at its midpoint unless it
+/// shrank by more than 0.1 e since the last step (it is already on its way back); an edge
+/// shorter than e is collapsed to its midpoint unless it grew by more than 0.1 e. (The paper's
+/// text swaps the two rules; its figure is the one followed here.) An edge a change made is
+/// frozen for the next step, so a split and a collapse never chase each other. A collapse is
+/// refused when it would make the mesh non-manifold (the two ends share neighbours other than
+/// the two opposite vertices), turn a triangle over, or make an edge longer than 2e; an edge of
+/// an inverted triangle is never split. Changes are made in passes over independent edges
+/// (no two touching the same triangle), the longest split and the shortest collapsed first.
+
+#include "core/tracking/tracked_mesh.h"
+
+#include <unordered_map>
+#include <unordered_set>
+
+namespace sculpt {
+
+/// What ALTERMESH remembers between steps, keyed by edgeKey of vertex ids.
+struct EdgeMemory {
+    std::unordered_map<std::uint64_t, double> lengths;  ///< each edge's length at the last step
+    std::unordered_set<std::uint64_t> frozen;           ///< edges changed at the last step
+};
+
+struct RemeshCounts {
+    std::size_t splits = 0, collapses = 0;
+};
+
+/// One ALTERMESH pass over `mesh` (closed, 2-manifold), e = `edge` world units. `inverted`
+/// marks triangles (#F) whose normal opposes grad phi. New vertices lie on edge midpoints, off
+/// the surface: project them after. Updates `memory` for the next step.
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge);
+
+}  // namespace sculpt

@@ -1,0 +1,113 @@
+#include "core/tracking/mesh_tracker.h"
+
+#include "core/mesh/incremental_mesher.h"
+#include "core/tracking/surface_projection.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <limits>
+
+namespace sculpt {
+
+namespace {
+
+using openvdb::Vec3d;
+
+Vec3d normalOf(const TrackedMesh& mesh, const std::array<std::uint32_t, 3>& t)
+{
+    const Vec3d& a = mesh.positions[t[0]];
+    return (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a);
+}
+
+}  // namespace
+
+MeshTracker::MeshTracker(const FieldImage& field, const TrackerOptions& options)
+    : mOptions(options), mEdge(options.edgeVoxels * field.voxelSize()), mMesh(TrackedMesh::of(meshLevelSet(field)))
+{
+    for (int i = 0; i < options.seedSteps; ++i) step(field);
+}
+
+TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
+{
+    if (displacement)
+        for (Vec3d& p : mMesh.positions) p += displacement(p);
+    project(field);
+    TrackingStep report;
+    const std::vector<std::uint8_t> inverted = invertedTriangles();
+    for (const std::uint8_t i : inverted) report.inverted += i;
+    unfold(inverted);
+    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, mEdge);
+    report.splits = counts.splits;
+    report.collapses = counts.collapses;
+    project(field);
+    const RelaxOptions relax{mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
+    const std::vector<Vec3d> dx = relaxationStep(mMesh.positions, mMesh.triangles, mNormals, mQuasiCritical, relax);
+    for (std::size_t v = 0; v < dx.size(); ++v) mMesh.positions[v] += dx[v];
+    project(field);
+    report.quasiCritical = flagged();
+    return report;
+}
+
+void MeshTracker::project(const FieldImage& field)
+{
+    mNormals.assign(mMesh.positions.size(), Vec3d(0.0));
+    mQuasiCritical.assign(mMesh.positions.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mMesh.positions.size(), 1024),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          const FieldProbe probe(field.grid());
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                              const Projection p = projectOntoSurface(probe, mMesh.positions[v]);
+                              mMesh.positions[v] = p.position;
+                              mQuasiCritical[v] = p.quasiCritical;
+                              if (p.gradient.length() > 1e-12) mNormals[v] = p.gradient.unit();
+                          }
+                      });
+}
+
+std::vector<std::uint8_t> MeshTracker::invertedTriangles() const
+{
+    std::vector<std::uint8_t> inverted(mMesh.triangles.size(), 0);
+    for (std::size_t t = 0; t < inverted.size(); ++t) {
+        const Vec3d n = normalOf(mMesh, mMesh.triangles[t]);
+        bool against = true;
+        for (const std::uint32_t v : mMesh.triangles[t]) against = against && n.dot(mNormals[v]) < 0.0;
+        inverted[t] = against;
+    }
+    return inverted;
+}
+
+void MeshTracker::unfold(const std::vector<std::uint8_t>& inverted)
+{
+    std::vector<std::uint8_t> moved(mMesh.positions.size(), 0);
+    for (std::size_t t = 0; t < inverted.size(); ++t) {
+        if (!inverted[t]) continue;
+        const auto& tri = mMesh.triangles[t];
+        // The vertex lowest over its opposite edge needs the smallest move to turn the triangle back.
+        int lowest = 0;
+        double lowestHeight = std::numeric_limits<double>::max();
+        Vec3d foot(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const Vec3d &p = mMesh.positions[tri[k]], &a = mMesh.positions[tri[(k + 1) % 3]];
+            const Vec3d u = (mMesh.positions[tri[(k + 2) % 3]] - a).unitSafe(), f = a + u * (p - a).dot(u);
+            if ((p - f).length() < lowestHeight) lowestHeight = (p - f).length(), lowest = k, foot = f;
+        }
+        const std::uint32_t v = tri[lowest];
+        if (moved[v]) continue;
+        moved[v] = 1;
+        mMesh.positions[v] = 2.0 * foot - mMesh.positions[v];  // mirrored across the edge: the normal turns
+    }
+}
+
+std::vector<QuasiCriticalPoint> MeshTracker::flagged() const
+{
+    std::vector<QuasiCriticalPoint> points;
+    std::vector<std::uint32_t> triangleOf(mMesh.positions.size(), 0);
+    for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
+        for (const std::uint32_t v : mMesh.triangles[t]) triangleOf[v] = t;
+    for (std::size_t v = 0; v < mQuasiCritical.size(); ++v)
+        if (mQuasiCritical[v]) points.push_back({mMesh.ids[v], triangleOf[v], mMesh.positions[v]});
+    return points;
+}
+
+}  // namespace sculpt

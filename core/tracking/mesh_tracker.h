@@ -1,0 +1,76 @@
+#pragma once
+/// @file mesh_tracker.h
+/// @brief A triangle mesh that moves with a changing level set instead of being re-meshed
+///        (dynamic triangulation: Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
+///
+/// Seeded from the welded marching-cubes mesh and relaxed on the field, it then follows the
+/// field step by step: each step moves the vertices by any known displacement, projects them
+/// back onto phi = 0 (surface_projection.h), unfolds inverted triangles, changes edges outside
+/// [e, 2e] locally (edge_remesher.h), slides the vertices along the surface towards equilateral
+/// triangles (corotated_triangles.h) and projects again. Vertices keep their ids while they
+/// exist; connectivity changes only where an edge leaves its range, so a sequence that only
+/// moves keeps its vertex count and triangles. Call step() after every evolution step, not only
+/// at frames: between two steps the surface moves less than the band, so projection finds it.
+
+#include "core/field/field_image.h"
+#include "core/tracking/corotated_triangles.h"
+#include "core/tracking/edge_remesher.h"
+
+#include <functional>
+
+namespace sculpt {
+
+struct TrackerOptions {
+    double edgeVoxels = 1.5;         ///< e, the target edge length, in voxels
+    double gain = 1.0;               ///< the triangles' stiffness times the step (E dt)
+    int conjugateGradientSteps = 6;  ///< per relaxation
+    int seedSteps = 40;              ///< steps on the seeding field before the mesh is first used
+};
+
+/// A point left where it was because projection found no surface to follow.
+struct QuasiCriticalPoint {
+    std::uint32_t vertexId = 0;
+    std::uint32_t triangle = 0;  ///< one of its triangles, at the step it was found
+    openvdb::Vec3d position{0.0};
+};
+
+/// What one step did.
+struct TrackingStep {
+    std::size_t splits = 0, collapses = 0;
+    std::size_t inverted = 0;  ///< triangles facing against grad phi when the step began
+    std::vector<QuasiCriticalPoint> quasiCritical;
+};
+
+class MeshTracker {
+public:
+    /// Seeds from `field`'s welded marching-cubes mesh, relaxed options.seedSteps steps on it.
+    explicit MeshTracker(const FieldImage& field, const TrackerOptions& options = {});
+
+    /// One step on `field` as it is now. `displacement`, where given, moves each vertex first
+    /// (a known velocity times the step: a rigid move, a grab). Deterministic: the same mesh
+    /// whatever the thread count.
+    TrackingStep step(const FieldImage& field,
+                      const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& displacement = {});
+
+    const TrackedMesh& mesh() const { return mMesh; }
+    /// e in world units.
+    double edgeLength() const { return mEdge; }
+
+private:
+    /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),
+    /// keeping grad phi's direction per vertex.
+    void project(const FieldImage& field);
+    std::vector<std::uint8_t> invertedTriangles() const;
+    /// Moves the vertex of each inverted triangle nearest its opposite edge across that edge.
+    void unfold(const std::vector<std::uint8_t>& inverted);
+    std::vector<QuasiCriticalPoint> flagged() const;
+
+    TrackerOptions mOptions;
+    double mEdge;
+    TrackedMesh mMesh;
+    EdgeMemory mMemory;
+    std::vector<openvdb::Vec3d> mNormals;
+    std::vector<std::uint8_t> mQuasiCritical;
+};
+
+}  // namespace sculpt

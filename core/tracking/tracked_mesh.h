@@ -1,0 +1,40 @@
+#pragma once
+/// @file tracked_mesh.h
+/// @brief The triangle mesh a tracker moves with the surface: positions, triangles and a stable
+///        id per vertex (what a point cache or a shape key is keyed by).
+///
+/// Vertex indices change when the mesh is compacted after a split or a collapse; ids never do:
+/// a vertex keeps its id for as long as it exists, and a new vertex takes an id never used.
+
+#include "core/mesh/triangle_mesh.h"
+
+#include <openvdb/Types.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace sculpt {
+
+struct TrackedMesh {
+    std::vector<openvdb::Vec3d> positions;                ///< #V world points
+    std::vector<std::array<std::uint32_t, 3>> triangles;  ///< #F, counter-clockwise from outside
+    std::vector<std::uint32_t> ids;                       ///< #V stable vertex ids
+    std::uint32_t nextId = 0;                             ///< the id the next new vertex takes
+
+    /// A mesh of `mesh`'s vertices and triangles, ids 0 .. #V - 1.
+    static TrackedMesh of(const TriangleMesh& mesh);
+    /// Single precision, for the writers and the display (normals left empty).
+    TriangleMesh triangleMesh() const;
+};
+
+/// An undirected edge between two vertex ids, as one key (smaller id in the high half).
+inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
+{
+    return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+}
+
+/// The smallest angle of a triangle, in degrees (0 for a degenerate one).
+double smallestAngleDegrees(const openvdb::Vec3d& a, const openvdb::Vec3d& b, const openvdb::Vec3d& c);
+
+}  // namespace sculpt
