@@ -11,7 +11,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
   mricron-data libcgal-demo
 )
 

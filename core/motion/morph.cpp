@@ -220,12 +220,13 @@ Progress part(const Progress& progress, double begin, double end)
 /// The last frame waits until the surface stops improving, or `steps` run out (`stop` says
 /// which); progress is the share of those steps, so Esc is heard throughout.
 void settle(LevelSetEvolution& evolution, const FieldImage& field, const MorphTarget& goal, int steps, MorphStop& stop,
-            const Progress& progress)
+            const Progress& progress, const std::function<void(const FieldImage&)>& onStep)
 {
     ConvergenceWatch watch(0.0);
     const int first = evolution.stepCount();
     while (evolution.stepCount() - first < steps && !watch.done(field, goal, evolution.stepCount())) {
         evolution.step();
+        if (onStep) onStep(field);
         report(progress, double(evolution.stepCount() - first) / steps);
     }
     stop = watch.stalled() ? MorphStop::Stalled : MorphStop::StepLimit;
@@ -234,8 +235,12 @@ void settle(LevelSetEvolution& evolution, const FieldImage& field, const MorphTa
 }  // namespace
 
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& o,
-                   const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress)
+                   const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress,
+                   const std::function<void(const FieldImage&)>& onStep)
 {
+    const auto stepped = [&](const FieldImage& f) {
+        if (onStep) onStep(f);
+    };
     if (o.frames < 2) throw InputError("a morph needs at least 2 frames (got " + std::to_string(o.frames) + ")");
     if (!(o.toleranceVoxels > 0.0)) throw InputError("morph tolerance must be positive");
     MorphSummary summary;
@@ -261,6 +266,7 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
         field = FieldImage(state.grid->deepCopy(), source.units());
         evolution.emplace(field, terms);
         startTime = state.time;
+        stepped(field);
     };
 
     auto emit = [&](int index) {
@@ -269,6 +275,7 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
             removeSpecks(field);
         }
         if (evolution->terms().volume) evolution->settleVolume();  // on the straight line
+        if (index > 0) stepped(field);
         const double volume = meshVolumeArea(field).volume;
         summary.frameVolumes.push_back(volume);
         onFrame(MorphFrame{index, now(), volume, field});
@@ -277,7 +284,8 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     for (int frame = 1; frame < o.frames; ++frame) {
         const double frameTime = duration * frame / (o.frames - 1);
         const Checkpoints::State* state = first.states.latestAtOrBefore(frameTime);
-        if (state && state->time > now()) resumeFrom(*state);
+        // A tracked surface (onStep) must see every step: it cannot follow a jump to a kept state.
+        if (state && state->time > now() && !onStep) resumeFrom(*state);
         while (now() < frameTime && secondPassSteps() < o.maxSteps) {
             const double dt = std::min(frameTime - now(), evolution->stableTimeStep());
             // The line ends on the target's volume at T; from there the shape converges onto the
@@ -289,13 +297,15 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
                 volume.reset();
             }
             evolution->step(dt);
+            stepped(field);
             report(progress, 0.5 + 0.45 * now() / std::max(duration, 1e-30));
         }
         if (frame + 1 == o.frames) {
             // The last approach matches the band's values: thin parts, which only the values
             // near the surface hold, then end on the target's too.
             evolution->terms().target->matchValues = true;
-            settle(*evolution, field, goal, o.maxSteps - secondPassSteps(), summary.stop, part(progress, 0.95, 1.0));
+            settle(*evolution, field, goal, o.maxSteps - secondPassSteps(), summary.stop, part(progress, 0.95, 1.0),
+                   onStep);
         }
         emit(frame);
     }

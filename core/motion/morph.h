@@ -61,10 +61,16 @@ struct MorphSummary {
 /// volume control the second pass starts each frame from the first pass's latest kept state
 /// before it. Cost: (time / step) x band steps, plus per frame up to the interval between kept
 /// states (twice the steps with keepVolume); a coarse distance field over the source.
+/// `onStep`, if given, sees the field after every change of the second pass between two frames
+/// (each evolution step, each frame's redistancing): what a mesh tracking the surface follows
+/// (core/tracking/mesh_tracker.h). The second pass then steps all the way instead of resuming
+/// from the first pass's kept states (a tracked surface cannot follow such a jump): it takes as
+/// long as the first.
 /// @throws InputError if the shapes do not overlap and align is off, or options are invalid;
 ///         Cancelled if progress says stop.
 MorphSummary morph(const FieldImage& source, const FieldImage& target, const MorphOptions& options,
-                   const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress = {});
+                   const std::function<void(const MorphFrame&)>& onFrame, const Progress& progress = {},
+                   const std::function<void(const FieldImage&)>& onStep = {});
 
 /// Converged: the two-sided distance is within `toleranceWorld` where the target is resolvable,
 /// and within a voxel more at its thin parts and sharp edges (so a thin part the surface never

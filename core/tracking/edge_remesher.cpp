@@ -21,8 +21,9 @@ std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::u
 
 class Remesher {
 public:
-    Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge)
-        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(edge)
+    Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
+             double shortest)
+        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(edge), mShortest(shortest > 0.0 ? shortest : edge)
     {
         mInverted.resize(mesh.triangles.size(), 0);
     }
@@ -126,7 +127,7 @@ private:
         mDeadVertex.resize(mMesh.positions.size(), 0);
         std::vector<Edge> candidates;
         for (const Edge& e : edges())
-            if (e.length < mE && !frozen(e) && change(e) <= kRateTolerance * mE) candidates.push_back(e);
+            if (e.length < mShortest && !frozen(e) && change(e) <= kRateTolerance * mE) candidates.push_back(e);
         if (candidates.empty()) return false;
         std::sort(candidates.begin(), candidates.end(), [this](const Edge& x, const Edge& y) {
             return std::make_tuple(x.length, key(x.a, x.b)) < std::make_tuple(y.length, key(y.a, y.b));
@@ -261,7 +262,7 @@ private:
     TrackedMesh& mMesh;
     EdgeMemory& mMemory;
     std::vector<std::uint8_t> mInverted;
-    const double mE;
+    const double mE, mShortest;
     std::unordered_set<std::uint64_t> mFrozenNext;
     std::vector<std::uint8_t> mDeadTriangle, mDeadVertex;
     std::vector<std::uint32_t> mStarStart, mStar;
@@ -270,9 +271,10 @@ private:
 
 }  // namespace
 
-RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge)
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
+                       double shortest)
 {
-    return Remesher(mesh, memory, inverted, edge).run();
+    return Remesher(mesh, memory, inverted, edge, shortest).run();
 }
 
 }  // namespace sculpt

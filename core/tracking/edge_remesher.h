@@ -31,8 +31,11 @@ struct RemeshCounts {
 };
 
 /// One ALTERMESH pass over `mesh` (closed, 2-manifold), e = `edge` world units. `inverted`
-/// marks triangles (#F) whose normal opposes grad phi. New vertices lie on edge midpoints, off
-/// the surface: project them after. Updates `memory` for the next step.
-RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge);
+/// marks triangles (#F) whose normal opposes grad phi. Edges under `shortest` (e unless given)
+/// are collapsed: seeding asks more, so the mesh starts with room to shrink as well as to
+/// stretch. New vertices lie on edge midpoints, off the surface: project them after. Updates
+/// `memory` for the next step.
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
+                       double shortest = 0.0);
 
 }  // namespace sculpt

@@ -23,12 +23,33 @@ Vec3d normalOf(const TrackedMesh& mesh, const std::array<std::uint32_t, 3>& t)
 }  // namespace
 
 MeshTracker::MeshTracker(const FieldImage& field, const TrackerOptions& options)
-    : mOptions(options), mEdge(options.edgeVoxels * field.voxelSize()), mMesh(TrackedMesh::of(meshLevelSet(field)))
+    : mOptions(options), mEdge(options.edgeVoxels * field.voxelSize())
 {
-    for (int i = 0; i < options.seedSteps; ++i) step(field);
+    seed(field, meshLevelSet(field));
+}
+
+void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
+{
+    mMesh = TrackedMesh::of(mc, mMesh.nextId);
+    mMemory = {};
+    for (int i = 0; i < mOptions.seedSteps; ++i) advance(field, {}, mOptions.seedShortestEdges * mEdge);
 }
 
 TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
+{
+    TrackingStep report = advance(field, displacement, mEdge);
+    const TriangleMesh mc = meshLevelSet(field);
+    const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
+    if (truth != surfaceTopology(mMesh.triangles, mMesh.positions.size()) || !report.quasiCritical.empty()) {
+        seed(field, mc);
+        report.reseeded = true;
+        report.quasiCritical = flagged();  // the new mesh's
+    }
+    return report;
+}
+
+TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement,
+                                  double shortestEdge)
 {
     if (displacement)
         for (Vec3d& p : mMesh.positions) p += displacement(p);
@@ -37,7 +58,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
     const std::vector<std::uint8_t> inverted = invertedTriangles();
     for (const std::uint8_t i : inverted) report.inverted += i;
     unfold(inverted);
-    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, mEdge);
+    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, mEdge, shortestEdge);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
     project(field);

@@ -4,7 +4,7 @@
 ///        (dynamic triangulation: Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
 ///
 /// Seeded from the welded marching-cubes mesh and relaxed on the field, it then follows the
-/// field step by step: each step moves the vertices by any known displacement, projects them
+/// field step by step (topology changes re-seed it: a new segment): each step moves the vertices by any known displacement, projects them
 /// back onto phi = 0 (surface_projection.h), unfolds inverted triangles, changes edges outside
 /// [e, 2e] locally (edge_remesher.h), slides the vertices along the surface towards equilateral
 /// triangles (corotated_triangles.h) and projects again. Vertices keep their ids while they
@@ -25,6 +25,9 @@ struct TrackerOptions {
     double gain = 1.0;               ///< the triangles' stiffness times the step (E dt)
     int conjugateGradientSteps = 6;  ///< per relaxation
     int seedSteps = 40;              ///< steps on the seeding field before the mesh is first used
+    /// Seeding collapses edges under this many e (later steps: under e), so the mesh starts in the
+    /// middle of [e, 2e], with room to shrink as well as to stretch.
+    double seedShortestEdges = 1.41;
 };
 
 /// A point left where it was because projection found no surface to follow.
@@ -39,6 +42,9 @@ struct TrackingStep {
     std::size_t splits = 0, collapses = 0;
     std::size_t inverted = 0;  ///< triangles facing against grad phi when the step began
     std::vector<QuasiCriticalPoint> quasiCritical;
+    /// The surface's topology changed, or the mesh lost it (quasi-critical points): the mesh was
+    /// seeded again from the marching-cubes mesh (new vertex ids), a new segment begins.
+    bool reseeded = false;
 };
 
 class MeshTracker {
@@ -47,8 +53,11 @@ public:
     explicit MeshTracker(const FieldImage& field, const TrackerOptions& options = {});
 
     /// One step on `field` as it is now. `displacement`, where given, moves each vertex first
-    /// (a known velocity times the step: a rigid move, a grab). Deterministic: the same mesh
-    /// whatever the thread count.
+    /// (a known velocity times the step: a rigid move, a grab). Then the marching-cubes mesh's
+    /// Euler characteristic and shell count, the ground truth, are compared with the tracked
+    /// mesh's: when they differ, or points were left quasi-critical, the mesh is seeded again
+    /// (a topology event's first stage). Deterministic: the same mesh whatever the thread count.
+    /// Cost: the projections and the relaxation are O(vertices); the check meshes the field.
     TrackingStep step(const FieldImage& field,
                       const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& displacement = {});
 
@@ -57,6 +66,11 @@ public:
     double edgeLength() const { return mEdge; }
 
 private:
+    /// Seeds from the marching-cubes mesh `mc` of `field` (ids after every id used) and relaxes it.
+    void seed(const FieldImage& field, const TriangleMesh& mc);
+    /// The step without the topology check.
+    TrackingStep advance(const FieldImage& field, const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& move,
+                         double shortestEdge);
     /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),
     /// keeping grad phi's direction per vertex.
     void project(const FieldImage& field);

@@ -1,19 +1,21 @@
 #include "core/tracking/tracked_mesh.h"
 
+#include "core/base/union_find.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace sculpt {
 
-TrackedMesh TrackedMesh::of(const TriangleMesh& mesh)
+TrackedMesh TrackedMesh::of(const TriangleMesh& mesh, std::uint32_t firstId)
 {
     TrackedMesh tracked;
     tracked.positions.reserve(mesh.positions.size());
     for (const auto& p : mesh.positions) tracked.positions.emplace_back(p[0], p[1], p[2]);
     tracked.triangles.assign(mesh.triangles.begin(), mesh.triangles.end());
     tracked.ids.resize(mesh.positions.size());
-    for (std::uint32_t i = 0; i < tracked.ids.size(); ++i) tracked.ids[i] = i;
-    tracked.nextId = std::uint32_t(tracked.ids.size());
+    for (std::uint32_t i = 0; i < tracked.ids.size(); ++i) tracked.ids[i] = firstId + i;
+    tracked.nextId = firstId + std::uint32_t(tracked.ids.size());
     return tracked;
 }
 
@@ -24,6 +26,39 @@ TriangleMesh TrackedMesh::triangleMesh() const
     for (const auto& p : positions) mesh.positions.push_back({float(p.x()), float(p.y()), float(p.z())});
     mesh.triangles.assign(triangles.begin(), triangles.end());
     return mesh;
+}
+
+namespace {
+
+template <typename Triangles>
+SurfaceTopology topologyOf(const Triangles& triangles, std::size_t vertices)
+{
+    UnionFind shells(vertices);
+    std::vector<std::uint8_t> used(vertices, 0);
+    for (const auto& t : triangles) {
+        shells.join(t[0], t[1]);
+        shells.join(t[1], t[2]);
+        for (const std::uint32_t v : t) used[v] = 1;
+    }
+    std::size_t count = 0, usedCount = 0;
+    for (std::uint32_t v = 0; v < vertices; ++v) {
+        usedCount += used[v];
+        count += used[v] && shells.find(v) == v;
+    }
+    const auto f = (long long)triangles.size();
+    return {(long long)usedCount - 3 * f / 2 + f, count};
+}
+
+}  // namespace
+
+SurfaceTopology surfaceTopology(const MeshArray<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices)
+{
+    return topologyOf(triangles, vertices);
+}
+
+SurfaceTopology surfaceTopology(const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices)
+{
+    return topologyOf(triangles, vertices);
 }
 
 double smallestAngleDegrees(const openvdb::Vec3d& a, const openvdb::Vec3d& b, const openvdb::Vec3d& c)

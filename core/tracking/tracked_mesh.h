@@ -22,8 +22,8 @@ struct TrackedMesh {
     std::vector<std::uint32_t> ids;                       ///< #V stable vertex ids
     std::uint32_t nextId = 0;                             ///< the id the next new vertex takes
 
-    /// A mesh of `mesh`'s vertices and triangles, ids 0 .. #V - 1.
-    static TrackedMesh of(const TriangleMesh& mesh);
+    /// A mesh of `mesh`'s vertices and triangles, ids firstId .. firstId + #V - 1.
+    static TrackedMesh of(const TriangleMesh& mesh, std::uint32_t firstId = 0);
     /// Single precision, for the writers and the display (normals left empty).
     TriangleMesh triangleMesh() const;
 };
@@ -33,6 +33,18 @@ inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
 {
     return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
 }
+
+/// What a topology event changes: the Euler characteristic and the number of shells.
+struct SurfaceTopology {
+    long long euler = 0;
+    std::size_t shells = 0;
+    bool operator==(const SurfaceTopology& o) const { return euler == o.euler && shells == o.shells; }
+    bool operator!=(const SurfaceTopology& o) const { return !(*this == o); }
+};
+
+/// The topology of a closed mesh of `vertices` vertices (V - 3F/2 + F; shells by shared vertices).
+SurfaceTopology surfaceTopology(const MeshArray<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices);
+SurfaceTopology surfaceTopology(const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices);
 
 /// The smallest angle of a triangle, in degrees (0 for a degenerate one).
 double smallestAngleDegrees(const openvdb::Vec3d& a, const openvdb::Vec3d& b, const openvdb::Vec3d& c);

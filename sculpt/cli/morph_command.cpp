@@ -4,11 +4,13 @@
 #include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph_verdict.h"
+#include "core/tracking/mesh_tracker.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/frame_files.h"
 #include "sculpt/session/shape_import.h"
+#include "sculpt/session/tracked_export.h"
 
 #include <CLI/CLI.hpp>
 
@@ -17,6 +19,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace sculpt::cli {
 
@@ -25,7 +28,7 @@ namespace fs = std::filesystem;
 namespace {
 
 struct MorphCommandOptions {
-    std::string source, target, directory, mesh;
+    std::string source, target, directory, mesh, tracked;
     MorphOptions morph;
 };
 
@@ -36,6 +39,34 @@ std::string verdict(const MorphSummary& s, double voxelSize)
                          : s.stop == MorphStop::StepLimit ? " (--max-steps)"
                                                           : "";
     return morphVerdict(s, voxelSize) + option;
+}
+
+/// What the tracked mesh went through over the whole morph.
+struct TrackingTally {
+    std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0, reseeds = 0;
+    void add(const TrackingStep& s)
+    {
+        ++steps;
+        splits += s.splits;
+        collapses += s.collapses;
+        inverted += s.inverted;
+        quasiCritical += s.quasiCritical.size();
+        reseeds += s.reseeded;
+    }
+};
+
+void printTracking(const TrackedSequence& sequence, const TrackingTally& t, const std::string& directory)
+{
+    std::printf("tracked mesh: %zu segments of constant connectivity in %s (segment_0000.ply/.pc2/.glb ...); over %zu "
+                "steps %zu splits, %zu collapses, %zu inverted triangles unfolded, %zu quasi-critical points, %zu "
+                "re-seeds (topology changes)\n",
+                sequence.segments().size(), directory.c_str(), t.steps, t.splits, t.collapses, t.inverted,
+                t.quasiCritical, t.reseeds);
+    for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
+        const TrackedSegment& segment = sequence.segments()[s];
+        std::printf("  segment %04zu: frames %d to %zu, %zu vertices, %zu triangles\n", s, segment.firstFrame,
+                    segment.firstFrame + segment.positions.size() - 1, segment.ids.size(), segment.triangles.size());
+    }
 }
 
 void runMorph(const MorphCommandOptions& o)
@@ -50,8 +81,12 @@ void runMorph(const MorphCommandOptions& o)
     const FieldImage& target = sourceIsDocument ? second : first;
     for (const std::string& warning : warnings) std::cerr << "sculpt: warning: " << warning << "\n";
     prepareDirectory(o.directory);
+    if (!o.tracked.empty()) prepareDirectory(o.tracked);
 
     MorphSummary summary;
+    std::optional<MeshTracker> tracker;  // seeded on the first frame, stepped with the motion
+    TrackedSequence sequence;
+    TrackingTally tally;
     {
         ProgressBar bar("morphing");
         summary = morph(
@@ -59,8 +94,18 @@ void runMorph(const MorphCommandOptions& o)
             [&](const MorphFrame& frame) {
                 writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
                 if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
+                if (o.tracked.empty()) return;
+                if (!tracker) tracker.emplace(frame.field);
+                sequence.add(tracker->mesh());
             },
-            bar.callback());
+            bar.callback(),
+            [&](const FieldImage& field) {
+                if (tracker) tally.add(tracker->step(field));
+            });
+    }
+    if (!o.tracked.empty()) {
+        writeTrackedSequence(sequence, o.tracked);
+        printTracking(sequence, tally, o.tracked);
     }
     std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames, o.directory.c_str(),
                 o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
@@ -100,6 +145,10 @@ void addMorphCommand(CLI::App& app)
     cmd->add_option("-o,--output", options->directory, "directory for the frames (created if missing)")->required();
     cmd->add_option("--mesh", options->mesh, "also write a mesh per frame: ply, obj or stl")
         ->check(CLI::IsMember({"ply", "obj", "stl"}));
+    cmd->add_option("--tracked", options->tracked,
+                    "also write a mesh that moves with the surface (vertices and triangles kept while they can\n"
+                    "be) into this directory: per segment of constant connectivity a rest mesh (.ply), a point\n"
+                    "cache (.pc2, Blender's Mesh Cache) and a glTF with a shape key per frame (.glb)");
     cmd->add_flag("--keep-volume", options->morph.keepVolume,
                   "keep each frame's volume on the straight line between the two shapes' volumes");
     cmd->add_flag("--align", options->morph.align,

@@ -118,7 +118,8 @@ void measure(const std::string& model, const std::string& document, const std::s
     const auto r = dir / (model + ".jsonl");
     std::filesystem::remove(r);
     UiEvents sculpting;
-    sculpting.move(760, 400).wait(3.0).report(r, "still").press();
+    // "opened" closes the frames of the opening (the preview, the fill-in): "still" is 3 s of rest.
+    sculpting.move(760, 400).report(r, "opened").wait(3.0).report(r, "still").press();
     for (int i = 1; i <= 600; ++i) {  // 10 s at 60 Hz, circles of 120 px
         const double a = 2.0 * M_PI * i / 150.0;
         sculpting.wait(1.0 / 60.0 - 0.02).move(640 + 120 * std::cos(a), 400 + 120 * std::sin(a));

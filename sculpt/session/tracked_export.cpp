@@ -1,0 +1,53 @@
+#include "sculpt/session/tracked_export.h"
+
+#include "core/base/atomic_file.h"
+#include "core/io/gltf_morph_file.h"
+#include "core/io/mesh_file.h"
+#include "core/io/point_cache_file.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace sculpt {
+
+namespace fs = std::filesystem;
+
+fs::path segmentPath(const fs::path& directory, std::size_t index, const std::string& extension)
+{
+    char name[32];
+    std::snprintf(name, sizeof(name), "segment_%04zu.", index);
+    return directory / (name + extension);
+}
+
+std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, const fs::path& directory, double fps)
+{
+    std::vector<fs::path> written;
+    nlohmann::json list = nlohmann::json::array();
+    for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
+        const TrackedSegment& segment = sequence.segments()[s];
+        TriangleMesh rest;
+        rest.positions.assign(segment.positions.front().begin(), segment.positions.front().end());
+        rest.triangles.assign(segment.triangles.begin(), segment.triangles.end());
+        writeMesh(rest, segmentPath(directory, s, "ply"));
+        writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, segmentPath(directory, s, "pc2"));
+        MorphSequenceMesh animated{"segment_" + std::to_string(s), rest.triangles, segment.positions, fps};
+        writeGltfMorph(animated, segmentPath(directory, s, "glb"));
+        for (const char* extension : {"ply", "pc2", "glb"}) written.push_back(segmentPath(directory, s, extension));
+        list.push_back({{"segment", s},
+                        {"first_frame", segment.firstFrame},
+                        {"frames", segment.positions.size()},
+                        {"vertices", segment.ids.size()},
+                        {"triangles", segment.triangles.size()}});
+    }
+    const nlohmann::json summary{{"format", "sculpt-tracked-sequence"},
+                                 {"version", 1},
+                                 {"frames", sequence.frameCount()},
+                                 {"frames_per_second", fps},
+                                 {"segments", list}};
+    written.push_back(directory / "segments.json");
+    writeFileAtomically(written.back(), summary.dump(2) + "\n");
+    return written;
+}
+
+}  // namespace sculpt
