@@ -41,6 +41,10 @@ std::string verdict(const MorphSummary& s, double voxelSize)
     return morphVerdict(s, voxelSize) + option;
 }
 
+/// Sees the field after each step; none unless tracking (a morph watched by steps resumes from
+/// no kept state, so its frames take longer).
+using MorphStepWatch = std::function<void(const FieldImage&)>;
+
 /// What the tracked mesh went through over the whole morph.
 struct TrackingTally {
     std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0, reseeds = 0;
@@ -99,9 +103,7 @@ void runMorph(const MorphCommandOptions& o)
                 sequence.add(tracker->mesh());
             },
             bar.callback(),
-            [&](const FieldImage& field) {
-                if (tracker) tally.add(tracker->step(field));
-            });
+            o.tracked.empty() ? MorphStepWatch() : [&](const FieldImage& field) { tally.add(tracker->step(field)); });
     }
     if (!o.tracked.empty()) {
         writeTrackedSequence(sequence, o.tracked);

@@ -33,6 +33,15 @@ MorphSummary run(const FieldImage& source, const FieldImage& target, MorphOption
     });
 }
 
+/// `frames` frames of a morph whose source is first moved onto the target's centroid.
+MorphSummary runAligned(const FieldImage& source, const FieldImage& target, int frames, Recorded& rec)
+{
+    MorphOptions options;
+    options.frames = frames;
+    options.align = true;
+    return run(source, target, options, rec);
+}
+
 void expectConverged(const MorphSummary& s, const FieldImage& target)
 {
     EXPECT_TRUE(s.converged);
@@ -178,11 +187,8 @@ TEST(Morph, RealMeshesOfDifferentGenusConvergeWhereverPlaced)
     cowGrid->transform().postTranslate(openvdb::Vec3d(1.0, 0.0, 0.0));
     const FieldImage cow(cowGrid);
 
-    MorphOptions options;
-    options.frames = 3;
-    options.align = true;
     Recorded rec;
-    const MorphSummary s = run(cow, eight, options, rec);
+    const MorphSummary s = runAligned(cow, eight, 3, rec);
     expectConverged(s, eight);
     EXPECT_GT(s.resolvedFraction, 0.99);  // the measure excludes almost nothing here
     EXPECT_NEAR(rec.volumes.back(), meshVolumeArea(eight).volume, 0.01 * meshVolumeArea(eight).volume);
@@ -202,11 +208,8 @@ TEST(Morph, ThinPartsOfARealTargetEndWithinAVoxelOfIt)
     const FieldImage torus = meshToField(torusMesh, voxelSizeFor(torusMesh));
     const FieldImage dino = meshToField(dinoMesh, voxelSizeFor(dinoMesh));
 
-    MorphOptions options;
-    options.frames = 2;
-    options.align = true;
     Recorded rec;
-    const MorphSummary s = run(torus, dino, options, rec);
+    const MorphSummary s = runAligned(torus, dino, 2, rec);
     expectConverged(s, dino);
     EXPECT_LT(s.resolvedFraction, 0.99);  // the target has thin parts
     EXPECT_LT(s.worstDistanceWorld, dino.voxelSize());
