@@ -17,4 +17,13 @@ FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values)
     return FieldImage(grid);
 }
 
+FieldImage translated(const FieldImage& field, const openvdb::Vec3d& by)
+{
+    openvdb::FloatGrid::Ptr grid = field.grid().deepCopy();
+    openvdb::math::Transform::Ptr xform = grid->transform().copy();
+    xform->postTranslate(by);
+    grid->setTransform(xform);
+    return FieldImage(grid);
+}
+
 }  // namespace sculpt::test

@@ -1,6 +1,7 @@
 #pragma once
 /// @file grid_builders.h
-/// @brief Hand-made level sets for tests: a few explicit voxel values in an outside field.
+/// @brief Hand-made level sets for tests: a few explicit voxel values in an outside field, a
+///        field moved.
 
 #include "core/field/field_image.h"
 
@@ -12,5 +13,8 @@ namespace sculpt::test {
 /// every other voxel in the box around them holds +1: explicit corners surrounded by outside, so
 /// the surface closes in the neighbouring cells.
 FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values);
+
+/// `field` moved by `by` (world units): the same voxels on a translated lattice.
+FieldImage translated(const FieldImage& field, const openvdb::Vec3d& by);
 
 }  // namespace sculpt::test

@@ -7,6 +7,7 @@
 #include "core/primitives/analytic_shapes.h"
 #include "core/tracking/mesh_tracker.h"
 #include "core/tracking/surface_projection.h"
+#include "tests/support/grid_builders.h"
 #include "tests/support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -169,16 +170,6 @@ TrackedMorph trackMorph(const FieldImage& source, const FieldImage& target, int 
     return run;
 }
 
-/// `field` moved by `by` (world units, whole voxels): the same voxels on a translated lattice.
-FieldImage translated(const FieldImage& field, const Vec3d& by)
-{
-    openvdb::FloatGrid::Ptr grid = field.grid().deepCopy();
-    openvdb::math::Transform::Ptr xform = grid->transform().copy();
-    xform->postTranslate(by);
-    grid->setTransform(xform);
-    return FieldImage(grid);
-}
-
 // A sphere moved by 3 voxels in 12 steps, the tracker told the displacement (a rigid move): no
 // edge changes length, so vertices and triangles stay the same and move with the sphere.
 TEST(MeshTracker, FollowsARigidMoveWithConstantConnectivity)
@@ -190,7 +181,7 @@ TEST(MeshTracker, FollowsARigidMoveWithConstantConnectivity)
     const Vec3d step(0.25 * h, 0.0, 0.0);
     double worstPhi = 0.0;
     for (int k = 1; k <= 12; ++k) {
-        const FieldImage moved = translated(ball, step * k);
+        const FieldImage moved = test::translated(ball, step * k);
         const TrackingStep s = tracker.step(moved, [&](const Vec3d&) { return step; });
         EXPECT_EQ(s.splits + s.collapses, 0u) << "step " << k;
         EXPECT_TRUE(s.quasiCritical.empty());
@@ -205,7 +196,7 @@ TEST(MeshTracker, FollowsARigidMoveWithConstantConnectivity)
     for (std::size_t v = 0; v < first.positions.size(); ++v)
         worstOffset = std::max(worstOffset, (last.positions[v] - (first.positions[v] + step * 12)).length());
     EXPECT_LT(worstOffset, 0.1 * h);  // the relaxation's own last settling
-    expectWellShaped(last, translated(ball, step * 12), tracker.edgeLength());
+    expectWellShaped(last, test::translated(ball, step * 12), tracker.edgeLength());
 }
 
 // A sphere morphed into a box of the same area: the corners stretch and the faces shrink by up

@@ -12,6 +12,7 @@
 #include "core/primitives/analytic_shapes.h"
 #include "core/tracking/mesh_tracker.h"
 #include "sculpt/session/tracked_export.h"
+#include "tests/support/grid_builders.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
 
@@ -26,16 +27,6 @@
 namespace sculpt {
 namespace {
 
-/// `field` moved by `by` (world units).
-FieldImage translated(const FieldImage& field, const openvdb::Vec3d& by)
-{
-    openvdb::FloatGrid::Ptr grid = field.grid().deepCopy();
-    openvdb::math::Transform::Ptr xform = grid->transform().copy();
-    xform->postTranslate(by);
-    grid->setTransform(xform);
-    return FieldImage(grid);
-}
-
 /// A sphere moved rigidly by a voxel a frame, tracked with the displacement known: one segment.
 TrackedSequence trackedRigidMove(int frames)
 {
@@ -45,7 +36,7 @@ TrackedSequence trackedRigidMove(int frames)
     sequence.add(tracker.mesh());
     const openvdb::Vec3d step(0.125, 0.0, 0.0);  // a quarter voxel
     for (int k = 1; k <= 4 * (frames - 1); ++k) {
-        tracker.step(translated(ball, step * k), [&](const openvdb::Vec3d&) { return step; });
+        tracker.step(test::translated(ball, step * k), [&](const openvdb::Vec3d&) { return step; });
         if (k % 4 == 0) sequence.add(tracker.mesh());
     }
     return sequence;
