@@ -1,6 +1,7 @@
 #include "core/tracking/edge_remesher.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <tuple>
 
 namespace sculpt {
@@ -21,9 +22,10 @@ std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::u
 
 class Remesher {
 public:
-    Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
-             double shortest)
-        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(edge), mShortest(shortest > 0.0 ? shortest : edge)
+    Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
+             const RemeshLimits& limits)
+        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(limits.edge),
+          mShortest(limits.shortest > 0.0 ? limits.shortest : limits.edge), mFlips(limits.flips)
     {
         mInverted.resize(mesh.triangles.size(), 0);
     }
@@ -33,6 +35,7 @@ public:
         for (int pass = 0; pass < kPasses && splitPass(); ++pass) {}
         for (int pass = 0; pass < kPasses && collapsePass(); ++pass) {}
         compact();
+        if (mFlips) flipPass();
         remember();
         return mCounts;
     }
@@ -78,10 +81,7 @@ private:
         std::sort(candidates.begin(), candidates.end(), [this](const Edge& x, const Edge& y) {
             return std::make_tuple(-x.length, key(x.a, x.b)) < std::make_tuple(-y.length, key(y.a, y.b));
         });
-        std::unordered_map<std::uint64_t, std::uint32_t> triangleOf;  // by directed half-edge
-        for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
-            for (int k = 0; k < 3; ++k)
-                triangleOf[halfEdgeKey(mMesh.triangles[t][k], mMesh.triangles[t][(k + 1) % 3])] = t;
+        const HalfEdges triangleOf = halfEdges();
         std::vector<std::uint8_t> touched(mMesh.triangles.size(), 0);
         const std::size_t before = mCounts.splits;
         for (const Edge& e : candidates) {
@@ -93,6 +93,62 @@ private:
             split(e.a, e.b, t1, t2);
         }
         return mCounts.splits > before;
+    }
+
+    using HalfEdges = std::unordered_map<std::uint64_t, std::uint32_t>;  // directed half-edge -> triangle
+
+    HalfEdges halfEdges() const
+    {
+        HalfEdges triangleOf;
+        for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
+            for (int k = 0; k < 3; ++k)
+                triangleOf[halfEdgeKey(mMesh.triangles[t][k], mMesh.triangles[t][(k + 1) % 3])] = t;
+        return triangleOf;
+    }
+
+    /// Flips each edge (a, b) whose flip to (c, d) brings the valences of a, b, c and d nearer 6,
+    /// when (c, d) is not an edge yet, both new triangles face as the old ones did and (c, d)
+    /// stays under 2e. Runs on a compacted mesh.
+    void flipPass()
+    {
+        HalfEdges triangleOf = halfEdges();
+        std::vector<int> valence(mMesh.positions.size(), 0);
+        for (const auto& tri : mMesh.triangles)
+            for (const std::uint32_t v : tri) ++valence[v];
+        std::vector<std::uint8_t> touched(mMesh.triangles.size(), 0);
+        for (const Edge& e : edges()) {
+            const auto ab = triangleOf.find(halfEdgeKey(e.a, e.b)), ba = triangleOf.find(halfEdgeKey(e.b, e.a));
+            if (ab == triangleOf.end() || ba == triangleOf.end()) continue;
+            const std::uint32_t t1 = ab->second, t2 = ba->second, a = e.a, b = e.b;
+            if (touched[t1] || touched[t2]) continue;
+            const std::uint32_t c = opposite(t1, a, b), d = opposite(t2, a, b);
+            if (c == d || triangleOf.count(halfEdgeKey(c, d)) || triangleOf.count(halfEdgeKey(d, c))) continue;
+            const auto off = [&](std::uint32_t v, int change) { return std::abs(valence[v] + change - 6); };
+            if (off(a, -1) + off(b, -1) + off(c, 1) + off(d, 1) >= off(a, 0) + off(b, 0) + off(c, 0) + off(d, 0))
+                continue;
+            if (length(c, d) > 2.0 * mE || !keepsFacing(a, b, c, d)) continue;
+            // (a, b, c) and (b, a, d) become (a, d, c) and (b, c, d).
+            mMesh.triangles[t1] = {a, d, c};
+            mMesh.triangles[t2] = {b, c, d};
+            triangleOf.erase(halfEdgeKey(a, b));
+            triangleOf.erase(halfEdgeKey(b, a));
+            triangleOf[halfEdgeKey(a, d)] = triangleOf[halfEdgeKey(d, c)] = triangleOf[halfEdgeKey(c, a)] = t1;
+            triangleOf[halfEdgeKey(b, c)] = triangleOf[halfEdgeKey(c, d)] = triangleOf[halfEdgeKey(d, b)] = t2;
+            --valence[a], --valence[b], ++valence[c], ++valence[d];
+            touched[t1] = touched[t2] = 1;
+            mFrozenNext.insert(key(c, d));
+            ++mCounts.flips;
+        }
+    }
+
+    /// Whether (a, d, c) and (b, c, d) both face within ~84 degrees of the quad's normal.
+    bool keepsFacing(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) const
+    {
+        const auto normal = [this](std::uint32_t x, std::uint32_t y, std::uint32_t z) {
+            return (mMesh.positions[y] - mMesh.positions[x]).cross(mMesh.positions[z] - mMesh.positions[x]);
+        };
+        const Vec3d quad = normal(a, b, c) + normal(b, a, d), n1 = normal(a, d, c), n2 = normal(b, c, d);
+        return n1.dot(quad) > 0.1 * n1.length() * quad.length() && n2.dot(quad) > 0.1 * n2.length() * quad.length();
     }
 
     /// The vertex of triangle t that is neither a nor b.
@@ -263,6 +319,7 @@ private:
     EdgeMemory& mMemory;
     std::vector<std::uint8_t> mInverted;
     const double mE, mShortest;
+    const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
     std::vector<std::uint8_t> mDeadTriangle, mDeadVertex;
     std::vector<std::uint32_t> mStarStart, mStar;
@@ -271,10 +328,10 @@ private:
 
 }  // namespace
 
-RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
-                       double shortest)
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
+                       const RemeshLimits& limits)
 {
-    return Remesher(mesh, memory, inverted, edge, shortest).run();
+    return Remesher(mesh, memory, inverted, limits).run();
 }
 
 }  // namespace sculpt

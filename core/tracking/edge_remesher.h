@@ -12,6 +12,7 @@
 /// the two opposite vertices), turn a triangle over, or make an edge longer than 2e; an edge of
 /// an inverted triangle is never split. Changes are made in passes over independent edges
 /// (no two touching the same triangle), the longest split and the shortest collapsed first.
+/// Seeding also flips edges towards valence 6 (never while tracking: a flip changes connectivity).
 
 #include "core/tracking/tracked_mesh.h"
 
@@ -27,15 +28,23 @@ struct EdgeMemory {
 };
 
 struct RemeshCounts {
-    std::size_t splits = 0, collapses = 0;
+    std::size_t splits = 0, collapses = 0, flips = 0;
 };
 
-/// One ALTERMESH pass over `mesh` (closed, 2-manifold), e = `edge` world units. `inverted`
-/// marks triangles (#F) whose normal opposes grad phi. Edges under `shortest` (e unless given)
-/// are collapsed: seeding asks more, so the mesh starts with room to shrink as well as to
-/// stretch. New vertices lie on edge midpoints, off the surface: project them after. Updates
-/// `memory` for the next step.
-RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted, double edge,
-                       double shortest = 0.0);
+/// How a pass treats the mesh: tracking keeps connectivity unless an edge leaves [e, 2e];
+/// seeding, which gives new ids anyway, shapes a mesh with room to move.
+struct RemeshLimits {
+    double edge = 1.0;      ///< e, world units
+    double shortest = 0.0;  ///< edges under this are collapsed (e when 0)
+    /// Flip edges where that brings the four vertices' valences nearer 6: a regular mesh relaxes
+    /// to nearly equal edges, so it can stretch and shrink further before an edge leaves [e, 2e].
+    bool flips = false;
+};
+
+/// One ALTERMESH pass over `mesh` (closed, 2-manifold). `inverted` marks triangles (#F) whose
+/// normal opposes grad phi. New vertices lie on edge midpoints, off the surface: project them
+/// after. Updates `memory` for the next step.
+RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
+                       const RemeshLimits& limits);
 
 }  // namespace sculpt

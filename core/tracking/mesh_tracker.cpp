@@ -32,12 +32,12 @@ void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
 {
     mMesh = TrackedMesh::of(mc, mMesh.nextId);
     mMemory = {};
-    for (int i = 0; i < mOptions.seedSteps; ++i) advance(field, {}, mOptions.seedShortestEdges * mEdge);
+    for (int i = 0; i < mOptions.seedSteps; ++i) advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, true});
 }
 
 TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
 {
-    TrackingStep report = advance(field, displacement, mEdge);
+    TrackingStep report = advance(field, displacement, {mEdge});
     const TriangleMesh mc = meshLevelSet(field);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth != surfaceTopology(mMesh.triangles, mMesh.positions.size()) || !report.quasiCritical.empty()) {
@@ -49,7 +49,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
 }
 
 TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement,
-                                  double shortestEdge)
+                                  const RemeshLimits& limits)
 {
     if (displacement)
         for (Vec3d& p : mMesh.positions) p += displacement(p);
@@ -58,11 +58,11 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     const std::vector<std::uint8_t> inverted = invertedTriangles();
     for (const std::uint8_t i : inverted) report.inverted += i;
     unfold(inverted);
-    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, mEdge, shortestEdge);
+    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
     project(field);
-    const RelaxOptions relax{mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
+    const RelaxOptions relax{mOptions.restEdges * mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
     const std::vector<Vec3d> dx = relaxationStep(mMesh.positions, mMesh.triangles, mNormals, mQuasiCritical, relax);
     for (std::size_t v = 0; v < dx.size(); ++v) mMesh.positions[v] += dx[v];
     project(field);

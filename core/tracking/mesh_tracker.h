@@ -23,6 +23,11 @@ namespace sculpt {
 struct TrackerOptions {
     double edgeVoxels = 1.5;         ///< e, the target edge length, in voxels
     double gain = 1.0;               ///< the triangles' stiffness times the step (E dt)
+    /// The rest triangle's side, in e. The mesh lives at about 1.5 e: resting a little under it
+    /// keeps every triangle in tension (a compressed one buckles), and less pre-stress lets the
+    /// triangles take up a morph's stretch with half the edge changes of a rest side of e
+    /// (sphere -> box: 62 against 111).
+    double restEdges = 1.3;
     int conjugateGradientSteps = 6;  ///< per relaxation
     int seedSteps = 40;              ///< steps on the seeding field before the mesh is first used
     /// Seeding collapses edges under this many e (later steps: under e), so the mesh starts in the
@@ -70,7 +75,7 @@ private:
     void seed(const FieldImage& field, const TriangleMesh& mc);
     /// The step without the topology check.
     TrackingStep advance(const FieldImage& field, const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& move,
-                         double shortestEdge);
+                         const RemeshLimits& limits);
     /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),
     /// keeping grad phi's direction per vertex.
     void project(const FieldImage& field);
