@@ -78,19 +78,6 @@ std::vector<float> flat(const std::vector<std::array<float, 3>>& points)
     return xyz;
 }
 
-void check(const MorphSequenceMesh& mesh, const std::filesystem::path& path)
-{
-    if (mesh.frames.empty()) throw InputError(path.string() + ": a morph sequence needs at least one frame");
-    const std::size_t vertices = mesh.frames.front().size();
-    for (const auto& frame : mesh.frames)
-        if (frame.size() != vertices)
-            throw InputError(path.string() + ": every frame of a glTF morph needs " + std::to_string(vertices) +
-                             " vertices (one has " + std::to_string(frame.size()) + ")");
-    for (const auto& t : mesh.triangles)
-        for (const std::uint32_t v : t)
-            if (v >= vertices) throw InputError(path.string() + ": a triangle names vertex " + std::to_string(v));
-}
-
 /// The animation: target k - 1 weighs 1 at frame k, every other 0.
 json weightAnimation(GltfBuffer& buffer, std::size_t frames, double fps)
 {
@@ -119,9 +106,9 @@ void appendChunk(std::string& glb, std::string chunk, std::uint32_t type, char p
 
 }  // namespace
 
-void writeGltfMorph(const MorphSequenceMesh& mesh, const std::filesystem::path& path)
+void writeGltfMorph(const MeshSequence& mesh, const std::filesystem::path& path)
 {
-    check(mesh, path);
+    checkMeshSequence(mesh, path);
     GltfBuffer buffer;
     const std::vector<float> base = flat(mesh.frames.front());
     const int position = buffer.positions(buffer.view(base, kArrayBuffer), 0, base);

@@ -4,10 +4,11 @@
 ///        (dynamic triangulation: Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
 ///
 /// Seeded from the welded marching-cubes mesh and relaxed on the field, it then follows the
-/// field step by step (topology changes re-seed it: a new segment): each step moves the vertices by any known displacement, projects them
-/// back onto phi = 0 (surface_projection.h), unfolds inverted triangles, changes edges outside
-/// [e, 2e] locally (edge_remesher.h), slides the vertices along the surface towards equilateral
-/// triangles (corotated_triangles.h) and projects again. Vertices keep their ids while they
+/// field step by step: each step moves the vertices by any known displacement, projects them
+/// back onto phi = 0 (surface_projection.h), unfolds inverted triangles, slides the vertices
+/// along the surface towards equilateral triangles (corotated_triangles.h), changes edges outside
+/// [e, 2e] locally (edge_remesher.h) and slides and projects again. Where the surface's topology
+/// changes the mesh is cut and closed there (topology_surgery.h) or seeded again. Vertices keep their ids while they
 /// exist; connectivity changes only where an edge leaves its range, so a sequence that only
 /// moves keeps its vertex count and triangles. Call step() after every evolution step, not only
 /// at frames: between two steps the surface moves less than the band, so projection finds it.
@@ -15,6 +16,7 @@
 #include "core/field/field_image.h"
 #include "core/tracking/corotated_triangles.h"
 #include "core/tracking/edge_remesher.h"
+#include "core/tracking/topology_surgery.h"
 
 #include <functional>
 
@@ -47,21 +49,29 @@ struct TrackingStep {
     std::size_t splits = 0, collapses = 0;
     std::size_t inverted = 0;  ///< triangles facing against grad phi when the step began
     std::vector<QuasiCriticalPoint> quasiCritical;
-    /// The surface's topology changed, or the mesh lost it (quasi-critical points): the mesh was
-    /// seeded again from the marching-cubes mesh (new vertex ids), a new segment begins.
+    /// The surface's topology changed and the mesh was cut and closed there (stage 2): the
+    /// vertices away from the event keep their ids; connectivity changed, a new segment begins.
+    Surgery surgery;
+    /// The surface's topology changed where surgery could not follow: the mesh was seeded again
+    /// from the marching-cubes mesh (new vertex ids, stage 1), a new segment begins.
     bool reseeded = false;
 };
 
 class MeshTracker {
 public:
+    /// Steps on the same field after a surgery, before the step returns.
+    static constexpr int kSettleSteps = 4;
+
     /// Seeds from `field`'s welded marching-cubes mesh, relaxed options.seedSteps steps on it.
     explicit MeshTracker(const FieldImage& field, const TrackerOptions& options = {});
 
     /// One step on `field` as it is now. `displacement`, where given, moves each vertex first
     /// (a known velocity times the step: a rigid move, a grab). Then the marching-cubes mesh's
     /// Euler characteristic and shell count, the ground truth, are compared with the tracked
-    /// mesh's: when they differ, or points were left quasi-critical, the mesh is seeded again
-    /// (a topology event's first stage). Deterministic: the same mesh whatever the thread count.
+    /// mesh's: when they differ, the mesh is cut and closed where they do (topology_surgery.h,
+    /// then settled kSettleSteps steps), or, where that fails, seeded again. Quasi-critical
+    /// points alone change nothing: they stay where they were until the field shows them a
+    /// surface again or a topology event cuts them away. Deterministic: the same mesh whatever the thread count.
     /// Cost: the projections and the relaxation are O(vertices); the check meshes the field.
     TrackingStep step(const FieldImage& field,
                       const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& displacement = {});
@@ -76,6 +86,8 @@ private:
     /// The step without the topology check.
     TrackingStep advance(const FieldImage& field, const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& move,
                          const RemeshLimits& limits);
+    /// One quasi-static step of the triangles along the surface, then back onto it.
+    void relax(const FieldImage& field);
     /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),
     /// keeping grad phi's direction per vertex.
     void project(const FieldImage& field);

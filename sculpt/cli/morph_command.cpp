@@ -4,16 +4,17 @@
 #include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph_verdict.h"
-#include "core/tracking/mesh_tracker.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
 #include "sculpt/session/frame_files.h"
+#include "sculpt/session/morph_tracking.h"
 #include "sculpt/session/shape_import.h"
 #include "sculpt/session/tracked_export.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -45,31 +46,30 @@ std::string verdict(const MorphSummary& s, double voxelSize)
 /// no kept state, so its frames take longer).
 using MorphStepWatch = std::function<void(const FieldImage&)>;
 
-/// What the tracked mesh went through over the whole morph.
-struct TrackingTally {
-    std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0, reseeds = 0;
-    void add(const TrackingStep& s)
-    {
-        ++steps;
-        splits += s.splits;
-        collapses += s.collapses;
-        inverted += s.inverted;
-        quasiCritical += s.quasiCritical.size();
-        reseeds += s.reseeded;
-    }
-};
-
-void printTracking(const TrackedSequence& sequence, const TrackingTally& t, const std::string& directory)
+void printTracking(const MorphTracking& tracking, const std::string& directory)
 {
-    std::printf("tracked mesh: %zu segments of constant connectivity in %s (segment_0000.ply/.pc2/.glb ...); over %zu "
+    const TrackedSequence& sequence = tracking.sequence();
+    const TrackingTally& t = tracking.tally();
+    std::printf("tracked mesh: %zu segments of constant connectivity in %s (segment_0000.ply/.pc2/.glb/.usda ...); over %zu "
                 "steps %zu splits, %zu collapses, %zu inverted triangles unfolded, %zu quasi-critical points, %zu "
                 "re-seeds (topology changes)\n",
                 sequence.segments().size(), directory.c_str(), t.steps, t.splits, t.collapses, t.inverted,
                 t.quasiCritical, t.reseeds);
     for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
         const TrackedSegment& segment = sequence.segments()[s];
-        std::printf("  segment %04zu: frames %d to %zu, %zu vertices, %zu triangles\n", s, segment.firstFrame,
-                    segment.firstFrame + segment.positions.size() - 1, segment.ids.size(), segment.triangles.size());
+        double angle = 180.0, shortest = 1e30, longest = 0.0;
+        std::size_t flagged = 0;
+        for (const TrackedFrame& frame : tracking.frames())
+            if (frame.segment == s) {
+                angle = std::min(angle, frame.quality.smallestAngle);
+                shortest = std::min(shortest, frame.quality.shortestEdge / tracking.edgeLength());
+                longest = std::max(longest, frame.quality.longestEdge / tracking.edgeLength());
+                flagged += frame.flagged;
+            }
+        std::printf("  segment %04zu: frames %d to %zu, %zu vertices, %zu triangles; smallest angle %.1f degrees, "
+                    "edges %.2f e to %.2f e, %zu points flagged\n",
+                    s, segment.firstFrame, segment.firstFrame + segment.positions.size() - 1, segment.ids.size(),
+                    segment.triangles.size(), angle, shortest, longest, flagged);
     }
 }
 
@@ -88,9 +88,7 @@ void runMorph(const MorphCommandOptions& o)
     if (!o.tracked.empty()) prepareDirectory(o.tracked);
 
     MorphSummary summary;
-    std::optional<MeshTracker> tracker;  // seeded on the first frame, stepped with the motion
-    TrackedSequence sequence;
-    TrackingTally tally;
+    MorphTracking tracking;
     {
         ProgressBar bar("morphing");
         summary = morph(
@@ -98,16 +96,14 @@ void runMorph(const MorphCommandOptions& o)
             [&](const MorphFrame& frame) {
                 writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
                 if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
-                if (o.tracked.empty()) return;
-                if (!tracker) tracker.emplace(frame.field);
-                sequence.add(tracker->mesh());
+                if (!o.tracked.empty()) tracking.frame(frame.field);
             },
             bar.callback(),
-            o.tracked.empty() ? MorphStepWatch() : [&](const FieldImage& field) { tally.add(tracker->step(field)); });
+            o.tracked.empty() ? MorphStepWatch() : [&](const FieldImage& field) { tracking.step(field); });
     }
     if (!o.tracked.empty()) {
-        writeTrackedSequence(sequence, o.tracked);
-        printTracking(sequence, tally, o.tracked);
+        writeTrackedSequence(tracking.sequence(), o.tracked);
+        printTracking(tracking, o.tracked);
     }
     std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames, o.directory.c_str(),
                 o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
@@ -150,7 +146,8 @@ void addMorphCommand(CLI::App& app)
     cmd->add_option("--tracked", options->tracked,
                     "also write a mesh that moves with the surface (vertices and triangles kept while they can\n"
                     "be) into this directory: per segment of constant connectivity a rest mesh (.ply), a point\n"
-                    "cache (.pc2, Blender's Mesh Cache) and a glTF with a shape key per frame (.glb)");
+                    "cache (.pc2, Blender's Mesh Cache), a glTF with a shape key per frame (.glb) and a USD\n"
+                    "layer with points and velocities per frame (.usda, Blender's Mesh Sequence Cache)");
     cmd->add_flag("--keep-volume", options->morph.keepVolume,
                   "keep each frame's volume on the straight line between the two shapes' volumes");
     cmd->add_flag("--align", options->morph.align,

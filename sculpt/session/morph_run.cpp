@@ -10,7 +10,7 @@
 namespace sculpt {
 
 MorphRun morphInto(const FieldImage& source, const std::filesystem::path& targetPath, const MorphOptions& options,
-                   const Progress& progress)
+                   const Progress& progress, bool tracked)
 {
     MorphRun run;
     run.target = std::make_shared<const FieldImage>(loadShape(targetPath, source.voxelSize(), run.warnings));
@@ -20,9 +20,15 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
     requireMemory(1.5 * frameBytes * (options.frames + 4),
                   "keeping " + std::to_string(options.frames) +
                       " morph frames in memory (fewer frames, or `sculpt morph`)");
+    if (tracked) run.tracking.emplace();
+    const auto onStep = [&](const FieldImage& field) { run.tracking->step(field); };
     run.summary = morph(
-        source, target, options, [&](const MorphFrame& frame) { run.frames.push_back(frame.field.deepCopy()); },
-        progress);
+        source, target, options,
+        [&](const MorphFrame& frame) {
+            run.frames.push_back(frame.field.deepCopy());
+            if (tracked) run.tracking->frame(frame.field);
+        },
+        progress, tracked ? std::function<void(const FieldImage&)>(onStep) : nullptr);
     return run;
 }
 

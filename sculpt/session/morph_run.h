@@ -6,9 +6,11 @@
 
 #include "core/base/progress.h"
 #include "core/motion/morph.h"
+#include "sculpt/session/morph_tracking.h"
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,14 +21,16 @@ struct MorphRun {
     MorphSummary summary;
     std::vector<std::string> warnings;         ///< from reading the target
     std::shared_ptr<const FieldImage> target;  ///< as read, at the source's voxel size
+    std::optional<MorphTracking> tracking;     ///< the tracked mesh, when asked for
 };
 
 /// Morphs `source` into the shape in `targetPath` (a .vdb document, a scan or a mesh, read at the
-/// source's voxel size as `sculpt morph` does). Memory: every frame.
+/// source's voxel size as `sculpt morph` does), tracking a mesh along if `tracked` (every step
+/// then runs on: a watched morph resumes from no kept state). Memory: every frame.
 /// @throws InputError naming the file or option at fault, or if the frames would not fit in the
 ///         memory available; Cancelled if progress says stop.
 MorphRun morphInto(const FieldImage& source, const std::filesystem::path& targetPath, const MorphOptions& options,
-                   const Progress& progress = {});
+                   const Progress& progress = {}, bool tracked = false);
 
 /// Writes `frames` as DIR/frame_0000.vdb ... (DIR made if missing).
 /// @throws InputError naming the directory or file that cannot be written.

@@ -4,6 +4,7 @@
 #include "core/io/gltf_morph_file.h"
 #include "core/io/mesh_file.h"
 #include "core/io/point_cache_file.h"
+#include "core/io/usd_mesh_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,11 +14,16 @@ namespace sculpt {
 
 namespace fs = std::filesystem;
 
-fs::path segmentPath(const fs::path& directory, std::size_t index, const std::string& extension)
+std::string segmentName(std::size_t index)
 {
     char name[32];
-    std::snprintf(name, sizeof(name), "segment_%04zu.", index);
-    return directory / (name + extension);
+    std::snprintf(name, sizeof(name), "segment_%04zu", index);
+    return name;
+}
+
+fs::path segmentPath(const fs::path& directory, std::size_t index, const std::string& extension)
+{
+    return directory / (segmentName(index) + "." + extension);
 }
 
 std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, const fs::path& directory, double fps)
@@ -31,9 +37,12 @@ std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, cons
         rest.triangles.assign(segment.triangles.begin(), segment.triangles.end());
         writeMesh(rest, segmentPath(directory, s, "ply"));
         writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, segmentPath(directory, s, "pc2"));
-        MorphSequenceMesh animated{"segment_" + std::to_string(s), rest.triangles, segment.positions, fps};
+        const MeshSequence animated{segmentName(s), rest.triangles, segment.positions, fps,
+                                    segment.firstFrame, segment.ids};
         writeGltfMorph(animated, segmentPath(directory, s, "glb"));
-        for (const char* extension : {"ply", "pc2", "glb"}) written.push_back(segmentPath(directory, s, extension));
+        writeUsdMesh(animated, segmentPath(directory, s, "usda"));
+        for (const char* extension : {"ply", "pc2", "glb", "usda"})
+            written.push_back(segmentPath(directory, s, extension));
         list.push_back({{"segment", s},
                         {"first_frame", segment.firstFrame},
                         {"frames", segment.positions.size()},

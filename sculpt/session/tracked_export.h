@@ -2,8 +2,9 @@
 /// @file tracked_export.h
 /// @brief A tracked mesh's sequence written as files people can play: per segment of constant
 ///        connectivity, its rest mesh (PLY), a point cache (.pc2, Blender's Mesh Cache modifier)
-///        and a binary glTF with a morph target per frame (Blender's shape keys, any glTF
-///        viewer), and segments.json listing which frames each segment covers.
+///        a binary glTF with a morph target per frame (Blender's shape keys, any glTF viewer),
+///        a USD text layer with points and velocities per frame (Blender's Mesh Sequence
+///        Cache), and segments.json listing which frames each segment covers.
 
 #include "core/tracking/tracked_sequence.h"
 
@@ -12,6 +13,9 @@
 #include <vector>
 
 namespace sculpt {
+
+/// "segment_0003": segment `index`'s name in the files.
+std::string segmentName(std::size_t index);
 
 /// "segment_0003" and its extension: where segment `index`'s files go in `directory`.
 std::filesystem::path segmentPath(const std::filesystem::path& directory, std::size_t index,

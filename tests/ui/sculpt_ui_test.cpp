@@ -5,6 +5,7 @@
 #include "core/io/vdb_file.h"
 #include "core/io/vdb_layout.h"
 #include "core/primitives/analytic_shapes.h"
+#include "tests/support/file_bytes.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/vdb_files.h"
 #include "tests/ui/ui_driver.h"
@@ -561,6 +562,47 @@ TEST(SculptUi, AMorphRunsAsAJobItsFramesPlayAndExportAsTheCommandLinesAndAKeptFr
     EXPECT_EQ(reports["kept"]["undo"], 1);
     EXPECT_EQ(reports["kept"]["euler"], 0);  // the torus
     EXPECT_EQ(reports["kept-undone"]["checksum"], original);
+}
+
+// A tracked morph (Ctrl+T in Morph To): the tracked mesh is drawn as a wireframe over each frame,
+// its quality is reported per frame, and Export Frames writes it beside the frames, byte for byte
+// what `sculpt morph --tracked` writes.
+TEST(SculptUi, ATrackedMorphShowsItsMeshOverTheFramesAndExportsItAsTheCommandLineDoes)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 10 --voxel-size 0.5 -o ball.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape box --radius 8 --voxel-size 0.5 -o box.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("morph ball.vdb box.vdb -o cli --tracked cli-tracked", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.key("M", {"alt"}).text("box.vdb").key("T", {"ctrl"}).key("Enter").untilJobEnds().report(r, "frames");
+    events.screenshot(dir / "wire.png").key("PageUp").key("PageUp").report(r, "frame7");
+    events.key("E", {"shift"}).key("Enter").report(r, "exported");
+    const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    ASSERT_EQ(reports.size(), 3u);
+    EXPECT_EQ(reports["frames"]["last_job"], "finished") << reports["frames"]["error"];
+    const nlohmann::json& tracked = reports["frames"]["morph"]["tracked"];
+    ASSERT_TRUE(tracked.is_object()) << reports["frames"]["morph"];
+    ASSERT_EQ(tracked["frames"].size(), 10u);  // the frames the dialog and the command line default to
+    EXPECT_EQ(tracked["segments"], 1);  // a ball into a box: no topology change
+    for (const nlohmann::json& frame : tracked["frames"]) {
+        EXPECT_GT(frame["vertices"].get<int>(), 500);
+        EXPECT_GT(frame["smallest_angle"].get<double>(), 10.0);
+        EXPECT_GE(frame["shortest_edge_e"].get<double>(), 0.95);
+        EXPECT_LE(frame["longest_edge_e"].get<double>(), 2.1);
+        EXPECT_EQ(frame["flagged"], 0);
+    }
+    EXPECT_TRUE(tracked["wire_shown"].get<bool>());
+    EXPECT_EQ(tracked["wire_frame"], 9);  // the last frame, shown first
+    EXPECT_EQ(reports["frame7"]["morph"]["tracked"]["wire_frame"], 7);
+    EXPECT_EQ(reports["exported"]["checksum"], reports["frames"]["checksum"]);  // the document unchanged
+    for (const char* file : {"segment_0000.pc2", "segment_0000.glb", "segment_0000.usda", "segments.json"}) {
+        const std::string window = fileBytes(dir / "morph" / "tracked" / file);
+        EXPECT_FALSE(window.empty()) << file;
+        EXPECT_EQ(window, fileBytes(dir / "cli-tracked" / file)) << file;
+    }
 }
 
 TEST(SculptUi, AMorphCancelledHalfWayLeavesTheDocumentAsItWas)

@@ -3,7 +3,9 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/primitives/scene_file.h"
+#include "sculpt/session/frame_files.h"
 #include "sculpt/session/morph_run.h"
+#include "sculpt/session/tracked_export.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/modes/morph_mode.h"
 #include "ui/modes/primitives_mode.h"
@@ -125,7 +127,7 @@ void SculptApp::confirmPrompt()
             break;
         case Dialogs::Prompt::SmoothModel:
         case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
-        case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph); break;
+        case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph, mDialogs.morphTracked); break;
         case Dialogs::Prompt::Target: startLoadTarget(path); break;
         case Dialogs::Prompt::Import: startImportRead(path); break;
         case Dialogs::Prompt::LoadScene: loadScene(path); break;
@@ -137,8 +139,16 @@ void SculptApp::confirmPrompt()
             break;
         case Dialogs::Prompt::MorphExport:
             if (MorphMode* morph = mode<MorphMode>()) {
-                writeFrames(morph->frames().run().frames, path);
+                const MorphRun& run = morph->frames().run();
+                writeFrames(run.frames, path);
                 mDialogs.notice = "wrote " + std::to_string(morph->frames().count()) + " frames to " + path.string();
+                if (run.tracking) {
+                    prepareDirectory(path / "tracked");
+                    writeTrackedSequence(run.tracking->sequence(), path / "tracked");
+                    mDialogs.notice += " and the tracked mesh (" +
+                                       std::to_string(run.tracking->sequence().segments().size()) +
+                                       " segments: .ply, .pc2, .glb, .usda) to " + (path / "tracked").string();
+                }
             }
             break;
         case Dialogs::Prompt::None: break;

@@ -146,19 +146,20 @@ void SculptApp::startFilter(const ModelFilter& filter)
                {}});
 }
 
-void SculptApp::startMorph(const fs::path& target, const MorphOptions& options)
+void SculptApp::startMorph(const fs::path& target, const MorphOptions& options, bool tracked)
 {
     if (busy()) return;
     autosaveNow();
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string label = "morph to " + target.filename().string();
     startJob<MorphRun>(
-        label, [copy, target, options](const Progress& p) { return morphInto(*copy, target, options, p); },
+        label,
+        [copy, target, options, tracked](const Progress& p) { return morphInto(*copy, target, options, p, tracked); },
         [this, label, target](MorphRun run) {
             // The target becomes the loaded one: its ghost shows where the frames go.
             mBrush.target = {target, run.target};
             mGhost.set(run.target.get());
-            openMode(std::make_unique<MorphMode>(label, std::move(run)));
+            openMode(std::make_unique<MorphMode>(mViewport.renderer(), label, std::move(run)));
         });
 }
 

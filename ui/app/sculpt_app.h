@@ -95,6 +95,7 @@ struct Dialogs {
     NewShape newShape;
     ModelFilter filter;                             ///< the Smooth/Offset Model prompts' settings
     MorphOptions morph;                             ///< the Morph To prompt's settings (target: path)
+    bool morphTracked = false;                      ///< ... and whether it tracks a mesh along
     std::optional<Command> afterUnsaved;            ///< asking "save changes?" before this command
     std::optional<std::filesystem::path> recovery;  ///< offering to recover this file
     /// Asking which level set of a file to open (it holds several, none named "surface").
@@ -263,7 +264,7 @@ private:
     /// Opens the primitives in the scene file at `path` in the Primitives panel.
     void loadScene(const std::filesystem::path& path);
     /// Starts a morph of a copy of the model into the file at `target` as a background job.
-    void startMorph(const std::filesystem::path& target, const MorphOptions& options);
+    void startMorph(const std::filesystem::path& target, const MorphOptions& options, bool tracked);
     /// Lands a finished job's result (or reports why there is none).
     void pollJob();
     /// Why an edit of the document must wait (a job runs, a mode is open), or "".

@@ -10,6 +10,11 @@
 
 namespace sculpt::ui {
 
+MorphMode::MorphMode(vtkRenderer* scene, std::string label, MorphRun run)
+    : mLabel(std::move(label)), mFrames(std::move(run)), mWire(scene)
+{
+}
+
 std::string MorphMode::waitNotice() const
 {
     return "the morph's frames are on show: keep one (K) or close them (Esc) first";
@@ -26,7 +31,12 @@ std::string MorphMode::hint() const
 bool MorphMode::sync(double now)
 {
     mFrames.tick(now);
-    return false;
+    const std::optional<MorphTracking>& tracking = mFrames.run().tracking;
+    if (!tracking || mWireFrame == mFrames.shown()) return false;
+    mWireFrame = mFrames.shown();
+    const TriangleMesh mesh = tracking->frameMesh(mWireFrame);
+    mWire.set(&mesh);
+    return true;
 }
 
 bool MorphMode::accept(ModeHost& host)
@@ -37,15 +47,31 @@ bool MorphMode::accept(ModeHost& host)
     return true;
 }
 
-void MorphMode::drawPanel(SculptApp& app) { drawMorphPanel(app, mFrames); }
+void MorphMode::drawPanel(SculptApp& app) { drawMorphPanel(app, *this); }
 
 nlohmann::json MorphMode::report()
 {
-    return {{"frames", mFrames.count()},
-            {"shown", mFrames.shown()},
-            {"checksum", formatChecksum(gridChecksum(mFrames.shownField().grid()))},
-            {"converged", mFrames.run().summary.converged},
-            {"stop", morphStopName(mFrames.run().summary.stop)}};
+    nlohmann::json report{{"frames", mFrames.count()},
+                          {"shown", mFrames.shown()},
+                          {"checksum", formatChecksum(gridChecksum(mFrames.shownField().grid()))},
+                          {"converged", mFrames.run().summary.converged},
+                          {"stop", morphStopName(mFrames.run().summary.stop)}};
+    const std::optional<MorphTracking>& tracking = mFrames.run().tracking;
+    if (!tracking) return report;
+    nlohmann::json frames = nlohmann::json::array();
+    for (const TrackedFrame& f : tracking->frames())
+        frames.push_back({{"vertices", f.quality.vertices},
+                          {"triangles", f.quality.triangles},
+                          {"segment", f.segment},
+                          {"smallest_angle", f.quality.smallestAngle},
+                          {"shortest_edge_e", f.quality.shortestEdge / tracking->edgeLength()},
+                          {"longest_edge_e", f.quality.longestEdge / tracking->edgeLength()},
+                          {"flagged", f.flagged}});
+    report["tracked"] = {{"frames", frames},
+                         {"segments", tracking->sequence().segments().size()},
+                         {"wire_shown", mWire.shown()},
+                         {"wire_frame", mWireFrame}};
+    return report;
 }
 
 }  // namespace sculpt::ui

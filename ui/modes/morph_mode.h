@@ -2,19 +2,23 @@
 /// @file morph_mode.h
 /// @brief A finished morph's frames (the Morph panel) shown in place of the document: played
 ///        (Space), stepped (PageUp/PageDown), scrubbed. Enter or K keeps the frame shown as the
-///        document (one undo step); Esc goes back to the document.
+///        document (one undo step); Esc goes back to the document. A tracked morph also shows its
+///        tracked mesh as a wireframe over each frame.
 
 #include "ui/document/morph_frames.h"
 #include "ui/modes/mode.h"
+#include "ui/view/wire_display.h"
 
 namespace sculpt::ui {
 
 class MorphMode final : public Mode {
 public:
     /// `label` names the morph ("morph to cat.vdb").
-    MorphMode(std::string label, MorphRun run) : mLabel(std::move(label)), mFrames(std::move(run)) {}
+    MorphMode(vtkRenderer* scene, std::string label, MorphRun run);
 
     MorphFrames& frames() { return mFrames; }
+    /// The tracked mesh's wireframe (a tracked morph's only).
+    WireDisplay& wire() { return mWire; }
 
     const char* name() const override { return "morph"; }
     std::string waitNotice() const override;
@@ -31,6 +35,8 @@ public:
 private:
     std::string mLabel;
     MorphFrames mFrames;
+    WireDisplay mWire;
+    int mWireFrame = -1;  // the frame whose tracked mesh the wire shows
 };
 
 }  // namespace sculpt::ui

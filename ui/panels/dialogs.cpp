@@ -1,6 +1,6 @@
 #include "core/motion/morph_verdict.h"
 #include "ui/app/sculpt_app.h"
-#include "ui/document/morph_frames.h"
+#include "ui/modes/morph_mode.h"
 #include "ui/panels/panels.h"
 
 #include <GLFW/glfw3.h>
@@ -181,6 +181,12 @@ void morphDialog(SculptApp& app)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Frame volumes on the straight line between the two shapes'");
     ImGui::Checkbox("align", &m.align);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("First move the model's centroid onto the target's");
+    // Ctrl+T: the path field keeps the keyboard while the dialog is open.
+    if (ImGui::GetIO().KeyCtrl && pressed(GLFW_KEY_T)) d.morphTracked = !d.morphTracked;
+    ImGui::Checkbox("tracked mesh (Ctrl+T)", &d.morphTracked);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Also follow the surface with a mesh that keeps its vertices and triangles while it can\n"
+                          "(for point caches, shape keys and USD: exported with the frames)");
     float tolerance = float(m.toleranceVoxels);
     ImGui::SetNextItemWidth(120.f);
     if (ImGui::InputFloat("tolerance (voxels)", &tolerance, 0.f, 0.f, "%.2f") && tolerance > 0.f)
@@ -192,8 +198,23 @@ void morphDialog(SculptApp& app)
 
 }  // namespace
 
-void drawMorphPanel(SculptApp& app, MorphFrames& frames)
+/// The tracked mesh's line: the shown frame's quality, and the wireframe's switch.
+void trackedMeshLine(MorphMode& mode)
 {
+    const MorphTracking& tracking = *mode.frames().run().tracking;
+    const TrackedFrame& f = tracking.frames().at(std::size_t(mode.frames().shown()));
+    bool shown = mode.wire().shown();
+    if (ImGui::Checkbox("tracked mesh", &shown)) mode.wire().setShown(shown);
+    ImGui::SameLine();
+    const double e = tracking.edgeLength();
+    ImGui::TextDisabled("segment %zu of %zu: %zu vertices, smallest angle %.1f deg, edges %.2f-%.2f e, %zu flagged",
+                        f.segment + 1, tracking.sequence().segments().size(), f.quality.vertices,
+                        f.quality.smallestAngle, f.quality.shortestEdge / e, f.quality.longestEdge / e, f.flagged);
+}
+
+void drawMorphPanel(SculptApp& app, MorphMode& mode)
+{
+    MorphFrames& frames = mode.frames();
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
     ImGui::Begin("Morph", nullptr, kDialogFlags);
@@ -211,6 +232,7 @@ void drawMorphPanel(SculptApp& app, MorphFrames& frames)
     button("Keep frame", Command::MorphKeep);
     button("Export frames...", Command::MorphExport);
     if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
+    if (frames.run().tracking) trackedMeshLine(mode);
     const MorphSummary& s = frames.run().summary;
     const std::string verdict = morphVerdict(s, frames.shownField().voxelSize());
     ImGui::PushTextWrapPos(560.f);

@@ -11,7 +11,7 @@
 namespace sculpt::ui {
 
 class ImportDraft;
-class MorphFrames;
+class MorphMode;
 class PrimitiveDraft;
 class SculptApp;
 
@@ -24,7 +24,7 @@ void drawHelpPanel(SculptApp& app);
 /// The running job's progress bar and Cancel button, if a job runs.
 void drawJobPanel(SculptApp& app);
 /// A finished morph's frames: slider, play/pause, step, keep, export, close.
-void drawMorphPanel(SculptApp& app, MorphFrames& frames);
+void drawMorphPanel(SculptApp& app, MorphMode& mode);
 /// The scan or mesh being imported: what it holds, the iso-value over its histogram, crop,
 /// smoothing, cleanup, voxel size and what the result becomes; Apply or Cancel.
 void drawImportPanel(SculptApp& app, ImportDraft& draft);

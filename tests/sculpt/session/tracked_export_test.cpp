@@ -19,7 +19,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <tiny_gltf.h>
@@ -103,6 +105,87 @@ TEST(TrackedExport, ThePointCacheAndTheGltfReadBackAsTheTrackedMeshAtEveryFrame)
     EXPECT_EQ(floatsOf(model, sampler.output).size(), std::size_t(frames * (frames - 1)));
 }
 
+/// Every number in `text` (USD's lists and tuples are numbers between brackets and commas).
+std::vector<double> numbersIn(const std::string& text)
+{
+    std::vector<double> numbers;
+    for (const char* p = text.c_str(); *p;) {
+        char* end = nullptr;
+        const double value = std::strtod(p, &end);
+        if (end != p && (std::isdigit(static_cast<unsigned char>(*p)) || *p == '-')) {
+            numbers.push_back(value);
+            p = end;
+        } else {
+            ++p;
+        }
+    }
+    return numbers;
+}
+
+/// A `.usda` layer's lines that start (after indentation) with `prefix`, without the prefix.
+std::vector<std::string> usdLines(const std::filesystem::path& path, const std::string& prefix)
+{
+    std::ifstream in(path);
+    std::vector<std::string> found;
+    for (std::string line; std::getline(in, line);) {
+        const std::size_t start = line.find_first_not_of(' ');
+        if (start != std::string::npos && line.compare(start, prefix.size(), prefix) == 0)
+            found.push_back(line.substr(start + prefix.size()));
+    }
+    return found;
+}
+
+/// The time samples of attribute `declaration`: per frame, its numbers (the frame number first).
+std::vector<std::vector<double>> timeSamples(const std::filesystem::path& path, const std::string& declaration)
+{
+    std::ifstream in(path);
+    std::vector<std::vector<double>> samples;
+    bool inside = false;
+    for (std::string line; std::getline(in, line);) {
+        if (line.find(declaration + ".timeSamples") != std::string::npos) inside = true;
+        else if (inside && line.find('}') != std::string::npos) break;
+        else if (inside) samples.push_back(numbersIn(line));
+    }
+    return samples;
+}
+
+TEST(TrackedExport, TheUsdLayerHoldsTheFacesPointsVelocitiesAndIdsOfEveryFrame)
+{
+    const int frames = 4;
+    const TrackedSequence sequence = trackedRigidMove(frames);
+    const TrackedSegment& segment = sequence.segments().front();
+    test::TempDir dir;
+    writeTrackedSequence(sequence, dir.path(), 24.0);
+    const std::filesystem::path usda = segmentPath(dir.path(), 0, "usda");
+
+    ASSERT_EQ(usdLines(usda, "#usda 1.0").size(), 1u);
+    EXPECT_EQ(numbersIn(usdLines(usda, "endTimeCode").at(0)), std::vector<double>{double(frames - 1)});
+    const std::vector<double> indices = numbersIn(usdLines(usda, "int[] faceVertexIndices").at(0));
+    ASSERT_EQ(indices.size(), 3 * segment.triangles.size());
+    for (std::size_t t = 0; t < segment.triangles.size(); ++t)
+        for (std::size_t k = 0; k < 3; ++k) ASSERT_EQ(indices[3 * t + k], double(segment.triangles[t][k]));
+    const std::vector<double> ids = numbersIn(usdLines(usda, "int[] primvars:sculptVertexId").at(0));
+    EXPECT_EQ(ids, std::vector<double>(segment.ids.begin(), segment.ids.end()));
+
+    const auto points = timeSamples(usda, "point3f[] points"), velocities = timeSamples(usda, "vector3f[] velocities");
+    ASSERT_EQ(points.size(), std::size_t(frames));
+    ASSERT_EQ(velocities.size(), std::size_t(frames));
+    const std::size_t vertices = segment.ids.size();
+    for (int k = 0; k < frames; ++k) {
+        ASSERT_EQ(points[k].size(), 1 + 3 * vertices);
+        EXPECT_EQ(points[k][0], double(k)) << "the time code";
+        for (std::size_t v = 0; v < vertices; ++v)
+            for (std::size_t c = 0; c < 3; ++c) ASSERT_EQ(float(points[k][1 + 3 * v + c]), segment.positions[k][v][c]);
+    }
+    // Velocities in mm/s: the sphere moves half a millimetre a frame along x, 12 mm/s at 24 fps.
+    double meanX = 0.0;
+    for (std::size_t v = 0; v < vertices; ++v) meanX += velocities[1][1 + 3 * v] / double(vertices);
+    EXPECT_NEAR(meanX, 12.0, 0.05);
+    const double dt = 1.0 / 24.0;
+    for (std::size_t v = 0; v < vertices; ++v)
+        EXPECT_NEAR(velocities[2][1 + 3 * v + 1], (points[3][1 + 3 * v + 1] - points[1][1 + 3 * v + 1]) / (2 * dt), 1e-3);
+}
+
 TEST(TrackedExport, APointCacheOfTheWrongSizeIsRefusedNamingTheFile)
 {
     test::TempDir dir;
@@ -140,6 +223,7 @@ TEST(TrackedExport, SculptMorphTrackedWritesEverySegmentAndListsThem)
         ASSERT_EQ(cache.samples.size(), segment["frames"].get<std::size_t>());
         EXPECT_EQ(cache.samples[0].size(), segment["vertices"].get<std::size_t>());
         EXPECT_TRUE(std::filesystem::exists(segmentPath(dir / "tracked", s, "glb")));
+        EXPECT_TRUE(std::filesystem::exists(segmentPath(dir / "tracked", s, "usda")));
         EXPECT_TRUE(std::filesystem::exists(segmentPath(dir / "tracked", s, "ply")));
     }
     EXPECT_EQ(frames, 3);

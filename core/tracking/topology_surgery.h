@@ -1,0 +1,50 @@
+#pragma once
+/// @file topology_surgery.h
+/// @brief A topology event's second stage (Nesme and Bouthors; ../shared/DESIGN.md, "tracked
+///        mesh"): the tracked mesh is cut and closed only where the surface's topology changed,
+///        so the vertices away from the event keep their ids.
+///
+/// Where the topology changed, the mesh contradicts the field between two of its own sheets: two
+/// sheets facing each other across what the mesh calls outside are now joined by solid (phi < 0
+/// midway: shells merging, a hole closing), or two sheets back to back across what it calls
+/// solid are now parted by air (phi > 0 midway: a neck pinching off, a hole opening). Those
+/// vertex pairs (within 3 voxels, normals opposed) mark the event. Their triangles and one more
+/// ring are cut away, which must leave exactly two new border loops. When the Euler
+/// characteristic falls (a merge, a hole opening) the two loops are bridged by a strip of
+/// triangles, choosing the shorter diagonal at each step; when it rises (a pinch, a hole
+/// closing) each loop is capped by a fan around a new vertex at its centroid. The result must
+/// be a closed 2-manifold of the marching-cubes mesh's topology, or the mesh is left as it was
+/// (the caller then seeds it again: stage 1). New vertices lie off the surface and new edges may
+/// be long: project, relax and remesh after.
+
+#include "core/field/field_image.h"
+#include "core/tracking/tracked_mesh.h"
+
+namespace sculpt {
+
+enum class SurgeryKind {
+    None,    ///< not applied: the mesh is unchanged
+    Bridge,  ///< two loops joined by a strip (shells merged, a hole opened)
+    Cap,     ///< two loops closed by fans (a neck pinched off, a hole closed)
+};
+
+struct Surgery {
+    SurgeryKind kind = SurgeryKind::None;
+    openvdb::Vec3d centre{0.0};  ///< the mean of the contradicted vertices, world units
+    double radius = 0.0;         ///< the farthest removed vertex from the centre, world units
+    std::size_t loops = 0;  ///< border loops cut (two per merge, pinch or hole)
+    std::size_t removedVertices = 0, addedVertices = 0;
+};
+
+/// Gives `mesh` (closed, 2-manifold) the topology `truth` of `field`'s zero level set by the
+/// local surgery above, if it can. `normals[v]` is the unit grad phi at vertex v.
+/// Cost: O(V) for the pair search (a spatial hash), O(event) for the surgery.
+Surgery operateOnTopology(TrackedMesh& mesh, const std::vector<openvdb::Vec3d>& normals,
+                          const std::vector<std::uint8_t>& quasiCritical, const FieldImage& field,
+                          const SurfaceTopology& truth);
+
+/// Whether every directed edge of `triangles` appears once and its reverse once: a closed,
+/// oriented 2-manifold (no border, no edge shared by three triangles).
+bool closedOrientedManifold(const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+}  // namespace sculpt

@@ -1,0 +1,41 @@
+#include "sculpt/session/morph_tracking.h"
+
+namespace sculpt {
+
+void TrackingTally::add(const TrackingStep& s)
+{
+    ++steps;
+    splits += s.splits;
+    collapses += s.collapses;
+    inverted += s.inverted;
+    quasiCritical += s.quasiCritical.size();
+    reseeds += s.reseeded;
+}
+
+void MorphTracking::frame(const FieldImage& field)
+{
+    if (!mTracker) mTracker.emplace(field);
+    mSequence.add(mTracker->mesh());
+    mFrames.push_back({measureQuality(mTracker->mesh()), mFlaggedSinceFrame, mSequence.segments().size() - 1});
+    mFlaggedSinceFrame = 0;
+}
+
+void MorphTracking::step(const FieldImage& field)
+{
+    const TrackingStep report = mTracker->step(field);
+    mTally.add(report);
+    mFlaggedSinceFrame += report.quasiCritical.size();
+}
+
+TriangleMesh MorphTracking::frameMesh(int index) const
+{
+    const std::size_t segmentIndex = mFrames.at(std::size_t(index)).segment;
+    const TrackedSegment& segment = mSequence.segments()[segmentIndex];
+    TriangleMesh mesh;
+    const auto& points = segment.positions.at(std::size_t(index - segment.firstFrame));
+    mesh.positions.assign(points.begin(), points.end());
+    mesh.triangles.assign(segment.triangles.begin(), segment.triangles.end());
+    return mesh;
+}
+
+}  // namespace sculpt
