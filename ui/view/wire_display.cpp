@@ -30,7 +30,7 @@ void WireDisplay::set(const TriangleMesh* mesh)
     mapper->SetInputData(polyDataOf(lines));
     mapper->ScalarVisibilityOff();
     mapper->SetResolveCoincidentTopologyToPolygonOffset();
-    mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-2.0, -8.0);
+    mapper->SetRelativeCoincidentTopologyLineOffsetParameters(-1.0, -3000.0);
     mActor = vtkSmartPointer<vtkActor>::New();
     mActor->SetMapper(mapper);
     vtkProperty* look = mActor->GetProperty();
