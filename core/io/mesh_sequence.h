@@ -16,8 +16,8 @@ struct MeshSequence {
     MeshArray<std::array<std::uint32_t, 3>> triangles;      ///< #F, counter-clockwise from outside
     std::vector<std::vector<std::array<float, 3>>> frames;  ///< per frame #V positions, >= 1 frame
     double framesPerSecond = 24.0;
-    int firstFrame = 0;               ///< the frame number of frames[0] in the whole sequence
-    std::vector<std::uint32_t> ids;   ///< #V stable vertex ids, or empty
+    int firstFrame = 0;              ///< the frame number of frames[0] in the whole sequence
+    std::vector<std::uint32_t> ids;  ///< #V stable vertex ids, or empty
 };
 
 /// @throws InputError naming `path` if there is no frame, the frames differ in size, a triangle

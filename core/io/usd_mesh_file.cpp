@@ -69,10 +69,10 @@ Points velocities(const MeshSequence& mesh, std::size_t f)
 
 Points extent(const Points& frame)
 {
-    Points box{{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
-                std::numeric_limits<float>::max()},
-               {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
-                std::numeric_limits<float>::lowest()}};
+    Points box{
+        {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()},
+        {std::numeric_limits<float>::lowest(), std::numeric_limits<float>::lowest(),
+         std::numeric_limits<float>::lowest()}};
     for (const auto& p : frame)
         for (std::size_t k = 0; k < 3; ++k) {
             box[0][k] = std::min(box[0][k], p[k]);
@@ -87,7 +87,8 @@ std::string layerHeader(const MeshSequence& mesh)
     std::string out = "#usda 1.0\n(\n    defaultPrim = \"" + mesh.name + "\"\n";
     out += "    doc = \"A tracked mesh written by sculpt: fixed faces, points per frame\"\n";
     out += "    metersPerUnit = 0.001\n    upAxis = \"Z\"\n";
-    out += "    startTimeCode = " + std::to_string(mesh.firstFrame) + "\n    endTimeCode = " + std::to_string(last) + "\n";
+    out +=
+        "    startTimeCode = " + std::to_string(mesh.firstFrame) + "\n    endTimeCode = " + std::to_string(last) + "\n";
     out += "    framesPerSecond = ";
     appendNumber(out, mesh.framesPerSecond);
     out += "\n    timeCodesPerSecond = ";

@@ -114,7 +114,8 @@ std::vector<std::uint8_t> MeshTracker::invertedTriangles() const
         const Vec3d n = normalOf(mMesh, mMesh.triangles[t]);
         // A quasi-critical vertex's gradient gives no direction to be against.
         bool against = true;
-        for (const std::uint32_t v : mMesh.triangles[t]) against = against && !mQuasiCritical[v] && n.dot(mNormals[v]) < 0.0;
+        for (const std::uint32_t v : mMesh.triangles[t])
+            against = against && !mQuasiCritical[v] && n.dot(mNormals[v]) < 0.0;
         inverted[t] = against;
     }
     return inverted;

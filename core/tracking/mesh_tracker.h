@@ -23,8 +23,8 @@
 namespace sculpt {
 
 struct TrackerOptions {
-    double edgeVoxels = 1.5;         ///< e, the target edge length, in voxels
-    double gain = 1.0;               ///< the triangles' stiffness times the step (E dt)
+    double edgeVoxels = 1.5;  ///< e, the target edge length, in voxels
+    double gain = 1.0;        ///< the triangles' stiffness times the step (E dt)
     /// The rest triangle's side, in e. The mesh lives at about 1.5 e: resting a little under it
     /// keeps every triangle in tension (a compressed one buckles), and less pre-stress lets the
     /// triangles take up a morph's stretch with half the edge changes of a rest side of e

@@ -3,8 +3,8 @@
 #include "core/tracking/surface_projection.h"
 
 #include <algorithm>
-#include <tuple>
 #include <cmath>
+#include <tuple>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -15,8 +15,8 @@ namespace {
 using openvdb::Vec3d;
 using Triangle = std::array<std::uint32_t, 3>;
 
-constexpr double kPairVoxels = 3.0;  // how far apart two contradicted sheets' vertices may be
-constexpr double kOpposed = 0.5;     // cosines: normals against each other, along the pair
+constexpr double kPairVoxels = 3.0;         // how far apart two contradicted sheets' vertices may be
+constexpr double kOpposed = 0.5;            // cosines: normals against each other, along the pair
 constexpr double kOffSurfaceVoxels = 0.75;  // |phi| at a triangle's centroid: it spans no surface
 constexpr int kCleanPasses = 4;             // of cutting more where two borders touch
 
@@ -97,7 +97,7 @@ std::vector<std::uint32_t> eventVertices(const TrackedMesh& mesh, const std::vec
             if (facing > -kOpposed) return;
             const double along = n.dot(d) / length, back = -normals[w].dot(d) / length;
             const double midway = probe.at(p + 0.5 * d).phi;
-            const bool joined = along > kOpposed && back > kOpposed && midway < 0.0;     // facing, solid between
+            const bool joined = along > kOpposed && back > kOpposed && midway < 0.0;    // facing, solid between
             const bool parted = along < -kOpposed && back < -kOpposed && midway > 0.0;  // back to back, air between
             if (joined || parted) marked[v] = marked[w] = 1;
         });
@@ -173,8 +173,7 @@ void bridge(const std::vector<Vec3d>& x, const std::vector<std::uint32_t>& p, co
     std::size_t i = 0, back = 0;
     while (i < n || back < m) {
         const std::uint32_t pi = p[i % n], pn = p[(i + 1) % n], qj = qAt(back), qp = qAt(back + 1);
-        const bool advanceP =
-            back == m || (i < n && (x[pn] - x[qj]).lengthSqr() <= (x[pi] - x[qp]).lengthSqr());
+        const bool advanceP = back == m || (i < n && (x[pn] - x[qj]).lengthSqr() <= (x[pi] - x[qp]).lengthSqr());
         if (advanceP) {
             out.push_back({pi, pn, qj});
             ++i;
@@ -288,7 +287,8 @@ Surgery operateOnTopology(TrackedMesh& mesh, const std::vector<Vec3d>& normals,
         if (loop.size() < 3) return {};
     if (surgery.kind == SurgeryKind::Bridge) {
         if (loops.size() % 2 != 0) return {};
-        for (const auto& [p, q] : nearestPairs(result.positions, loops)) bridge(result.positions, loops[p], loops[q], result.triangles);
+        for (const auto& [p, q] : nearestPairs(result.positions, loops))
+            bridge(result.positions, loops[p], loops[q], result.triangles);
     } else {
         for (const auto& loop : loops) cap(result, loop, result.triangles);
         surgery.addedVertices = loops.size();

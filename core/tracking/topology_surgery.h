@@ -4,18 +4,23 @@
 ///        mesh"): the tracked mesh is cut and closed only where the surface's topology changed,
 ///        so the vertices away from the event keep their ids.
 ///
-/// Where the topology changed, the mesh contradicts the field between two of its own sheets: two
-/// sheets facing each other across what the mesh calls outside are now joined by solid (phi < 0
-/// midway: shells merging, a hole closing), or two sheets back to back across what it calls
-/// solid are now parted by air (phi > 0 midway: a neck pinching off, a hole opening). Those
-/// vertex pairs (within 3 voxels, normals opposed) mark the event. Their triangles and one more
-/// ring are cut away, which must leave exactly two new border loops. When the Euler
-/// characteristic falls (a merge, a hole opening) the two loops are bridged by a strip of
-/// triangles, choosing the shorter diagonal at each step; when it rises (a pinch, a hole
-/// closing) each loop is capped by a fan around a new vertex at its centroid. The result must
-/// be a closed 2-manifold of the marching-cubes mesh's topology, or the mesh is left as it was
-/// (the caller then seeds it again: stage 1). New vertices lie off the surface and new edges may
-/// be long: project, relax and remesh after.
+/// Where the topology changed, the mesh contradicts the field, and these mark the event:
+/// - two sheets facing each other across what the mesh calls outside, now joined by solid
+///   (phi < 0 midway: shells merging, a hole closing), or back to back across what it calls
+///   solid, now parted by air (phi > 0 midway: a neck pinching off, a hole opening): vertex pairs
+///   within 3 voxels, normals opposed;
+/// - one piece of surface covered by two sheets (vertices under a voxel apart, normals alike, not
+///   neighbours): projection brought both onto a neck;
+/// - triangles whose centroid is over 0.75 voxel off the surface (spanning a gap), and points
+///   left quasi-critical.
+/// The triangles on those vertices are cut away (more where two borders would touch, so every
+/// border loop is simple). When the Euler characteristic falls (merges, holes opening) the loops
+/// are bridged in pairs, nearest centroids first (several holes can open in one step), by a
+/// strip choosing the shorter diagonal at each step; when it rises (pinches, holes closing) each
+/// loop is capped by a fan around a new vertex at its centroid. The result must be a closed,
+/// oriented 2-manifold of the marching-cubes mesh's topology, or the mesh is left as it was (the
+/// caller then seeds it again: stage 1). New vertices lie off the surface and new edges may be
+/// long: project, relax and remesh after.
 
 #include "core/field/field_image.h"
 #include "core/tracking/tracked_mesh.h"
@@ -32,7 +37,7 @@ struct Surgery {
     SurgeryKind kind = SurgeryKind::None;
     openvdb::Vec3d centre{0.0};  ///< the mean of the contradicted vertices, world units
     double radius = 0.0;         ///< the farthest removed vertex from the centre, world units
-    std::size_t loops = 0;  ///< border loops cut (two per merge, pinch or hole)
+    std::size_t loops = 0;       ///< border loops cut (two per merge, pinch or hole)
     std::size_t removedVertices = 0, addedVertices = 0;
 };
 

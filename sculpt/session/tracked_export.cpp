@@ -37,7 +37,7 @@ std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, cons
         rest.triangles.assign(segment.triangles.begin(), segment.triangles.end());
         writeMesh(rest, segmentPath(directory, s, "ply"));
         writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, segmentPath(directory, s, "pc2"));
-        const MeshSequence animated{segmentName(s), rest.triangles, segment.positions, fps,
+        const MeshSequence animated{segmentName(s),     rest.triangles, segment.positions, fps,
                                     segment.firstFrame, segment.ids};
         writeGltfMorph(animated, segmentPath(directory, s, "glb"));
         writeUsdMesh(animated, segmentPath(directory, s, "usda"));

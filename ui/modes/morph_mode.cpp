@@ -12,8 +12,7 @@ namespace sculpt::ui {
 
 MorphMode::MorphMode(vtkRenderer* scene, std::string label, MorphRun run)
     : mLabel(std::move(label)), mFrames(std::move(run)), mWire(scene)
-{
-}
+{}
 
 std::string MorphMode::waitNotice() const
 {

@@ -263,9 +263,9 @@ struct EventRun {
     std::size_t steps = 0, mismatches = 0, reseeds = 0;
     std::size_t invertedAfter = 0;  // triangles facing against grad phi two frames after the event
     std::vector<Surgery> surgeries;
-    double keptFar = 1.0;         // share of the ids farther than 3e from the event that survived it
-    double worstPhiAfter = 0.0;   // voxels, the two frames after the event
-    bool manifoldAfter = false;   // two frames after the event
+    double keptFar = 1.0;        // share of the ids farther than 3e from the event that survived it
+    double worstPhiAfter = 0.0;  // voxels, the two frames after the event
+    bool manifoldAfter = false;  // two frames after the event
 };
 
 /// Steps a tracker through `fields(k)`, k = 1 .. steps, the vertices moved by `move` first.

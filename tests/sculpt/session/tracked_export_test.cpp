@@ -183,7 +183,8 @@ TEST(TrackedExport, TheUsdLayerHoldsTheFacesPointsVelocitiesAndIdsOfEveryFrame)
     EXPECT_NEAR(meanX, 12.0, 0.05);
     const double dt = 1.0 / 24.0;
     for (std::size_t v = 0; v < vertices; ++v)
-        EXPECT_NEAR(velocities[2][1 + 3 * v + 1], (points[3][1 + 3 * v + 1] - points[1][1 + 3 * v + 1]) / (2 * dt), 1e-3);
+        EXPECT_NEAR(velocities[2][1 + 3 * v + 1], (points[3][1 + 3 * v + 1] - points[1][1 + 3 * v + 1]) / (2 * dt),
+                    1e-3);
 }
 
 TEST(TrackedExport, APointCacheOfTheWrongSizeIsRefusedNamingTheFile)
