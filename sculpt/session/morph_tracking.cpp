@@ -9,6 +9,7 @@ void TrackingTally::add(const TrackingStep& s)
     collapses += s.collapses;
     inverted += s.inverted;
     quasiCritical += s.quasiCritical.size();
+    surgeries += s.surgery.kind != SurgeryKind::None;
     reseeds += s.reseeded;
 }
 

@@ -13,7 +13,8 @@ namespace sculpt {
 
 /// What the tracked mesh went through over a whole morph.
 struct TrackingTally {
-    std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0, reseeds = 0;
+    std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0;
+    std::size_t surgeries = 0, reseeds = 0;  ///< topology events cut and closed (stage 2), seeded again (stage 1)
     void add(const TrackingStep& s);
 };
 
