@@ -2,6 +2,8 @@
 // step), stays on the surface, closed and 2-manifold with the marching-cubes mesh's topology,
 // its triangles well shaped and its edges within [e, 2e], bit for bit the same on 1 or 2 threads.
 
+#include "core/brushes/brush.h"
+#include "core/local/falloff.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph.h"
 #include "core/primitives/analytic_shapes.h"
@@ -195,6 +197,42 @@ TEST(MeshTracker, FollowsASphereMorphingIntoABoxChangingEdgesOnlyLocally)
     EXPECT_GT(double(kept.size()), 0.9 * double(first.ids.size())) << "vertex ids kept to the last frame";
     EXPECT_LT(double(run.changes), 0.1 * double(first.ids.size()));
     expectWellShaped(last, *run.last, run.edge);
+}
+
+// A grab stroke pulling the side of a ball out by 3 voxels in 12 stamps, the tracker told the
+// brush's own displacement (its falloff around each sub-step's ball): every vertex stays, on the
+// surface and well shaped; the bump's flank stretches a few edges past 2e, which are split.
+TEST(MeshTracker, FollowsAGrabStrokeKeepingEveryVertex)
+{
+    const double r = 12.0, h = 0.5;
+    FieldImage field = makeSphere(r, h);
+    MeshTracker tracker(field);
+    const TrackedMesh first = tracker.mesh();
+    BrushSettings brush;
+    brush.tool = BrushTool::Grab;
+    brush.radiusWorld = 5.0;
+    brush.strength = 1.0;
+    const Vec3d step(0.25 * h, 0.0, 0.0);
+    double worstPhi = 0.0;
+    std::size_t changes = 0;
+    for (int k = 0; k < 12; ++k) {
+        BrushStamp stamp;
+        stamp.previousWorld = Vec3d(r, 0.0, 0.0) + step * k;
+        stamp.centreWorld = stamp.previousWorld + step;
+        applyStamp(field, brush, stamp, nullptr);
+        const FalloffBall ball{stamp.previousWorld, brush.radiusWorld, brush.falloff};  // one sub-step: under a voxel
+        const TrackingStep s = tracker.step(field, [&](const Vec3d& p) { return step * ball.weightAt(p); });
+        changes += s.splits + s.collapses;
+        EXPECT_TRUE(s.quasiCritical.empty());
+        EXPECT_EQ(s.surgery.kind, SurgeryKind::None);
+        EXPECT_FALSE(s.reseeded);
+        worstPhi = std::max(worstPhi, worstPhiVoxels(tracker.mesh(), field));
+    }
+    EXPECT_LT(double(changes), 0.01 * double(first.ids.size()));
+    const std::set<std::uint32_t> kept(tracker.mesh().ids.begin(), tracker.mesh().ids.end());
+    for (const std::uint32_t id : first.ids) ASSERT_TRUE(kept.count(id)) << "vertex " << id << " was lost";
+    EXPECT_LT(worstPhi, 0.05);
+    expectWellShaped(tracker.mesh(), field, tracker.edgeLength());
 }
 
 // A box opening into a torus (four holes open at once, then join into one): the tracked mesh's
