@@ -18,8 +18,6 @@ struct Edge {
     double length;
 };
 
-std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
-
 class Remesher {
 public:
     Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
@@ -180,7 +178,6 @@ private:
     {
         if (mMesh.positions.size() <= 4) return false;
         mDeadTriangle.resize(mMesh.triangles.size(), 0);
-        mDeadVertex.resize(mMesh.positions.size(), 0);
         std::vector<Edge> candidates;
         for (const Edge& e : edges())
             if (e.length < mShortest && !frozen(e) && change(e) <= kRateTolerance * mE) candidates.push_back(e);
@@ -254,7 +251,6 @@ private:
             else std::replace(tri.begin(), tri.end(), gone, keep);
         }
         mMesh.positions[keep] = m;
-        mDeadVertex[gone] = 1;
         for (const std::uint32_t w : keep == a ? nb : na)
             if (w != keep) mFrozenNext.insert(key(keep, w));
         for (const std::uint32_t w : keep == a ? na : nb)
@@ -280,32 +276,16 @@ private:
         return after.dot(before) <= 0.1 * before.length() * after.length();  // keeps within ~84 degrees
     }
 
-    /// Drops dead triangles and vertices, renumbering the rest in order.
+    /// Drops dead triangles, then the vertices they left unused (a collapse's), renumbering the rest in order.
     void compact()
     {
         mDeadTriangle.resize(mMesh.triangles.size(), 0);
-        mDeadVertex.resize(mMesh.positions.size(), 0);
-        std::vector<std::uint32_t> index(mMesh.positions.size());
-        std::uint32_t next = 0;
-        for (std::size_t v = 0; v < index.size(); ++v) {
-            index[v] = next;
-            if (mDeadVertex[v]) continue;
-            mMesh.positions[next] = mMesh.positions[v];
-            mMesh.ids[next] = mMesh.ids[v];
-            ++next;
-        }
-        mMesh.positions.resize(next);
-        mMesh.ids.resize(next);
         std::size_t kept = 0;
-        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t) {
-            if (mDeadTriangle[t]) continue;
-            auto tri = mMesh.triangles[t];
-            for (auto& v : tri) v = index[v];
-            mMesh.triangles[kept++] = tri;
-        }
+        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t)
+            if (!mDeadTriangle[t]) mMesh.triangles[kept++] = mMesh.triangles[t];
         mMesh.triangles.resize(kept);
+        mMesh.dropUnusedVertices();
         mDeadTriangle.clear();
-        mDeadVertex.clear();
     }
 
     void remember()
@@ -321,7 +301,7 @@ private:
     const double mE, mShortest;
     const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
-    std::vector<std::uint8_t> mDeadTriangle, mDeadVertex;
+    std::vector<std::uint8_t> mDeadTriangle;
     std::vector<std::uint32_t> mStarStart, mStar;
     RemeshCounts mCounts;
 };

@@ -20,8 +20,6 @@ constexpr double kOpposed = 0.5;            // cosines: normals against each oth
 constexpr double kOffSurfaceVoxels = 0.75;  // |phi| at a triangle's centroid: it spans no surface
 constexpr int kCleanPasses = 4;             // of cutting more where two borders touch
 
-std::uint64_t halfEdge(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
-
 /// Vertices by grid cell of side `cell`, to find the ones near a point.
 class VertexHash {
 public:
@@ -135,13 +133,13 @@ BorderLoops borderLoops(const std::vector<Triangle>& triangles)
 {
     std::unordered_set<std::uint64_t> present;
     for (const Triangle& t : triangles)
-        for (int k = 0; k < 3; ++k) present.insert(halfEdge(t[k], t[(k + 1) % 3]));
+        for (int k = 0; k < 3; ++k) present.insert(halfEdgeKey(t[k], t[(k + 1) % 3]));
     BorderLoops found;
     std::unordered_map<std::uint32_t, std::uint32_t> next;
     for (const Triangle& t : triangles)
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (!present.count(halfEdge(b, a)) && !next.emplace(b, a).second) found.pinched.push_back(b);
+            if (!present.count(halfEdgeKey(b, a)) && !next.emplace(b, a).second) found.pinched.push_back(b);
         }
     if (!found.pinched.empty()) return found;
     std::vector<std::uint32_t> starts;
@@ -219,27 +217,6 @@ void cap(TrackedMesh& mesh, const std::vector<std::uint32_t>& loop, std::vector<
     for (std::size_t k = 0; k < loop.size(); ++k) out.push_back({loop[k], loop[(k + 1) % loop.size()], c});
 }
 
-/// Drops the vertices no triangle uses, renumbering the rest in order.
-void dropUnused(TrackedMesh& mesh)
-{
-    std::vector<std::uint8_t> used(mesh.positions.size(), 0);
-    for (const Triangle& t : mesh.triangles)
-        for (const std::uint32_t v : t) used[v] = 1;
-    std::vector<std::uint32_t> index(mesh.positions.size(), 0);
-    std::uint32_t next = 0;
-    for (std::size_t v = 0; v < used.size(); ++v) {
-        index[v] = next;
-        if (!used[v]) continue;
-        mesh.positions[next] = mesh.positions[v];
-        mesh.ids[next] = mesh.ids[v];
-        ++next;
-    }
-    mesh.positions.resize(next);
-    mesh.ids.resize(next);
-    for (Triangle& t : mesh.triangles)
-        for (std::uint32_t& v : t) v = index[v];
-}
-
 }  // namespace
 
 bool closedOrientedManifold(const std::vector<Triangle>& triangles)
@@ -247,7 +224,7 @@ bool closedOrientedManifold(const std::vector<Triangle>& triangles)
     std::unordered_set<std::uint64_t> edges;
     for (const Triangle& t : triangles)
         for (int k = 0; k < 3; ++k)
-            if (t[k] == t[(k + 1) % 3] || !edges.insert(halfEdge(t[k], t[(k + 1) % 3])).second) return false;
+            if (t[k] == t[(k + 1) % 3] || !edges.insert(halfEdgeKey(t[k], t[(k + 1) % 3])).second) return false;
     for (const std::uint64_t e : edges)
         if (!edges.count((e << 32) | (e >> 32))) return false;
     return true;
@@ -295,7 +272,7 @@ Surgery operateOnTopology(TrackedMesh& mesh, const std::vector<Vec3d>& normals,
     }
     surgery.loops = loops.size();
     const std::size_t before = result.positions.size() - surgery.addedVertices;
-    dropUnused(result);
+    result.dropUnusedVertices();
     surgery.removedVertices = before + surgery.addedVertices - result.positions.size();
     if (!closedOrientedManifold(result.triangles) ||
         surfaceTopology(result.triangles, result.positions.size()) != truth)

@@ -29,6 +29,26 @@ TriangleMesh TrackedMesh::triangleMesh() const
     return mesh;
 }
 
+void TrackedMesh::dropUnusedVertices()
+{
+    std::vector<std::uint8_t> used(positions.size(), 0);
+    for (const auto& t : triangles)
+        for (const std::uint32_t v : t) used[v] = 1;
+    std::vector<std::uint32_t> index(positions.size(), 0);
+    std::uint32_t next = 0;
+    for (std::size_t v = 0; v < used.size(); ++v) {
+        index[v] = next;
+        if (!used[v]) continue;
+        positions[next] = positions[v];
+        ids[next] = ids[v];
+        ++next;
+    }
+    positions.resize(next);
+    ids.resize(next);
+    for (auto& t : triangles)
+        for (std::uint32_t& v : t) v = index[v];
+}
+
 namespace {
 
 template <typename Triangles>

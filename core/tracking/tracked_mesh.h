@@ -26,6 +26,8 @@ struct TrackedMesh {
     static TrackedMesh of(const TriangleMesh& mesh, std::uint32_t firstId = 0);
     /// Single precision, for the writers and the display (normals left empty).
     TriangleMesh triangleMesh() const;
+    /// Drops the vertices no triangle uses, renumbering the rest in order (ids stay with them).
+    void dropUnusedVertices();
 };
 
 /// An undirected edge between two vertex ids, as one key (smaller id in the high half).
@@ -33,6 +35,9 @@ inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
 {
     return a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
 }
+
+/// A directed edge between two vertex indices, as one key.
+inline std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
 
 /// What a topology event changes: the Euler characteristic and the number of shells.
 struct SurfaceTopology {

@@ -2,6 +2,14 @@
 
 namespace sculpt {
 
+TriangleMesh TrackedSegment::frameMesh(std::size_t frame) const
+{
+    TriangleMesh mesh;
+    mesh.positions.assign(positions.at(frame).begin(), positions.at(frame).end());
+    mesh.triangles.assign(triangles.begin(), triangles.end());
+    return mesh;
+}
+
 void TrackedSequence::add(const TrackedMesh& frame)
 {
     if (mSegments.empty() || mSegments.back().ids != frame.ids || mSegments.back().triangles != frame.triangles) {

@@ -4,6 +4,7 @@
 ///        segment every frame has the same vertices (by id, in the same order) and triangles,
 ///        which is what a point cache or a set of shape keys can play.
 
+#include "core/mesh/triangle_mesh.h"
 #include "core/tracking/tracked_mesh.h"
 
 #include <array>
@@ -16,6 +17,9 @@ struct TrackedSegment {
     std::vector<std::array<std::uint32_t, 3>> triangles;       ///< #F, shared by its frames
     std::vector<std::uint32_t> ids;                            ///< #V stable vertex ids
     std::vector<std::vector<std::array<float, 3>>> positions;  ///< per frame, #V world points
+
+    /// Its `frame`-th frame (counted from firstFrame) as a mesh.
+    TriangleMesh frameMesh(std::size_t frame) const;
 };
 
 class TrackedSequence {

@@ -32,11 +32,7 @@ TriangleMesh MorphTracking::frameMesh(int index) const
 {
     const std::size_t segmentIndex = mFrames.at(std::size_t(index)).segment;
     const TrackedSegment& segment = mSequence.segments()[segmentIndex];
-    TriangleMesh mesh;
-    const auto& points = segment.positions.at(std::size_t(index - segment.firstFrame));
-    mesh.positions.assign(points.begin(), points.end());
-    mesh.triangles.assign(segment.triangles.begin(), segment.triangles.end());
-    return mesh;
+    return segment.frameMesh(std::size_t(index - segment.firstFrame));
 }
 
 }  // namespace sculpt

@@ -32,9 +32,7 @@ std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, cons
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
         const TrackedSegment& segment = sequence.segments()[s];
-        TriangleMesh rest;
-        rest.positions.assign(segment.positions.front().begin(), segment.positions.front().end());
-        rest.triangles.assign(segment.triangles.begin(), segment.triangles.end());
+        const TriangleMesh rest = segment.frameMesh(0);
         writeMesh(rest, segmentPath(directory, s, "ply"));
         writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, segmentPath(directory, s, "pc2"));
         const MeshSequence animated{segmentName(s),     rest.triangles, segment.positions, fps,
