@@ -23,7 +23,8 @@ public:
     Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
              const RemeshLimits& limits)
         : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(limits.edge),
-          mShortest(limits.shortest > 0.0 ? limits.shortest : limits.edge), mFlips(limits.flips)
+          mShortest(limits.shortest > 0.0 ? limits.shortest : limits.edge),
+          mLongest(limits.longest > 0.0 ? limits.longest : 2.0 * limits.edge), mFlips(limits.flips)
     {
         mInverted.resize(mesh.triangles.size(), 0);
     }
@@ -74,7 +75,7 @@ private:
     {
         std::vector<Edge> candidates;
         for (const Edge& e : edges())
-            if (e.length > 2.0 * mE && !frozen(e) && change(e) >= -kRateTolerance * mE) candidates.push_back(e);
+            if (e.length > mLongest && !frozen(e) && change(e) >= -kRateTolerance * mE) candidates.push_back(e);
         if (candidates.empty()) return false;
         std::sort(candidates.begin(), candidates.end(), [this](const Edge& x, const Edge& y) {
             return std::make_tuple(-x.length, key(x.a, x.b)) < std::make_tuple(-y.length, key(y.a, y.b));
@@ -124,7 +125,7 @@ private:
             const auto off = [&](std::uint32_t v, int change) { return std::abs(valence[v] + change - 6); };
             if (off(a, -1) + off(b, -1) + off(c, 1) + off(d, 1) >= off(a, 0) + off(b, 0) + off(c, 0) + off(d, 0))
                 continue;
-            if (length(c, d) > 2.0 * mE || !keepsFacing(a, b, c, d)) continue;
+            if (length(c, d) > mLongest || !keepsFacing(a, b, c, d)) continue;
             // (a, b, c) and (b, a, d) become (a, d, c) and (b, c, d).
             mMesh.triangles[t1] = {a, d, c};
             mMesh.triangles[t2] = {b, c, d};
@@ -240,7 +241,7 @@ private:
         const Vec3d m = 0.5 * (mMesh.positions[a] + mMesh.positions[b]);
         for (const std::uint32_t v : {a, b}) {
             for (const std::uint32_t w : v == a ? na : nb)
-                if (w != a && w != b && (mMesh.positions[w] - m).length() > 2.0 * mE) return false;
+                if (w != a && w != b && (mMesh.positions[w] - m).length() > mLongest) return false;
             for (const std::uint32_t t : star(v))
                 if (turnsOver(t, a, b, m)) return false;
         }
@@ -298,7 +299,7 @@ private:
     TrackedMesh& mMesh;
     EdgeMemory& mMemory;
     std::vector<std::uint8_t> mInverted;
-    const double mE, mShortest;
+    const double mE, mShortest, mLongest;
     const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
     std::vector<std::uint8_t> mDeadTriangle;

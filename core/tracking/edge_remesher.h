@@ -9,7 +9,7 @@
 /// text swaps the two rules; its figure is the one followed here.) An edge a change made is
 /// frozen for the next step, so a split and a collapse never chase each other. A collapse is
 /// refused when it would make the mesh non-manifold (the two ends share neighbours other than
-/// the two opposite vertices), turn a triangle over, or make an edge longer than 2e; an edge of
+/// the two opposite vertices), turn a triangle over, or make an edge longer than the split length (2e); an edge of
 /// an inverted triangle is never split. Changes are made in passes over independent edges
 /// (no two touching the same triangle), the longest split and the shortest collapsed first.
 /// Seeding also flips edges towards valence 6 (never while tracking: a flip changes connectivity).
@@ -36,6 +36,7 @@ struct RemeshCounts {
 struct RemeshLimits {
     double edge = 1.0;      ///< e, world units
     double shortest = 0.0;  ///< edges under this are collapsed (e when 0)
+    double longest = 0.0;   ///< edges over this are split (2e when 0)
     /// Flip edges where that brings the four vertices' valences nearer 6: a regular mesh relaxes
     /// to nearly equal edges, so it can stretch and shrink further before an edge leaves [e, 2e].
     bool flips = false;

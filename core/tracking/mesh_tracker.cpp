@@ -33,20 +33,26 @@ void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
 {
     mMesh = TrackedMesh::of(mc, mMesh.nextId);
     mMemory = {};
-    for (int i = 0; i < mOptions.seedSteps; ++i) advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, true});
+    for (int i = 0; i < mOptions.seedSteps; ++i)
+        advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, mOptions.seedLongestEdges * mEdge, true},
+                relaxation());
 }
 
 TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
 {
-    TrackingStep report = advance(field, displacement, {mEdge});
+    TrackingStep report = advance(field, displacement, {mEdge}, relaxation());
     const TriangleMesh mc = meshLevelSet(field);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
     report.surgery = operateOnTopology(mMesh, mNormals, mQuasiCritical, field, truth);
     if (report.surgery.kind != SurgeryKind::None) {
-        // The cut's new vertices and long edges: onto the surface and into [e, 2e].
+        // The cut's new vertices and long edges: onto the surface and into [e, 2e]. Its fans are
+        // far from the rest shape, where the co-rotational linearisation overshoots and folds
+        // them: they relax a gentler fraction of the way.
+        const RelaxOptions settling{mOptions.restEdges * mEdge, mOptions.settleGain,
+                                    mOptions.settleConjugateGradientSteps};
         for (int i = 0; i < kSettleSteps; ++i) {
-            const TrackingStep settle = advance(field, {}, {mEdge});
+            const TrackingStep settle = advance(field, {}, {mEdge}, settling);
             report.splits += settle.splits;
             report.collapses += settle.collapses;
             report.quasiCritical = settle.quasiCritical;
@@ -62,7 +68,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
 }
 
 TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement,
-                                  const RemeshLimits& limits)
+                                  const RemeshLimits& limits, const RelaxOptions& relaxation)
 {
     if (displacement)
         for (Vec3d& p : mMesh.positions) p += displacement(p);
@@ -73,19 +79,23 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     unfold(inverted);
     // Relaxed before it is judged, a stretch spreads over the triangles around it instead of
     // splitting the one edge it reached first (a third fewer edge changes, sphere -> box).
-    relax(field);
+    relax(field, relaxation);
     const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
     project(field);
-    relax(field);
+    relax(field, relaxation);
     report.quasiCritical = flagged();
     return report;
 }
 
-void MeshTracker::relax(const FieldImage& field)
+RelaxOptions MeshTracker::relaxation() const
 {
-    const RelaxOptions options{mOptions.restEdges * mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
+    return {mOptions.restEdges * mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
+}
+
+void MeshTracker::relax(const FieldImage& field, const RelaxOptions& options)
+{
     const std::vector<Vec3d> dx = relaxationStep(mMesh.positions, mMesh.triangles, mNormals, mQuasiCritical, options);
     for (std::size_t v = 0; v < dx.size(); ++v) mMesh.positions[v] += dx[v];
     project(field);

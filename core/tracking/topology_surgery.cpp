@@ -3,7 +3,9 @@
 #include "core/tracking/surface_projection.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 #include <tuple>
 #include <unordered_map>
 #include <unordered_set>
@@ -15,10 +17,14 @@ namespace {
 using openvdb::Vec3d;
 using Triangle = std::array<std::uint32_t, 3>;
 
-constexpr double kPairVoxels = 3.0;         // how far apart two contradicted sheets' vertices may be
-constexpr double kOpposed = 0.5;            // cosines: normals against each other, along the pair
-constexpr double kOffSurfaceVoxels = 0.75;  // |phi| at a triangle's centroid: it spans no surface
-constexpr int kCleanPasses = 4;             // of cutting more where two borders touch
+constexpr double kPairVoxels = 3.0;  // how far apart two contradicted sheets' vertices may be
+constexpr double kOpposed = 0.5;     // cosines: normals against each other, along the pair
+// |phi| at a triangle's centroid, in voxels, over which it spans no surface: the loosest first,
+// tighter where the cut it gives does not separate what the field separates (a band across a
+// crease whose triangles bend over the gap only a little).
+constexpr std::array<double, 3> kOffSurfaceVoxels = {0.75, 0.5, 0.3};
+constexpr int kCleanPasses = 4;        // of cutting more where two borders touch
+constexpr std::size_t kGrowRings = 2;  // of widening a cut that did not give the field's topology
 
 /// Vertices by grid cell of side `cell`, to find the ones near a point.
 class VertexHash {
@@ -72,7 +78,8 @@ std::vector<std::vector<std::uint32_t>> neighbourLists(const TrackedMesh& mesh)
 /// The vertices where the mesh contradicts the field (see the header): pairs of sheets joined or
 /// parted, the same surface covered twice, triangles off the surface, points left quasi-critical.
 std::vector<std::uint32_t> eventVertices(const TrackedMesh& mesh, const std::vector<Vec3d>& normals,
-                                         const std::vector<std::uint8_t>& quasiCritical, const FieldImage& field)
+                                         const std::vector<std::uint8_t>& quasiCritical, const FieldImage& field,
+                                         double offSurfaceVoxels)
 {
     const double h = field.voxelSize(), reach = kPairVoxels * h;
     const VertexHash hash(mesh.positions, reach);
@@ -102,7 +109,7 @@ std::vector<std::uint32_t> eventVertices(const TrackedMesh& mesh, const std::vec
     }
     for (const Triangle& t : mesh.triangles) {
         const Vec3d centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
-        if (std::abs(probe.at(centroid).phi) > kOffSurfaceVoxels * h) {
+        if (std::abs(probe.at(centroid).phi) > offSurfaceVoxels * h) {
             for (const std::uint32_t v : t) marked[v] = 1;
         }
     }
@@ -217,6 +224,46 @@ void cap(TrackedMesh& mesh, const std::vector<std::uint32_t>& loop, std::vector<
     for (std::size_t k = 0; k < loop.size(); ++k) out.push_back({loop[k], loop[(k + 1) % loop.size()], c});
 }
 
+/// `mesh` with the triangles on `region` cut away (more where two borders would touch, until
+/// the loops are simple) and the loops closed as `surgery.kind` says; nothing when the result
+/// is not a closed, oriented 2-manifold of topology `truth`. Fills `surgery`'s counts.
+std::optional<TrackedMesh> cutAndClose(const TrackedMesh& mesh, std::vector<std::uint8_t> region,
+                                       const SurfaceTopology& truth, Surgery& surgery)
+{
+    TrackedMesh result = mesh;
+    BorderLoops border;
+    for (int pass = 0; pass < kCleanPasses; ++pass) {
+        const std::vector<std::uint8_t> cut = trianglesToCut(mesh, region);
+        result.triangles.clear();
+        for (std::size_t t = 0; t < cut.size(); ++t)
+            if (!cut[t]) result.triangles.push_back(mesh.triangles[t]);
+        border = borderLoops(result.triangles);
+        if (border.pinched.empty()) break;
+        for (const std::uint32_t v : border.pinched) region[v] = 1;
+    }
+    const std::vector<std::vector<std::uint32_t>>& loops = border.loops;
+    if (!border.pinched.empty() || loops.empty()) return std::nullopt;
+    for (const auto& loop : loops)
+        if (loop.size() < 3) return std::nullopt;
+    surgery.addedVertices = 0;
+    if (surgery.kind == SurgeryKind::Bridge) {
+        if (loops.size() % 2 != 0) return std::nullopt;
+        for (const auto& [p, q] : nearestPairs(result.positions, loops))
+            bridge(result.positions, loops[p], loops[q], result.triangles);
+    } else {
+        for (const auto& loop : loops) cap(result, loop, result.triangles);
+        surgery.addedVertices = loops.size();
+    }
+    surgery.loops = loops.size();
+    const std::size_t before = result.positions.size() - surgery.addedVertices;
+    result.dropUnusedVertices();
+    surgery.removedVertices = before + surgery.addedVertices - result.positions.size();
+    if (!closedOrientedManifold(result.triangles) ||
+        surfaceTopology(result.triangles, result.positions.size()) != truth)
+        return std::nullopt;
+    return result;
+}
+
 }  // namespace
 
 bool closedOrientedManifold(const std::vector<Triangle>& triangles)
@@ -236,7 +283,7 @@ Surgery operateOnTopology(TrackedMesh& mesh, const std::vector<Vec3d>& normals,
 {
     const SurfaceTopology now = surfaceTopology(mesh.triangles, mesh.positions.size());
     if (truth.euler == now.euler) return {};
-    const std::vector<std::uint32_t> event = eventVertices(mesh, normals, quasiCritical, field);
+    const std::vector<std::uint32_t> event = eventVertices(mesh, normals, quasiCritical, field, kOffSurfaceVoxels[0]);
     if (event.empty()) return {};
     Surgery surgery;
     surgery.kind = truth.euler < now.euler ? SurgeryKind::Bridge : SurgeryKind::Cap;
@@ -244,41 +291,26 @@ Surgery operateOnTopology(TrackedMesh& mesh, const std::vector<Vec3d>& normals,
     for (const std::uint32_t v : event)
         surgery.radius = std::max(surgery.radius, (mesh.positions[v] - surgery.centre).length());
 
-    // Cut the event's triangles, and more where two borders would touch, until the loops are simple.
+    const auto neighbours = neighbourLists(mesh);
     std::vector<std::uint8_t> region(mesh.positions.size(), 0);
-    for (const std::uint32_t v : event) region[v] = 1;
-    TrackedMesh result = mesh;
-    BorderLoops border;
-    for (int pass = 0; pass < kCleanPasses; ++pass) {
-        const std::vector<std::uint8_t> cut = trianglesToCut(mesh, region);
-        result.triangles.clear();
-        for (std::size_t t = 0; t < cut.size(); ++t)
-            if (!cut[t]) result.triangles.push_back(mesh.triangles[t]);
-        border = borderLoops(result.triangles);
-        if (border.pinched.empty()) break;
-        for (const std::uint32_t v : border.pinched) region[v] = 1;
+    for (std::size_t attempt = 0; attempt < kOffSurfaceVoxels.size() + kGrowRings; ++attempt) {
+        if (attempt < kOffSurfaceVoxels.size()) {
+            const std::vector<std::uint32_t> marks =
+                attempt == 0 ? event : eventVertices(mesh, normals, quasiCritical, field, kOffSurfaceVoxels[attempt]);
+            for (const std::uint32_t v : marks) region[v] = 1;
+        } else {  // the marks still miss part of the event: a ring wider all round
+            std::vector<std::uint8_t> grown = region;
+            for (std::uint32_t v = 0; v < region.size(); ++v)
+                if (region[v])
+                    for (const std::uint32_t w : neighbours[v]) grown[w] = 1;
+            region = std::move(grown);
+        }
+        if (std::optional<TrackedMesh> result = cutAndClose(mesh, region, truth, surgery)) {
+            mesh = std::move(*result);
+            return surgery;
+        }
     }
-    std::vector<std::vector<std::uint32_t>>& loops = border.loops;
-    if (!border.pinched.empty() || loops.empty()) return {};
-    for (const auto& loop : loops)
-        if (loop.size() < 3) return {};
-    if (surgery.kind == SurgeryKind::Bridge) {
-        if (loops.size() % 2 != 0) return {};
-        for (const auto& [p, q] : nearestPairs(result.positions, loops))
-            bridge(result.positions, loops[p], loops[q], result.triangles);
-    } else {
-        for (const auto& loop : loops) cap(result, loop, result.triangles);
-        surgery.addedVertices = loops.size();
-    }
-    surgery.loops = loops.size();
-    const std::size_t before = result.positions.size() - surgery.addedVertices;
-    result.dropUnusedVertices();
-    surgery.removedVertices = before + surgery.addedVertices - result.positions.size();
-    if (!closedOrientedManifold(result.triangles) ||
-        surfaceTopology(result.triangles, result.positions.size()) != truth)
-        return {};
-    mesh = std::move(result);
-    return surgery;
+    return {};
 }
 
 }  // namespace sculpt

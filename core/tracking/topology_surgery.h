@@ -18,8 +18,10 @@
 /// are bridged in pairs, nearest centroids first (several holes can open in one step), by a
 /// strip choosing the shorter diagonal at each step; when it rises (pinches, holes closing) each
 /// loop is capped by a fan around a new vertex at its centroid. The result must be a closed,
-/// oriented 2-manifold of the marching-cubes mesh's topology, or the mesh is left as it was (the
-/// caller then seeds it again: stage 1). New vertices lie off the surface and new edges may be
+/// oriented 2-manifold of the marching-cubes mesh's topology. Where it is not (the marks held
+/// arcs of a neck, not the ring round it), triangles nearer the surface are marked too (centroids
+/// over 0.5, then 0.3 voxel off), then the cut is widened by up to two rings of vertices; if none
+/// of these works the mesh is left as it was (the caller then seeds it again: stage 1). New vertices lie off the surface and new edges may be
 /// long: project, relax and remesh after.
 
 #include "core/field/field_image.h"

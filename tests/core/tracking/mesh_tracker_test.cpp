@@ -180,8 +180,9 @@ TEST(MeshTracker, FollowsARigidMoveWithConstantConnectivity)
     expectWellShaped(last, test::translated(ball, step * 12), tracker.edgeLength());
 }
 
-// A sphere morphed into a box of the same area: the corners stretch and the faces shrink by up
-// to 3 voxels; the mesh stays on the surface and well shaped, changing edges only locally.
+// A sphere morphed into a box of the same volume (a quarter more area): the corners stretch and
+// the faces shrink by up to 3 voxels; the mesh stays on the surface and well shaped, changing
+// under 1% of its edges (the few that the seed's irregular valences leave near e or 2e).
 TEST(MeshTracker, FollowsASphereMorphingIntoABoxChangingEdgesOnlyLocally)
 {
     const double h = 0.5, r = 12.0;
@@ -194,15 +195,15 @@ TEST(MeshTracker, FollowsASphereMorphingIntoABoxChangingEdgesOnlyLocally)
     std::vector<std::uint32_t> kept;
     std::set_intersection(first.ids.begin(), first.ids.end(), last.ids.begin(), last.ids.end(),
                           std::back_inserter(kept));
-    EXPECT_GT(double(kept.size()), 0.9 * double(first.ids.size())) << "vertex ids kept to the last frame";
-    EXPECT_LT(double(run.changes), 0.1 * double(first.ids.size()));
+    EXPECT_GT(double(kept.size()), 0.99 * double(first.ids.size())) << "vertex ids kept to the last frame";
+    EXPECT_LT(double(run.changes), 0.01 * double(first.ids.size()));
     expectWellShaped(last, *run.last, run.edge);
 }
 
 // A grab stroke pulling the side of a ball out by 3 voxels in 12 stamps, the tracker told the
-// brush's own displacement (its falloff around each sub-step's ball): every vertex stays, on the
-// surface and well shaped; the bump's flank stretches a few edges past 2e, which are split.
-TEST(MeshTracker, FollowsAGrabStrokeKeepingEveryVertex)
+// brush's own displacement (its falloff around each sub-step's ball): the relaxation spreads the
+// bump's stretch, so vertices and triangles stay the same, on the surface and well shaped.
+TEST(MeshTracker, FollowsAGrabStrokeWithConstantConnectivity)
 {
     const double r = 12.0, h = 0.5;
     FieldImage field = makeSphere(r, h);
@@ -228,16 +229,16 @@ TEST(MeshTracker, FollowsAGrabStrokeKeepingEveryVertex)
         EXPECT_FALSE(s.reseeded);
         worstPhi = std::max(worstPhi, worstPhiVoxels(tracker.mesh(), field));
     }
-    EXPECT_LT(double(changes), 0.01 * double(first.ids.size()));
-    const std::set<std::uint32_t> kept(tracker.mesh().ids.begin(), tracker.mesh().ids.end());
-    for (const std::uint32_t id : first.ids) ASSERT_TRUE(kept.count(id)) << "vertex " << id << " was lost";
+    EXPECT_EQ(changes, 0u);
+    EXPECT_EQ(tracker.mesh().ids, first.ids);
+    EXPECT_EQ(tracker.mesh().triangles, first.triangles);
     EXPECT_LT(worstPhi, 0.05);
     expectWellShaped(tracker.mesh(), field, tracker.edgeLength());
 }
 
-// A box opening into a torus (four holes open at once, then join into one): the tracked mesh's
-// topology is the marching-cubes mesh's after every step (cut and closed, or seeded again, where
-// it changed), and every frame is a closed 2-manifold on the surface.
+// A box opening into a torus (four holes open at once, then join into one): both events are cut
+// and closed where they happen (stage 2), the tracked mesh's topology is the marching-cubes
+// mesh's after every step, and every frame is a closed 2-manifold on the surface.
 TEST(MeshTracker, FollowsABoxOpeningHolesIntoATorus)
 {
     const double h = 0.5;
@@ -268,17 +269,13 @@ TEST(MeshTracker, FollowsABoxOpeningHolesIntoATorus)
             ++steps;
         });
     EXPECT_GT(steps, 10u);
-    EXPECT_GE(reseeds + surgeries, 1u);
+    EXPECT_EQ(reseeds, 0u);    // both events cut and closed (stage 2) ...
+    EXPECT_EQ(surgeries, 2u);  // ... the four holes opening (bridges), then joining into one (caps)
     EXPECT_EQ(mismatches, 0u);
     EXPECT_LT(worstPhi, 0.05);
     ASSERT_EQ(frames.size(), 3u);
     const TriangleMesh last = frames.back().triangleMesh();
     EXPECT_EQ(test::meshTopology(last).eulerCharacteristic(), 0);  // a torus
-    if (reseeds > 0) {
-        EXPECT_GT(*std::min_element(frames.back().ids.begin(), frames.back().ids.end()),
-                  *std::max_element(frames.front().ids.begin(), frames.front().ids.end()))
-            << "a re-seeded mesh takes ids never used";
-    }
 }
 
 /// Two balls of radius r centred at (+-centre, 0, 0): one shell apart, one joined.
