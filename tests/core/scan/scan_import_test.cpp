@@ -178,6 +178,31 @@ TEST(ScanImport, CropSmoothAndLargestComponent)
     EXPECT_THROW(scan.cropped(openvdb::CoordBBox(openvdb::Coord(100), openvdb::Coord(120))), InputError);
 }
 
+// A mask (0/1 bytes) of a ball of radius 20 voxels: smoothing blurs its staircase in floating
+// point, so the ball keeps its radius (in the bytes' own type each blurred sample was rounded:
+// sigma 0.7 eroded the ball by 3.1 voxels, sigma 1 left nothing).
+TEST(ScanImport, SmoothingAByteMaskKeepsItsShape)
+{
+    const double radius = 20.0;
+    const openvdb::Vec3d centre(24.3, 24.6, 24.1);
+    vtkNew<vtkImageData> mask;
+    mask->SetDimensions(50, 50, 50);
+    mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    for (int k = 0; k < 50; ++k)
+        for (int j = 0; j < 50; ++j)
+            for (int i = 0; i < 50; ++i)
+                *static_cast<unsigned char*>(mask->GetScalarPointer(i, j, k)) =
+                    (openvdb::Vec3d(i, j, k) - centre).length() < radius ? 1 : 0;
+    test::TempDir dir;
+    writeMetaImage(mask, dir / "mask.mha");
+    const ScanVolume scan = readScan(dir / "mask.mha");
+    for (const double sigma : {0.7, 1.0, 2.0}) {
+        const auto [r, c] = sphereOf(scanToLevelSet(scan.smoothed(sigma), 0.5, 1.0));
+        EXPECT_NEAR(r, radius, 0.25) << "sigma " << sigma;
+        EXPECT_LT((c - centre).length(), 0.1) << "sigma " << sigma;
+    }
+}
+
 TEST(ScanImport, LargestComponentDropsIslandsAndFillsCavities)
 {
     // A hollow ball (radius 14, cavity 8, the wall 6 voxels: wider than the band), a ball floating
