@@ -6,6 +6,9 @@
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
 
+#include <openvdb/tree/LeafManager.h>
+
+#include <algorithm>
 #include <cmath>
 
 namespace sculpt {
@@ -26,6 +29,43 @@ void smooth(FieldImage& field, int iterations, bool keepVolume, const Progress& 
         removeSpecks(field);
         evolution.settleVolume();
     }
+}
+
+namespace {
+
+/// Clamps every active value of `field` that `start` holds too within `slack` of it.
+void holdNear(openvdb::FloatGrid& field, const openvdb::FloatGrid& start, float slack)
+{
+    openvdb::tree::LeafManager<openvdb::FloatTree> leaves(field.tree());
+    leaves.foreach ([&](openvdb::FloatTree::LeafNodeType& leaf, std::size_t) {
+        const openvdb::FloatTree::LeafNodeType* before = start.tree().probeConstLeaf(leaf.origin());
+        if (!before) return;
+        for (auto v = leaf.beginValueOn(); v; ++v) {
+            if (!before->isValueOn(v.pos())) continue;
+            const float was = before->getValue(v.pos());
+            v.setValue(std::clamp(*v, was - slack, was + slack));
+        }
+    });
+}
+
+}  // namespace
+
+void antiAlias(FieldImage& field, int iterations, const Progress& progress)
+{
+    if (iterations < 0) throw InputError("iterations must be >= 0 (got " + std::to_string(iterations) + ")");
+    if (iterations == 0) return;
+    const openvdb::FloatGrid::ConstPtr start = field.grid().deepCopy();
+    const auto slack = float(0.5 * field.voxelSize());
+    MotionTerms terms;
+    terms.smooth = SmoothTerm{1.0, std::nullopt};
+    terms.volume = VolumeTerm{meshVolumeArea(field).volume, 1.0};
+    LevelSetEvolution evolution(field, terms);
+    for (int i = 0; i < iterations; ++i) {
+        evolution.step();
+        holdNear(field.mutableGrid(), *start, slack);
+        report(progress, double(i + 1) / double(iterations));
+    }
+    evolution.redistance();
 }
 
 void offset(FieldImage& field, double distanceWorld, const Progress& progress)

@@ -181,10 +181,8 @@ ScanVolume ScanVolume::gaussian(const openvdb::Vec3d& sigmaVoxels) const
     toFloat->SetOutputScalarTypeToFloat();
     vtkNew<vtkImageGaussianSmooth> smooth;
     const int type = mImpl->image->GetScalarType();
-    if (type == VTK_FLOAT || type == VTK_DOUBLE)
-        smooth->SetInputData(mImpl->image);
-    else
-        smooth->SetInputConnection(toFloat->GetOutputPort());
+    if (type == VTK_FLOAT || type == VTK_DOUBLE) smooth->SetInputData(mImpl->image);
+    else smooth->SetInputConnection(toFloat->GetOutputPort());
     smooth->SetDimensionality(3);
     smooth->SetStandardDeviations(sigma.x(), sigma.y(), sigma.z());
     smooth->SetRadiusFactors(3.0, 3.0, 3.0);
@@ -203,6 +201,19 @@ double ScanVolume::worldExtent() const
         box.expand(worldFromIndex().transform(ijk));
     }
     return box.extents()[box.maxExtent()];
+}
+
+bool ScanVolume::twoValued() const
+{
+    const auto [lo, hi] = range();
+    if (!(lo < hi)) return false;
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    const vtkIdType count = samples->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < count; ++i) {
+        const double v = samples->GetComponent(i, 0);
+        if (v != lo && v != hi) return false;
+    }
+    return true;
 }
 
 std::vector<double> ScanVolume::histogram(int bins) const

@@ -58,6 +58,9 @@ public:
     std::optional<ScanVolume> antiAliased(double voxelSizeWorld) const;
     /// Sample counts in `bins` equal bins spanning range().
     std::vector<double> histogram(int bins) const;
+    /// Whether every sample is the smallest or the largest value (and they differ): a mask,
+    /// whose surface at any iso-value between them is all voxel terraces.
+    bool twoValued() const;
     /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.
     double otsuThreshold() const;
 

@@ -21,7 +21,7 @@ namespace {
 struct ImportCommandOptions {
     std::string input, output, mesh;
     double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
-    bool autoIso = false, largest = false;
+    bool autoIso = false, largest = false, antiAlias = false;
     std::vector<int> crop;
     std::vector<int> rawDims;
     std::string rawType = "uint8";
@@ -30,6 +30,7 @@ struct ImportCommandOptions {
     std::size_t rawHeader = 0;
     CLI::Option* isoOption = nullptr;
     CLI::Option* voxelOption = nullptr;
+    CLI::Option* antiAliasOption = nullptr;
 };
 
 ImportOptions toImportOptions(const ImportCommandOptions& o)
@@ -43,6 +44,7 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
     }
     options.smoothSigma = o.smooth;
     options.largestComponent = o.largest;
+    if (o.antiAliasOption->count()) options.antiAliasMask = o.antiAlias;
     if (!o.rawDims.empty()) {
         RawLayout raw;
         raw.dims = openvdb::Coord(o.rawDims[0], o.rawDims[1], o.rawDims[2]);
@@ -76,6 +78,12 @@ void runImport(const ImportCommandOptions& o)
         std::cout << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
                   << " cavities filled";
     }
+    if (report.maskAntiAliased) {
+        std::cout << "\n"
+                  << (report.twoValued ? "the samples take two values only (a mask): its voxel terraces were "
+                                         "anti-aliased (--no-antialias keeps them)"
+                                       : "the surface's voxel terraces were anti-aliased");
+    }
     std::cout << "\nwrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
               << " components\n";
     writeMeshOutput(field, o.mesh);
@@ -106,6 +114,10 @@ void addImportCommand(CLI::App& app)
         ->expected(6);
     cmd->add_option("--smooth", o->smooth, "Gaussian pre-smoothing of noisy scans: sigma in world units")
         ->check(nonNegativeNumber());
+    o->antiAliasOption =
+        cmd->add_flag("--antialias,!--no-antialias", o->antiAlias,
+                      "smooth away the voxel terraces of a surface cut from binary data, keeping every sample on\n"
+                      "its side of it (Whitaker's constrained flow); the default for scans of two values (masks)");
     cmd->add_flag("--largest-component", o->largest,
                   "keep only the largest solid piece: drops islands, fills closed cavities");
     cmd->add_option("--raw-dims", o->rawDims, "raw input: samples along x,y,z")->delimiter(',')->expected(3);

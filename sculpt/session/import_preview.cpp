@@ -18,6 +18,7 @@ ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
         return;
     }
     mScan = readScan(path);
+    mTwoValued = mScan->twoValued();
     mDefaultVoxelSize = nativeVoxelSize(*mScan);
     mPreviewVoxelSize = std::max(mDefaultVoxelSize, mScan->worldExtent() / kPreviewVoxelsAcross);
 }

@@ -32,6 +32,8 @@ public:
     bool isScan() const { return mScan.has_value(); }
     /// Scans only: the samples as read.
     const ScanVolume& scan() const { return *mScan; }
+    /// Scans only: whether the samples take two values only (a mask: ScanVolume::twoValued).
+    bool twoValued() const { return mTwoValued; }
     /// Meshes only: its triangles and open or non-manifold edges.
     const MeshImportReport& meshReport() const { return mMeshReport; }
     /// What importShape uses without a voxel size: the scan's smallest spacing, or the mesh's
@@ -60,6 +62,7 @@ private:
     std::optional<TriangleMesh> mMesh;
     MeshImportReport mMeshReport;
     double mDefaultVoxelSize = 0.0, mPreviewVoxelSize = 0.0;
+    bool mTwoValued = false;
     // The scan as the last options prepared it.
     struct Prepared {
         std::optional<openvdb::CoordBBox> crop;

@@ -7,6 +7,7 @@
 #include "core/io/vdb_file.h"
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
+#include "core/motion/surface_flows.h"
 #include "core/scan/scan_to_level_set.h"
 
 #include <cmath>
@@ -99,11 +100,16 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     report.isoChosen = !options.iso;
     report.iso = options.iso ? *options.iso : scan.otsuThreshold();
     report.voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
+    report.twoValued = scan.twoValued();
+    report.maskAntiAliased = options.antiAliasMask.value_or(report.twoValued);
     if (auto filtered = scan.antiAliased(report.voxelSize)) {
         scan = std::move(*filtered);
         report.antiAliased = true;
     }
-    return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
+    if (!report.maskAntiAliased) return scanToLevelSet(scan, report.iso, report.voxelSize, progress);
+    FieldImage field = scanToLevelSet(scan, report.iso, report.voxelSize, scaledProgress(progress, 0.0, 0.6));
+    antiAlias(field, kAntiAliasIterations, scaledProgress(progress, 0.6, 1.0));
+    return field;
 }
 
 /// Runs `convert`, making sure any refusal names the file: a message from deep in the engine

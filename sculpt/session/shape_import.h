@@ -20,7 +20,10 @@ struct ImportOptions {
     std::optional<openvdb::CoordBBox> crop;  ///< scans: sample index box, inclusive
     double smoothSigma = 0.0;                ///< scans: Gaussian pre-smoothing, world units (0: none)
     bool largestComponent = false;           ///< keep only the largest solid piece, cavities filled
-    std::optional<RawLayout> raw;            ///< read the input as raw samples with this layout
+    /// scans: anti-alias the surface's voxel terraces (surface_flows.h antiAlias); unset: for
+    /// scans whose samples take two values only (a mask), whose surface is all terraces.
+    std::optional<bool> antiAliasMask;
+    std::optional<RawLayout> raw;  ///< read the input as raw samples with this layout
 };
 
 /// What an import did, for the user.
@@ -31,6 +34,8 @@ struct ImportReport {
     double voxelSize = 0.0;
     bool antiAliased = false;       ///< scans: low-pass filtered for a voxel size coarser than the scan's
     LargestComponentReport pieces;  ///< with largestComponent
+    bool twoValued = false;         ///< scans: the samples take two values only (a mask)
+    bool maskAntiAliased = false;   ///< scans: the terraces were anti-aliased
     /// Closed meshes whose topology the voxel size changed: a finer one that keeps it, if found.
     std::optional<double> topologyKeepingVoxelSize;
     std::vector<std::string> warnings;

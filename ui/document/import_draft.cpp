@@ -11,7 +11,7 @@ namespace {
 bool sameOptions(const ImportOptions& a, const ImportOptions& b)
 {
     return a.iso == b.iso && a.crop == b.crop && a.smoothSigma == b.smoothSigma &&
-           a.largestComponent == b.largestComponent;  // the voxel size does not change the preview
+           a.largestComponent == b.largestComponent;  // the voxel size and the anti-aliasing do not change the preview
 }
 
 }  // namespace

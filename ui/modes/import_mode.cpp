@@ -21,6 +21,8 @@ constexpr double kIsoStep = 0.01;  // of the samples' range, per PageUp/PageDown
 std::string importSummary(const ImportReport& report)
 {
     std::string text = "iso-value " + formatNumber(report.iso) + ", voxel size " + formatNumber(report.voxelSize);
+    if (report.maskAntiAliased)
+        text += report.twoValued ? ", a mask: terraces anti-aliased" : ", terraces anti-aliased";
     if (!report.warnings.empty()) text += "; " + report.warnings.front();
     return text;
 }

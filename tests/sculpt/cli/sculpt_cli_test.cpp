@@ -262,6 +262,29 @@ TEST(SculptCli, ImportedAndMorphedDocumentsNameTheirGridSurface)
     }
 }
 
+// A mask (raw bytes, 0 and 1: a ball of radius 12 samples) imports anti-aliased by default,
+// saying so, with the ball's area; --no-antialias keeps its voxel terraces (a tenth more area).
+TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
+{
+    TempDir dir;
+    const int n = 32;
+    std::string bytes(std::size_t(n * n * n), '\0');
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                bytes[std::size_t((k * n + j) * n + i)] = std::hypot(i - 15.6, j - 15.3, k - 15.8) < 12.0 ? 1 : 0;
+    std::ofstream(dir / "mask.raw", std::ios::binary) << bytes;
+    const std::string import = "import mask.raw --raw-dims 32,32,32 --raw-type uint8 --iso 0.5 ";
+    const auto smooth = runSculpt(import + "-o smooth.vdb", dir.path());
+    ASSERT_EQ(smooth.exitCode, 0) << smooth.err;
+    EXPECT_NE(smooth.out.find("two values only (a mask): its voxel terraces were anti-aliased"), std::string::npos)
+        << smooth.out;
+    ASSERT_EQ(runSculpt(import + "--no-antialias -o terraces.vdb", dir.path()).exitCode, 0);
+    const double sphere = 4.0 * kPi * 144.0;
+    EXPECT_NEAR(infoJson(dir, "smooth.vdb")["area"].get<double>(), sphere, 0.02 * sphere);
+    EXPECT_GT(infoJson(dir, "terraces.vdb")["area"].get<double>(), 1.05 * sphere);
+}
+
 /// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.
 struct Regression {
     const char* file;
