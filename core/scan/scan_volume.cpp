@@ -243,7 +243,7 @@ double ScanVolume::otsuThreshold() const
         sumAll += i * histogram[size_t(i)];
     }
     double weightBelow = 0.0, sumBelow = 0.0, best = -1.0;
-    int bestBin = 0;
+    int bestBin = 0, bestLast = 0;  // the best split, and the last bin of its plateau
     for (int i = 0; i < kBins - 1; ++i) {  // class "below" is bins 0..i
         weightBelow += histogram[size_t(i)];
         sumBelow += i * histogram[size_t(i)];
@@ -253,10 +253,14 @@ double ScanVolume::otsuThreshold() const
         const double between = weightBelow * weightAbove * (meanBelow - meanAbove) * (meanBelow - meanAbove);
         if (between > best) {
             best = between;
-            bestBin = i;
+            bestBin = bestLast = i;
+        } else if (between == best && bestLast == i - 1) {
+            bestLast = i;  // an empty bin: the same split
         }
     }
-    return lo + (hi - lo) * (bestBin + 1) / kBins;  // the upper edge of the lower class
+    // Every split across empty bins is as good: the middle of the gap, not its lower edge (a
+    // mask of 0 and 1 splits at 0.5, where its surface is, not at 0.004).
+    return lo + (hi - lo) * (0.5 * (bestBin + bestLast) + 1.0) / kBins;
 }
 
 }  // namespace sculpt

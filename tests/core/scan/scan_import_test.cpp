@@ -156,6 +156,7 @@ TEST(ScanImport, OtsuSplitsTheTwoMaterials)
     test::TempDir dir;
     const SyntheticBall ball;
     writeMetaImage(ball.image(), dir / "ball.mha");
+    EXPECT_FALSE(readScan(dir / "ball.mha").twoValued()) << "a ramp across the surface";
     const double iso = readScan(dir / "ball.mha").otsuThreshold();
     EXPECT_GT(iso, 20.0);
     EXPECT_LT(iso, 180.0);
@@ -217,6 +218,8 @@ TEST(ScanImport, SmoothingAByteMaskKeepsItsShape)
     const ByteMaskBall ball;
     test::TempDir dir;
     const ScanVolume scan = ball.scan(dir / "mask.mha");
+    EXPECT_TRUE(scan.twoValued());
+    EXPECT_DOUBLE_EQ(scan.otsuThreshold(), 0.5) << "the middle of the gap between the two values";
     for (const double sigma : {0.7, 1.0, 2.0}) {
         const auto [r, c] = sphereOf(scanToLevelSet(scan.smoothed(sigma), 0.5, 1.0));
         EXPECT_NEAR(r, ball.radius, 0.25) << "sigma " << sigma;
