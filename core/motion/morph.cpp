@@ -312,8 +312,10 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     summary.steps = first.steps + secondPassSteps();
     summary.duration = now();
     const ShapeDistance final = finalDistance(field, goal);
-    summary.finalDistanceWorld = final.maxResolvedWorld;
-    summary.worstDistanceWorld = final.maxWorld;
+    // Float phi read on the target's own surface leaves denormal noise (2.8e-45 was printed).
+    const auto floatNoise = [&](double d) { return d < 1e-6 * target.voxelSize() ? 0.0 : d; };
+    summary.finalDistanceWorld = floatNoise(final.maxResolvedWorld);
+    summary.worstDistanceWorld = floatNoise(final.maxWorld);
     summary.resolvedFraction = final.resolvedFraction;
     summary.converged = morphConverged(final, tolerance, target.voxelSize());
     if (summary.converged) summary.stop = MorphStop::Converged;
