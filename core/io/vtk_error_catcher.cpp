@@ -4,6 +4,7 @@
 #include <vtkObject.h>
 #include <vtkObjectFactory.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace sculpt {
@@ -12,11 +13,14 @@ namespace sculpt {
 class VtkErrorCatcher::Observer : public vtkCommand {
 public:
     static Observer* New() { return new Observer; }
-    void Execute(vtkObject*, unsigned long, void* data) override
+    void Execute(vtkObject*, unsigned long event, void* data) override
     {
-        if (message.empty() && data) message = static_cast<const char*>(data);
+        const auto* text = static_cast<const char*>(data);
+        if (!text || (event == vtkCommand::WarningEvent && owner->tolerates(text))) return;
+        if (message.empty()) message = text;
     }
     std::string message;
+    VtkErrorCatcher* owner = nullptr;
 };
 
 /// Everything else VTK prints during the call: errors kept, the rest dropped.
@@ -36,10 +40,12 @@ public:
 
 vtkStandardNewMacro(VtkErrorCatcher::Window);
 
-VtkErrorCatcher::VtkErrorCatcher(vtkObject* watched, bool warningsToo)
+VtkErrorCatcher::VtkErrorCatcher(vtkObject* watched, bool warningsToo, std::vector<std::string> tolerated)
     : mObserver(vtkSmartPointer<Observer>::New()), mWindow(vtkSmartPointer<Window>::New()),
-      mPrevious(vtkOutputWindow::GetInstance()), mWatched(watched), mWarningsToo(warningsToo)
+      mPrevious(vtkOutputWindow::GetInstance()), mWatched(watched), mWarningsToo(warningsToo),
+      mTolerated(std::move(tolerated))
 {
+    mObserver->owner = this;
     mWatched->AddObserver(vtkCommand::ErrorEvent, mObserver);
     if (warningsToo) mWatched->AddObserver(vtkCommand::WarningEvent, mObserver);
     vtkOutputWindow::SetInstance(mWindow);
@@ -52,7 +58,9 @@ VtkErrorCatcher::VtkErrorCatcher(vtkObject* watched, bool warningsToo)
             auto* catcher = static_cast<VtkErrorCatcher*>(self);
             const bool counts =
                 m.verbosity <= (catcher->mWarningsToo ? vtkLogger::VERBOSITY_WARNING : vtkLogger::VERBOSITY_ERROR);
-            if (counts && catcher->mLogged.empty() && m.message) catcher->mLogged = m.message;
+            if (!counts || !m.message) return;
+            if (m.verbosity == vtkLogger::VERBOSITY_WARNING && catcher->tolerates(m.message)) return;
+            if (catcher->mLogged.empty()) catcher->mLogged = m.message;
         },
         this, vtkLogger::VERBOSITY_WARNING);
 }
@@ -62,6 +70,18 @@ VtkErrorCatcher::~VtkErrorCatcher()
     vtkLogger::RemoveCallback(mLogId.c_str());
     vtkOutputWindow::SetInstance(mPrevious);
     mWatched->RemoveObserver(mObserver);
+}
+
+bool VtkErrorCatcher::tolerates(const char* text)
+{
+    const std::string message(text);
+    for (const std::string& fragment : mTolerated) {
+        if (message.find(fragment) == std::string::npos) continue;
+        if (std::find(mToleratedSeen.begin(), mToleratedSeen.end(), fragment) == mToleratedSeen.end())
+            mToleratedSeen.push_back(fragment);
+        return true;
+    }
+    return false;
 }
 
 const std::string& VtkErrorCatcher::message() const

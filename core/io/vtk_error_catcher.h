@@ -16,6 +16,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 namespace sculpt {
 
@@ -23,7 +24,9 @@ namespace sculpt {
 /// WarningEvent, if asked) or through VTK's output window.
 class VtkErrorCatcher {
 public:
-    explicit VtkErrorCatcher(vtkObject* watched, bool warningsToo = false);
+    /// Warnings holding one of `tolerated` are not kept as the error but listed by tolerated():
+    /// notes a reader makes about a file it still reads right.
+    explicit VtkErrorCatcher(vtkObject* watched, bool warningsToo = false, std::vector<std::string> tolerated = {});
     ~VtkErrorCatcher();
     VtkErrorCatcher(const VtkErrorCatcher&) = delete;
     VtkErrorCatcher& operator=(const VtkErrorCatcher&) = delete;
@@ -31,6 +34,8 @@ public:
     /// The first message, or "".
     const std::string& message() const;
     bool caught() const { return !message().empty(); }
+    /// The tolerated warnings seen, each once.
+    const std::vector<std::string>& tolerated() const { return mToleratedSeen; }
 
 private:
     class Observer;
@@ -42,6 +47,9 @@ private:
     std::string mLogId;
     std::string mLogged;  // the first error (or warning, if asked) vtkLogger saw
     bool mWarningsToo;
+    std::vector<std::string> mTolerated, mToleratedSeen;
+    /// Whether `text` is a tolerated warning (then noted).
+    bool tolerates(const char* text);
 };
 
 }  // namespace sculpt

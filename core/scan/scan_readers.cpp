@@ -39,7 +39,11 @@ ScanVolume readNifti(const fs::path& path)
 {
     vtkNew<vtkNIFTIImageReader> reader;
     reader->SetFileName(path.string().c_str());
-    vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
+    // FSL's atlases (JHU, jhu189 in mricron-data) store a left-handed sform beside a qform: VTK
+    // says so and reads them right, placed by the sform (vtkNIFTIImageReader::GetSFormMatrix).
+    std::vector<std::string> notes;
+    vtkSmartPointer<vtkImageData> image =
+        runReader(reader, path.string(), {"SFormMatrix is flipped compared to QFormMatrix"}, &notes);
     // VTK fills a short uncompressed file with zeros without a word: check its length.
     if (lowerExtension(path) == ".nii") {
         const double needed = double(reader->GetNIFTIHeader()->GetVoxOffset()) +
@@ -61,7 +65,10 @@ ScanVolume readNifti(const fs::path& path)
         }
         image->GetPointData()->SetScalars(scaled);
     }
-    return makeScan(image, placement(image, orientation), path.string());
+    std::vector<std::string> warnings;
+    if (!notes.empty())
+        warnings.push_back(path.string() + ": its sform is mirrored against its qform; placed by the sform");
+    return makeScan(image, placement(image, orientation), path.string(), warnings);
 }
 
 template <typename ReaderT>

@@ -7,12 +7,15 @@
 #include <vtkDataArray.h>
 #include <vtkExtractVOI.h>
 #include <vtkImageCast.h>
+#include <vtkImageData.h>
 #include <vtkImageGaussianSmooth.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <set>
 #include <stdexcept>
 #include <vector>
 
@@ -216,6 +219,33 @@ bool ScanVolume::twoValued() const
     return true;
 }
 
+std::vector<int> ScanVolume::labels() const
+{
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    std::set<int> found;
+    const vtkIdType count = samples->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < count; ++i) {
+        const double v = samples->GetComponent(i, 0);
+        if (v != std::floor(v) || std::abs(v) > double(std::numeric_limits<int>::max())) return {};
+        if (found.insert(int(v)).second && found.size() > kMaxLabels) return {};
+    }
+    return {found.begin(), found.end()};
+}
+
+ScanVolume ScanVolume::labelMask(int label) const
+{
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    vtkNew<vtkImageData> mask;
+    mask->SetDimensions(mImpl->image->GetDimensions());
+    mask->AllocateScalars(VTK_UNSIGNED_CHAR, 1);
+    auto* out = static_cast<unsigned char*>(mask->GetScalarPointer());
+    const vtkIdType count = samples->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < count; ++i) out[i] = samples->GetComponent(i, 0) == double(label) ? 1 : 0;
+    auto impl = std::make_shared<Impl>(*mImpl);
+    impl->image = mask;
+    return ScanVolume(impl);
+}
+
 std::vector<double> ScanVolume::histogram(int bins) const
 {
     const auto [lo, hi] = range();
@@ -243,7 +273,7 @@ double ScanVolume::otsuThreshold() const
         sumAll += i * histogram[size_t(i)];
     }
     double weightBelow = 0.0, sumBelow = 0.0, best = -1.0;
-    int bestBin = 0, bestLast = 0;  // the best split, and the last bin of its plateau
+    int bestBin = 0, bestLast = 0;         // the best split, and the last bin of its plateau
     for (int i = 0; i < kBins - 1; ++i) {  // class "below" is bins 0..i
         weightBelow += histogram[size_t(i)];
         sumBelow += i * histogram[size_t(i)];

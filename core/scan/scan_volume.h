@@ -61,6 +61,12 @@ public:
     /// Whether every sample is the smallest or the largest value (and they differ): a mask,
     /// whose surface at any iso-value between them is all voxel terraces.
     bool twoValued() const;
+    /// The values of a label map, ascending: every distinct sample value, when all are integers
+    /// and there are at most kMaxLabels of them; empty otherwise (intensities, not labels).
+    std::vector<int> labels() const;
+    static constexpr std::size_t kMaxLabels = 4096;
+    /// A mask of one label: 1 where the sample is `label`, 0 elsewhere (bytes), placed as the scan.
+    ScanVolume labelMask(int label) const;
     /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.
     double otsuThreshold() const;
 

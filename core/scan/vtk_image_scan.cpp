@@ -30,9 +30,11 @@ std::string cleanMessage(std::string text)
 
 }  // namespace
 
-vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source)
+vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source,
+                                        const std::vector<std::string>& tolerated,
+                                        std::vector<std::string>* toleratedSeen)
 {
-    const VtkErrorCatcher catcher(reader, /*warningsToo=*/true);
+    const VtkErrorCatcher catcher(reader, /*warningsToo=*/true, tolerated);
     reader->UpdateInformation();
     if (catcher.caught()) throw InputError(source + ": " + cleanMessage(catcher.message()));
     int extent[6];
@@ -60,6 +62,7 @@ vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::stri
         throw InputError(source + ": " + std::to_string(image->GetNumberOfScalarComponents()) +
                          " values per voxel (colour or vector data); a scan has one");
     }
+    if (toleratedSeen) *toleratedSeen = catcher.tolerated();
     return image;
 }
 

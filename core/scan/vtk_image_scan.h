@@ -25,8 +25,11 @@ struct ScanVolume::Impl {
 
 /// Runs a configured reader: header first (dimensions checked and memory reserved before the
 /// samples are allocated), then the samples; any error the reader reports becomes an InputError
-/// naming `source`.
-vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source);
+/// naming `source`, as does any warning but those holding one of `tolerated` (notes about a file
+/// the reader still reads right), which are added to `toleratedSeen`.
+vtkSmartPointer<vtkImageData> runReader(vtkImageReader2* reader, const std::string& source,
+                                        const std::vector<std::string>& tolerated = {},
+                                        std::vector<std::string>* toleratedSeen = nullptr);
 
 /// World from index for a VTK image: world = M (origin + ijk * spacing), M a 4x4 (or identity).
 openvdb::Mat4d placement(vtkImageData* image, vtkMatrix4x4* orientation);

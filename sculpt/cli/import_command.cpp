@@ -21,6 +21,7 @@ namespace {
 struct ImportCommandOptions {
     std::string input, output, mesh;
     double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
+    int label = 0;
     bool autoIso = false, largest = false, antiAlias = false;
     std::vector<int> crop;
     std::vector<int> rawDims;
@@ -31,6 +32,7 @@ struct ImportCommandOptions {
     CLI::Option* isoOption = nullptr;
     CLI::Option* voxelOption = nullptr;
     CLI::Option* antiAliasOption = nullptr;
+    CLI::Option* labelOption = nullptr;
 };
 
 ImportOptions toImportOptions(const ImportCommandOptions& o)
@@ -38,6 +40,7 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
     ImportOptions options;
     if (o.isoOption->count()) options.iso = o.iso;
     if (o.voxelOption->count()) options.voxelSize = o.voxelSize;
+    if (o.labelOption->count()) options.label = o.label;
     if (!o.crop.empty()) {
         options.crop = openvdb::CoordBBox(openvdb::Coord(o.crop[0], o.crop[1], o.crop[2]),
                                           openvdb::Coord(o.crop[3], o.crop[4], o.crop[5]));
@@ -71,7 +74,8 @@ void runImport(const ImportCommandOptions& o)
     writeFieldImage(field, o.output);
     const FieldMeasures m = measureField(field);
     std::cout << "imported " << o.input << " (" << report.kind << ")";
-    if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
+    if (o.labelOption->count()) std::cout << " label " << o.label;
+    else if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
     std::cout << ", voxel size " << report.voxelSize
               << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
     if (o.largest) {
@@ -106,6 +110,10 @@ void addImportCommand(CLI::App& app)
     o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");
     cmd->add_flag("--auto-iso", o->autoIso, "choose the iso-value by Otsu's method (the default without --iso)")
         ->excludes(o->isoOption);
+    o->labelOption = cmd->add_option("--label", o->label,
+                                     "a label map (a segmentation: integer samples, one value per structure): the\n"
+                                     "surface around the samples of this label, anti-aliased")
+                         ->excludes(o->isoOption);
     o->voxelOption = cmd->add_option(
         "--voxel-size", o->voxelSize,
         "voxel size of the document (default: the scan's smallest spacing; a mesh's longest side / 256)");

@@ -10,6 +10,7 @@
 #include "core/motion/surface_flows.h"
 #include "core/scan/scan_to_level_set.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sculpt {
@@ -63,9 +64,9 @@ void checkTopologyKept(const TriangleMesh& mesh, long long euler, const FieldIma
 FieldImage importMesh(const fs::path& input, const ImportOptions& options, ImportReport& report,
                       const Progress& progress)
 {
-    if (options.iso || options.crop || options.smoothSigma > 0.0 || options.raw) {
+    if (options.iso || options.label || options.crop || options.smoothSigma > 0.0 || options.raw) {
         throw InputError(input.string() +
-                         ": an iso-value, a crop box, smoothing and a raw layout apply to scans, not meshes");
+                         ": an iso-value, a label, a crop box, smoothing and a raw layout apply to scans, not meshes");
     }
     const TriangleMesh mesh = readMesh(input);
     const MeshImportReport inspection = inspectMesh(mesh);
@@ -83,12 +84,43 @@ FieldImage importMesh(const fs::path& input, const ImportOptions& options, Impor
     return field;
 }
 
+/// "0, 1, 2, ..., 48 (49 labels)": a label map's values, the first and the last.
+std::string labelList(const std::vector<int>& labels)
+{
+    constexpr std::size_t kShown = 8;
+    std::string text;
+    for (std::size_t i = 0; i < labels.size() && i < kShown; ++i) text += (i ? ", " : "") + std::to_string(labels[i]);
+    if (labels.size() > kShown) text += ", ..., " + std::to_string(labels.back());
+    return text + " (" + std::to_string(labels.size()) + " labels)";
+}
+
+/// The mask of `label` in a label map. @throws InputError naming the file when the scan holds
+/// intensities, not labels, or no sample of that label.
+ScanVolume labelMaskOf(const ScanVolume& scan, int label, const fs::path& input)
+{
+    const std::vector<int> labels = scan.labels();
+    if (labels.empty()) {
+        throw InputError(input.string() + ": its samples are not labels (not all integers, or more than " +
+                         std::to_string(ScanVolume::kMaxLabels) + " values): import it at an iso-value instead");
+    }
+    if (!std::binary_search(labels.begin(), labels.end(), label)) {
+        throw InputError(input.string() + ": no sample has label " + std::to_string(label) + "; its labels are " +
+                         labelList(labels));
+    }
+    return scan.labelMask(label);
+}
+
 FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,
                       const Progress& progress)
 {
+    if (options.label && options.iso) {
+        throw InputError(input.string() + ": a label and an iso-value exclude each other (a label's surface is "
+                                          "where its mask crosses 0.5)");
+    }
     ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
     report.warnings.insert(report.warnings.end(), scan.warnings().begin(), scan.warnings().end());
     if (options.crop) scan = scan.cropped(*options.crop);
+    if (options.label) scan = labelMaskOf(scan, *options.label, input);
     if (options.voxelSize) refuseCoarserThan(*options.voxelSize, scan.worldExtent(), input, "scan");
     if (options.smoothSigma > scan.worldExtent()) {
         throw InputError(input.string() + ": a smoothing sigma of " + formatNumber(options.smoothSigma) +
@@ -97,8 +129,8 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     }
     if (options.smoothSigma > 0.0) scan = scan.smoothed(options.smoothSigma);
     report.kind = "scan";
-    report.isoChosen = !options.iso;
-    report.iso = options.iso ? *options.iso : scan.otsuThreshold();
+    report.isoChosen = !options.iso && !options.label;
+    report.iso = options.iso ? *options.iso : options.label ? 0.5 : scan.otsuThreshold();
     report.voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
     report.twoValued = scan.twoValued();
     report.maskAntiAliased = options.antiAliasMask.value_or(report.twoValued);

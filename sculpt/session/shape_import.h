@@ -15,7 +15,10 @@
 namespace sculpt {
 
 struct ImportOptions {
-    std::optional<double> iso;               ///< scans: the surface's value; Otsu's threshold if unset
+    std::optional<double> iso;  ///< scans: the surface's value; Otsu's threshold if unset
+    /// scans of labels (a segmentation): the surface around the samples of this label, as a
+    /// mask (ScanVolume::labelMask) split at 0.5; excludes iso.
+    std::optional<int> label;
     std::optional<double> voxelSize;         ///< scans: native (smallest spacing); meshes: longest side / 256
     std::optional<openvdb::CoordBBox> crop;  ///< scans: sample index box, inclusive
     double smoothSigma = 0.0;                ///< scans: Gaussian pre-smoothing, world units (0: none)

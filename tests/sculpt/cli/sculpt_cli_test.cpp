@@ -263,7 +263,8 @@ TEST(SculptCli, ImportedAndMorphedDocumentsNameTheirGridSurface)
 }
 
 // A mask (raw bytes, 0 and 1: a ball of radius 12 samples) imports anti-aliased by default,
-// saying so, with the ball's area; --no-antialias keeps its voxel terraces (a tenth more area).
+// saying so, with the ball's area; --no-antialias keeps its voxel terraces (a tenth more area);
+// --label 1 takes it as a label map.
 TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
 {
     TempDir dir;
@@ -283,6 +284,12 @@ TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
     const double sphere = 4.0 * kPi * 144.0;
     EXPECT_NEAR(infoJson(dir, "smooth.vdb")["area"].get<double>(), sphere, 0.02 * sphere);
     EXPECT_GT(infoJson(dir, "terraces.vdb")["area"].get<double>(), 1.05 * sphere);
+    // The same bytes as a label map: label 1's surface, anti-aliased as well.
+    const auto label =
+        runSculpt("import mask.raw --raw-dims 32,32,32 --raw-type uint8 --label 1 -o label.vdb", dir.path());
+    ASSERT_EQ(label.exitCode, 0) << label.err;
+    EXPECT_NE(label.out.find("label 1"), std::string::npos) << label.out;
+    EXPECT_NEAR(infoJson(dir, "label.vdb")["area"].get<double>(), sphere, 0.02 * sphere);
 }
 
 /// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.

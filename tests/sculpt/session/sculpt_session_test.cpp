@@ -24,6 +24,8 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <map>
 #include <random>
 
 namespace sculpt {
@@ -576,6 +578,93 @@ TEST(ShapeImport, AClosedMeshWhoseTopologyTheVoxelSizeChangesGetsAWarningAndASiz
     importShape(cow, {}, cowReport);
     ASSERT_FALSE(cowReport.warnings.empty());
     EXPECT_NE(cowReport.warnings[0].find("Euler characteristic 2 becomes"), std::string::npos) << cowReport.warnings[0];
+}
+
+/// A MetaImage of bytes (header and samples in one file), `sample(i, j, k)` at spacing 0.5.
+void writeByteScan(const std::filesystem::path& path, int n, const std::function<int(int, int, int)>& sample)
+{
+    std::ofstream file(path, std::ios::binary);
+    file << "ObjectType = Image\nNDims = 3\nDimSize = " << n << " " << n << " " << n
+         << "\nElementType = MET_UCHAR\nElementSpacing = 0.5 0.5 0.5\nElementDataFile = LOCAL\n";
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) file.put(char(sample(i, j, k)));
+}
+
+// A label map of three structures: a ball (1) touching a box (2) that holds a smaller ball (3)
+// in a cavity. Each label imports as its own anti-aliased surface with its analytic volume and
+// topology; a label the map lacks, or a label of a scan of intensities, is refused naming the file.
+TEST(ShapeImport, ALabelMapImportsEachLabelAsItsOwnSurface)
+{
+    const test::TempDir dir;
+    // Off the sample lattice, so each shape holds the samples its volume says; the box's faces
+    // lie halfway between samples, where the mask's surface is.
+    const openvdb::Vec3d ballCentre(9.1, 16.2, 15.9), innerCentre(21.15, 16.1, 15.95);
+    const double ball = 7.0, inner = 3.5, boxFrom = 14.25, boxTo = 28.25, boxHalf = 8.25;  // y and z: 16 +- 8.25
+    writeByteScan(dir / "labels.mha", 64, [&](int i, int j, int k) {
+        const openvdb::Vec3d p(0.5 * i, 0.5 * j, 0.5 * k);
+        if ((p - innerCentre).length() < inner) return 3;
+        if (p.x() > boxFrom && p.x() < boxTo && std::abs(p.y() - 16.0) < boxHalf && std::abs(p.z() - 16.0) < boxHalf)
+            return 2;
+        return (p - ballCentre).length() < ball ? 1 : 0;
+    });
+    const double cap = ballCentre.x() + ball - boxFrom;  // the height of the ball's part the box takes
+    const double innerVolume = 4.0 / 3.0 * M_PI * std::pow(inner, 3);
+    const std::map<int, std::pair<double, int>> expected{
+        // label: volume, Euler characteristic
+        {1, {4.0 / 3.0 * M_PI * std::pow(ball, 3) - M_PI * cap * cap * (3.0 * ball - cap) / 3.0, 2}},
+        {2, {(boxTo - boxFrom) * 4.0 * boxHalf * boxHalf - innerVolume, 4}},  // its cavity is a second shell
+        {3, {innerVolume, 2}}};
+    for (const auto& [label, want] : expected) {
+        ImportOptions options;
+        options.label = label;
+        ImportReport report;
+        const FieldImage field = importShape(dir / "labels.mha", options, report);
+        EXPECT_TRUE(report.maskAntiAliased) << "label " << label;
+        const FieldMeasures m = measureField(field);
+        EXPECT_NEAR(m.volume, want.first, 0.02 * want.first) << "label " << label;
+        EXPECT_EQ(m.eulerCharacteristic, want.second) << "label " << label;
+    }
+    ImportOptions missing;
+    missing.label = 4;
+    ImportReport unused;
+    try {
+        importShape(dir / "labels.mha", missing, unused);
+        ADD_FAILURE() << "label 4 imported";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("labels.mha: no sample has label 4; its labels are 0, 1, 2, 3 (4 labels)"),
+                  std::string::npos)
+            << e.what();
+    }
+    writeMesh(meshLevelSet(makeSphere(4.0, 0.5)), dir / "ball.ply");
+    EXPECT_THROW(importShape(dir / "ball.ply", missing, unused), InputError) << "a label of a mesh";
+}
+
+// A label map another program wrote: FSL's JHU white-matter atlas (mricron-data, 1 mm, 48 labels).
+// The genu of the corpus callosum (label 3) imports as one closed surface holding its samples.
+TEST(ShapeImport, ARealAtlasLabelImportsAsTheVolumeOfItsSamples)
+{
+    const std::filesystem::path atlas = "/usr/share/mricron/templates/JHU-WhiteMatter-labels-1mm.nii.gz";
+    if (!std::filesystem::exists(atlas)) GTEST_SKIP() << "mricron-data missing";
+    const ScanVolume scan = readScan(atlas);
+    const std::vector<int> labels = scan.labels();
+    ASSERT_EQ(labels.size(), 49u);
+    EXPECT_EQ(labels.front(), 0);
+    EXPECT_EQ(labels.back(), 48);
+    EXPECT_TRUE(scan.labelMask(3).twoValued());
+    std::vector<float> slice(std::size_t(scan.dims().x()) * std::size_t(scan.dims().y()));
+    double samples = 0.0;
+    const ScanVolume genu = scan.labelMask(3);
+    for (int k = 0; k < scan.dims().z(); ++k) {
+        genu.readSlice(k, slice.data());
+        for (const float v : slice) samples += v;
+    }
+    ImportOptions options;
+    options.label = 3;
+    ImportReport report;
+    const FieldMeasures m = measureField(importShape(atlas, options, report));
+    EXPECT_NEAR(m.volume, samples, 0.03 * samples) << "1 mm^3 a sample";
+    EXPECT_EQ(m.components, 1);
 }
 
 }  // namespace
