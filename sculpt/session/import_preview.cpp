@@ -19,17 +19,22 @@ ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
     }
     mScan = readScan(path);
     mTwoValued = mScan->twoValued();
+    mLabels = mScan->labels();
     mDefaultVoxelSize = nativeVoxelSize(*mScan);
     mPreviewVoxelSize = std::max(mDefaultVoxelSize, mScan->worldExtent() / kPreviewVoxelsAcross);
 }
 
 void ImportPreview::prepare(const ImportOptions& options)
 {
-    if (mPrepared.kept && mPrepared.crop == options.crop && mPrepared.smoothSigma == options.smoothSigma) return;
+    if (mPrepared.kept && mPrepared.crop == options.crop && mPrepared.label == options.label &&
+        mPrepared.smoothSigma == options.smoothSigma)
+        return;
     Prepared next;
     next.crop = options.crop;
+    next.label = options.label;
     next.smoothSigma = options.smoothSigma;
     next.kept = options.crop ? mScan->cropped(*options.crop) : *mScan;
+    if (options.label) next.kept = next.kept->labelMask(*options.label);
     if (options.smoothSigma > 0.0) next.kept = next.kept->smoothed(options.smoothSigma);
     next.histogram = next.kept->histogram(kHistogramBins);
     next.otsu = next.kept->otsuThreshold();
@@ -61,7 +66,8 @@ FieldImage ImportPreview::surface(const ImportOptions& options)
     FieldImage field = [&] {
         if (mMesh) return meshToField(*mMesh, mPreviewVoxelSize);
         prepare(options);
-        return scanToLevelSet(*mPrepared.filtered, options.iso.value_or(mPrepared.otsu), mPreviewVoxelSize);
+        const double iso = options.label ? 0.5 : options.iso.value_or(mPrepared.otsu);  // a mask's middle
+        return scanToLevelSet(*mPrepared.filtered, iso, mPreviewVoxelSize);
     }();
     if (options.largestComponent) keepLargestComponent(field);
     return field;

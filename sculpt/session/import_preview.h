@@ -34,6 +34,8 @@ public:
     const ScanVolume& scan() const { return *mScan; }
     /// Scans only: whether the samples take two values only (a mask: ScanVolume::twoValued).
     bool twoValued() const { return mTwoValued; }
+    /// Scans only: a label map's labels (ScanVolume::labels), empty for intensities.
+    const std::vector<int>& labels() const { return mLabels; }
     /// Meshes only: its triangles and open or non-manifold edges.
     const MeshImportReport& meshReport() const { return mMeshReport; }
     /// What importShape uses without a voxel size: the scan's smallest spacing, or the mesh's
@@ -54,7 +56,7 @@ public:
     FieldImage surface(const ImportOptions& options);
 
 private:
-    /// The crop and smoothing of `options` applied, if they differ from the last ones.
+    /// The crop, label and smoothing of `options` applied, if they differ from the last ones.
     void prepare(const ImportOptions& options);
 
     std::filesystem::path mPath;
@@ -63,11 +65,13 @@ private:
     MeshImportReport mMeshReport;
     double mDefaultVoxelSize = 0.0, mPreviewVoxelSize = 0.0;
     bool mTwoValued = false;
+    std::vector<int> mLabels;
     // The scan as the last options prepared it.
     struct Prepared {
         std::optional<openvdb::CoordBBox> crop;
+        std::optional<int> label;
         double smoothSigma = -1.0;
-        std::optional<ScanVolume> kept;      // cropped and smoothed: what Otsu and the histogram read
+        std::optional<ScanVolume> kept;      // cropped, one label's mask, smoothed: what Otsu and the histogram read
         std::optional<ScanVolume> filtered;  // kept, low-pass filtered for the preview's voxel size
         std::vector<double> histogram;
         double otsu = 0.0;

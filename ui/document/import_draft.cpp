@@ -10,7 +10,7 @@ namespace {
 
 bool sameOptions(const ImportOptions& a, const ImportOptions& b)
 {
-    return a.iso == b.iso && a.crop == b.crop && a.smoothSigma == b.smoothSigma &&
+    return a.iso == b.iso && a.label == b.label && a.crop == b.crop && a.smoothSigma == b.smoothSigma &&
            a.largestComponent == b.largestComponent;  // the voxel size and the anti-aliasing do not change the preview
 }
 
@@ -20,7 +20,11 @@ ImportDraft::ImportDraft(std::shared_ptr<ImportPreview> file, FieldImage first, 
     : options(defaults), mFile(std::move(file)), mPreview(std::move(first)), mPreviewed(defaults), mPreviewMs(firstMs)
 {}
 
-double ImportDraft::iso() { return options.iso.value_or(mFile->isScan() ? mFile->otsuThreshold(options) : 0.0); }
+double ImportDraft::iso()
+{
+    if (options.label) return 0.5;  // the middle of the label's mask
+    return options.iso.value_or(mFile->isScan() ? mFile->otsuThreshold(options) : 0.0);
+}
 
 bool ImportDraft::stale() const { return !sameOptions(options, mPreviewed); }
 

@@ -51,7 +51,7 @@ bool ImportMode::sync(double /*now*/)
 
 void ImportMode::step(int direction)
 {
-    if (!mDraft.file().isScan()) return;
+    if (!mDraft.file().isScan() || mDraft.options.label) return;  // a label's surface has no iso-value to step
     const auto [lo, hi] = mDraft.file().range(mDraft.options);
     mDraft.options.iso = std::clamp(mDraft.iso() + direction * kIsoStep * (hi - lo), lo, hi);
 }

@@ -53,8 +53,30 @@ void histogramPlot(ImportDraft& draft)
     mark(draft.iso(), IM_COL32(255, 255, 255, 255));
 }
 
+/// A label map's label to import, or all its samples as intensities (at an iso-value).
+void labelControls(ImportDraft& draft)
+{
+    const std::vector<int>& labels = draft.file().labels();
+    if (labels.size() <= 2) return;  // a mask, or intensities: no labels to choose from
+    const std::string shown = draft.options.label ? std::to_string(*draft.options.label) : "none (iso-value)";
+    ImGui::SetNextItemWidth(200.f);
+    if (ImGui::BeginCombo("label", shown.c_str())) {
+        if (ImGui::Selectable("none (iso-value)", !draft.options.label)) draft.options.label.reset();
+        for (const int label : labels)
+            if (ImGui::Selectable(std::to_string(label).c_str(), draft.options.label == label)) {
+                draft.options.label = label;
+                draft.options.iso.reset();
+            }
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("a label map (%zu labels): the surface around one label's samples, anti-aliased",
+                          labels.size());
+}
+
 void isoControls(ImportDraft& draft)
 {
+    if (draft.options.label) return;  // a label's surface is where its mask crosses 0.5
     const auto [lo, hi] = draft.file().range(draft.options);
     float iso = float(draft.iso());
     ImGui::SetNextItemWidth(200.f);
@@ -93,6 +115,7 @@ void scanControls(ImportDraft& draft)
 {
     scanFacts(draft.file().scan());
     histogramPlot(draft);
+    labelControls(draft);
     isoControls(draft);
     cropControls(draft);
     float sigma = float(draft.options.smoothSigma);
@@ -100,7 +123,7 @@ void scanControls(ImportDraft& draft)
     if (ImGui::InputFloat("smoothing sigma", &sigma, 0.f, 0.f, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue))
         draft.options.smoothSigma = std::max(0.f, sigma);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gaussian pre-smoothing of noisy scans, world units (0: none)");
-    bool antiAlias = draft.options.antiAliasMask.value_or(draft.file().twoValued());
+    bool antiAlias = draft.options.antiAliasMask.value_or(draft.file().twoValued() || draft.options.label);
     if (ImGui::Checkbox("anti-alias terraces", &antiAlias)) draft.options.antiAliasMask = antiAlias;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("smooth away the voxel terraces of a surface cut from binary data, keeping every sample\n"

@@ -625,6 +625,13 @@ TEST(ShapeImport, ALabelMapImportsEachLabelAsItsOwnSurface)
         EXPECT_NEAR(m.volume, want.first, 0.02 * want.first) << "label " << label;
         EXPECT_EQ(m.eulerCharacteristic, want.second) << "label " << label;
     }
+    // The window's preview offers the labels and shows one.
+    ImportPreview preview(dir / "labels.mha");
+    EXPECT_EQ(preview.labels(), (std::vector<int>{0, 1, 2, 3}));
+    ImportOptions inner3;
+    inner3.label = 3;
+    EXPECT_EQ(measureField(preview.surface(inner3)).components, 1);
+    EXPECT_EQ(measureField(preview.surface(ImportOptions{})).components, 1) << "at Otsu's threshold: one solid";
     ImportOptions missing;
     missing.label = 4;
     ImportReport unused;
