@@ -206,30 +206,32 @@ double ScanVolume::worldExtent() const
     return box.extents()[box.maxExtent()];
 }
 
+std::optional<std::set<double>> ScanVolume::distinctValues(std::size_t most) const
+{
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    std::set<double> found;
+    const vtkIdType count = samples->GetNumberOfTuples();
+    for (vtkIdType i = 0; i < count; ++i)
+        if (found.insert(samples->GetComponent(i, 0)).second && found.size() > most) return std::nullopt;
+    return found;
+}
+
 bool ScanVolume::twoValued() const
 {
-    const auto [lo, hi] = range();
-    if (!(lo < hi)) return false;
-    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
-    const vtkIdType count = samples->GetNumberOfTuples();
-    for (vtkIdType i = 0; i < count; ++i) {
-        const double v = samples->GetComponent(i, 0);
-        if (v != lo && v != hi) return false;
-    }
-    return true;
+    const auto values = distinctValues(2);
+    return values && values->size() == 2;
 }
 
 std::vector<int> ScanVolume::labels() const
 {
-    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
-    std::set<int> found;
-    const vtkIdType count = samples->GetNumberOfTuples();
-    for (vtkIdType i = 0; i < count; ++i) {
-        const double v = samples->GetComponent(i, 0);
+    const auto values = distinctValues(kMaxLabels);
+    if (!values) return {};
+    std::vector<int> labels;
+    for (const double v : *values) {
         if (v != std::floor(v) || std::abs(v) > double(std::numeric_limits<int>::max())) return {};
-        if (found.insert(int(v)).second && found.size() > kMaxLabels) return {};
+        labels.push_back(int(v));
     }
-    return {found.begin(), found.end()};
+    return labels;
 }
 
 ScanVolume ScanVolume::labelMask(int label) const

@@ -11,6 +11,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,8 @@ private:
     friend ChildReply packScan(const ScanVolume& scan);  // scan_transfer.h
     static constexpr double kMinSigmaVoxels = 0.25;      // below, the filter would change nothing visible
     ScanVolume gaussian(const openvdb::Vec3d& sigmaVoxels) const;
+    /// The sample values, ascending; nothing once there are more than `most`.
+    std::optional<std::set<double>> distinctValues(std::size_t most) const;
 
     std::shared_ptr<const Impl> mImpl;
 };

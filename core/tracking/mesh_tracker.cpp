@@ -35,12 +35,13 @@ void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
     mMemory = {};
     for (int i = 0; i < mOptions.seedSteps; ++i)
         advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, mOptions.seedLongestEdges * mEdge, true},
-                relaxation());
+                relaxation(mOptions.gain, mOptions.conjugateGradientSteps));
 }
 
 TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
 {
-    TrackingStep report = advance(field, displacement, {mEdge}, relaxation());
+    TrackingStep report =
+        advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps));
     const TriangleMesh mc = meshLevelSet(field);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
@@ -49,8 +50,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
         // The cut's new vertices and long edges: onto the surface and into [e, 2e]. Its fans are
         // far from the rest shape, where the co-rotational linearisation overshoots and folds
         // them: they relax a gentler fraction of the way.
-        const RelaxOptions settling{mOptions.restEdges * mEdge, mOptions.settleGain,
-                                    mOptions.settleConjugateGradientSteps};
+        const RelaxOptions settling = relaxation(mOptions.settleGain, mOptions.settleConjugateGradientSteps);
         for (int i = 0; i < kSettleSteps; ++i) {
             const TrackingStep settle = advance(field, {}, {mEdge}, settling);
             report.splits += settle.splits;
@@ -89,9 +89,9 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     return report;
 }
 
-RelaxOptions MeshTracker::relaxation() const
+RelaxOptions MeshTracker::relaxation(double gain, int conjugateGradientSteps) const
 {
-    return {mOptions.restEdges * mEdge, mOptions.gain, mOptions.conjugateGradientSteps};
+    return {mOptions.restEdges * mEdge, gain, conjugateGradientSteps};
 }
 
 void MeshTracker::relax(const FieldImage& field, const RelaxOptions& options)

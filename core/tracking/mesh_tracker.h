@@ -95,8 +95,8 @@ private:
     /// The step without the topology check.
     TrackingStep advance(const FieldImage& field, const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& move,
                          const RemeshLimits& limits, const RelaxOptions& relaxation);
-    /// The relaxation of tracking and seeding steps.
-    RelaxOptions relaxation() const;
+    /// The triangles at rest at restEdges e, relaxed with this gain and these steps.
+    RelaxOptions relaxation(double gain, int conjugateGradientSteps) const;
     /// One quasi-static step of the triangles along the surface, then back onto it.
     void relax(const FieldImage& field, const RelaxOptions& options);
     /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),

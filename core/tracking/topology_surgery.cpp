@@ -255,9 +255,9 @@ std::optional<TrackedMesh> cutAndClose(const TrackedMesh& mesh, std::vector<std:
         surgery.addedVertices = loops.size();
     }
     surgery.loops = loops.size();
-    const std::size_t before = result.positions.size() - surgery.addedVertices;
+    const std::size_t closed = result.positions.size();
     result.dropUnusedVertices();
-    surgery.removedVertices = before + surgery.addedVertices - result.positions.size();
+    surgery.removedVertices = closed - result.positions.size();
     if (!closedOrientedManifold(result.triangles) ||
         surfaceTopology(result.triangles, result.positions.size()) != truth)
         return std::nullopt;

@@ -66,8 +66,7 @@ FieldImage ImportPreview::surface(const ImportOptions& options)
     FieldImage field = [&] {
         if (mMesh) return meshToField(*mMesh, mPreviewVoxelSize);
         prepare(options);
-        const double iso = options.label ? 0.5 : options.iso.value_or(mPrepared.otsu);  // a mask's middle
-        return scanToLevelSet(*mPrepared.filtered, iso, mPreviewVoxelSize);
+        return scanToLevelSet(*mPrepared.filtered, scanIso(options, [&] { return mPrepared.otsu; }), mPreviewVoxelSize);
     }();
     if (options.largestComponent) keepLargestComponent(field);
     return field;

@@ -130,10 +130,10 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     if (options.smoothSigma > 0.0) scan = scan.smoothed(options.smoothSigma);
     report.kind = "scan";
     report.isoChosen = !options.iso && !options.label;
-    report.iso = options.iso ? *options.iso : options.label ? 0.5 : scan.otsuThreshold();
+    report.iso = scanIso(options, [&] { return scan.otsuThreshold(); });
     report.voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
     report.twoValued = scan.twoValued();
-    report.maskAntiAliased = options.antiAliasMask.value_or(report.twoValued);
+    report.maskAntiAliased = antiAliasesMask(options, report.twoValued);
     if (auto filtered = scan.antiAliased(report.voxelSize)) {
         scan = std::move(*filtered);
         report.antiAliased = true;
@@ -158,6 +158,17 @@ FieldImage namingInput(const fs::path& input, const Convert& convert)
 }
 
 }  // namespace
+
+double scanIso(const ImportOptions& options, const std::function<double()>& otsu)
+{
+    if (options.iso) return *options.iso;
+    return options.label ? 0.5 : otsu();
+}
+
+bool antiAliasesMask(const ImportOptions& options, bool twoValued)
+{
+    return options.antiAliasMask.value_or(twoValued || options.label.has_value());
+}
 
 FieldImage importShape(const fs::path& input, const ImportOptions& options, ImportReport& report,
                        const Progress& progress)

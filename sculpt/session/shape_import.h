@@ -8,6 +8,7 @@
 #include "core/scan/scan_readers.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,6 +29,12 @@ struct ImportOptions {
     std::optional<bool> antiAliasMask;
     std::optional<RawLayout> raw;  ///< read the input as raw samples with this layout
 };
+
+/// The iso-value a scan imports at: the options', a label mask's middle (0.5), else `otsu()`.
+double scanIso(const ImportOptions& options, const std::function<double()>& otsu);
+/// Whether a scan's surface is anti-aliased: as the options say, else for masks (two-valued
+/// samples, `twoValued`) and labels.
+bool antiAliasesMask(const ImportOptions& options, bool twoValued);
 
 /// What an import did, for the user.
 struct ImportReport {

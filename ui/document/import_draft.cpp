@@ -22,8 +22,7 @@ ImportDraft::ImportDraft(std::shared_ptr<ImportPreview> file, FieldImage first, 
 
 double ImportDraft::iso()
 {
-    if (options.label) return 0.5;  // the middle of the label's mask
-    return options.iso.value_or(mFile->isScan() ? mFile->otsuThreshold(options) : 0.0);
+    return scanIso(options, [&] { return mFile->isScan() ? mFile->otsuThreshold(options) : 0.0; });
 }
 
 bool ImportDraft::stale() const { return !sameOptions(options, mPreviewed); }

@@ -123,7 +123,7 @@ void scanControls(ImportDraft& draft)
     if (ImGui::InputFloat("smoothing sigma", &sigma, 0.f, 0.f, "%.3g", ImGuiInputTextFlags_EnterReturnsTrue))
         draft.options.smoothSigma = std::max(0.f, sigma);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gaussian pre-smoothing of noisy scans, world units (0: none)");
-    bool antiAlias = draft.options.antiAliasMask.value_or(draft.file().twoValued() || draft.options.label);
+    bool antiAlias = antiAliasesMask(draft.options, draft.file().twoValued());
     if (ImGui::Checkbox("anti-alias terraces", &antiAlias)) draft.options.antiAliasMask = antiAlias;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("smooth away the voxel terraces of a surface cut from binary data, keeping every sample\n"
