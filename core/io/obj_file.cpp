@@ -1,8 +1,12 @@
 #include "core/io/obj_file.h"
 
+#include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/io/text_lines.h"
 #include "core/mesh/polygon_soup.h"
+
+#include <cstdio>
+#include <memory>
 
 namespace sculpt {
 
@@ -24,7 +28,44 @@ std::int64_t cornerVertex(std::string_view corner, std::int64_t verticesSoFar, c
     return verticesSoFar + i;
 }
 
+/// One object's lines; `first` and `firstNormal` are the 1-based numbers of its first vertex and
+/// normal in the file.
+void writeObject(std::FILE* file, const std::string& name, const TriangleMesh& mesh, std::size_t first,
+                 std::size_t firstNormal)
+{
+    std::fprintf(file, "o %s\n", name.c_str());
+    for (const auto& p : mesh.positions) std::fprintf(file, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
+    for (const auto& n : mesh.normals) std::fprintf(file, "vn %.6g %.6g %.6g\n", n[0], n[1], n[2]);
+    const bool normals = !mesh.normals.empty();
+    for (const auto& t : mesh.triangles) {
+        const std::size_t a = t[0] + first, b = t[1] + first, c = t[2] + first;
+        if (!normals) {
+            std::fprintf(file, "f %zu %zu %zu\n", a, b, c);
+            continue;
+        }
+        const std::size_t na = t[0] + firstNormal, nb = t[1] + firstNormal, nc = t[2] + firstNormal;
+        std::fprintf(file, "f %zu//%zu %zu//%zu %zu//%zu\n", a, na, b, nb, c, nc);
+    }
+}
+
 }  // namespace
+
+void writeObjObjects(const std::vector<std::pair<std::string, TriangleMesh>>& objects, const fs::path& path)
+{
+    AtomicFile out(path);
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(out.temporaryPath().c_str(), "w"),
+                                                              &std::fclose);
+    if (!file) throw InputError(path.string() + ": cannot be written");
+    std::size_t first = 1, firstNormal = 1;
+    for (const auto& [name, mesh] : objects) {
+        writeObject(file.get(), name, mesh, first, firstNormal);
+        first += mesh.positions.size();
+        firstNormal += mesh.normals.size();
+    }
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get()))
+        throw InputError(path.string() + ": cannot be written (disk full?)");
+    out.commit();
+}
 
 TriangleMesh readObj(const fs::path& path)
 {

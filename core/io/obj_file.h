@@ -6,6 +6,9 @@
 #include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace sculpt {
 
@@ -14,5 +17,11 @@ namespace sculpt {
 /// @throws InputError naming the file and line: a bad number, a face of fewer than 3 vertices,
 ///         an index naming no vertex (VTK's reader imports those as a wrong shape).
 TriangleMesh readObj(const std::filesystem::path& path);
+
+/// Writes meshes as the named objects ("o name") of one OBJ file, atomically, with normals where
+/// a mesh has them: Blender and most tools import each object separately.
+/// @throws InputError naming the file if its directory is missing or it cannot be written.
+void writeObjObjects(const std::vector<std::pair<std::string, TriangleMesh>>& objects,
+                     const std::filesystem::path& path);
 
 }  // namespace sculpt

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
+#include <set>
 
 namespace sculpt {
 
@@ -29,6 +30,8 @@ constexpr const char* kMetaVersion = "sculpt.format_version";
 constexpr const char* kMetaUnits = "sculpt.units";
 constexpr const char* kMetaVoxelSize = "sculpt.voxel_size";
 constexpr const char* kMetaChecksum = "sculpt.checksum";
+constexpr const char* kMetaPieceColour = "sculpt.piece_colour";
+constexpr const char* kMetaPieceVisible = "sculpt.piece_visible";
 
 /// The grid to edit: the one named, else the default one.
 const VdbGridEntry& chooseGrid(const VdbLayout& layout, const std::string& requested)
@@ -181,7 +184,18 @@ void refuseToLoseGrids(const fs::path& path)
     }
 }
 
-void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field, const fs::path& path)
+/// A piece's own checksum (in its grid's metadata) checked, then dropped: edits outdate it.
+void checkPieceChecksum(openvdb::FloatGrid& grid)
+{
+    if (auto sum = grid.getMetadata<openvdb::StringMetadata>(kMetaChecksum)) {
+        if (sum->value() != formatChecksum(gridChecksum(grid)))
+            throw InputError("corrupt (the voxels of piece '" + grid.getName() + "' do not match their checksum)");
+        grid.removeMeta(kMetaChecksum);
+    }
+}
+
+/// The file's version, and, for the grid it records as edited (`edited`), its voxel size and checksum.
+void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field, const fs::path& path, bool edited)
 {
     if (auto version = meta.getMetadata<openvdb::Int32Metadata>(kMetaVersion)) {
         if (version->value() > kVdbFormatVersion) {
@@ -190,6 +204,7 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
                              std::to_string(kVdbFormatVersion) + ")");
         }
     }
+    if (!edited) return;
     if (auto size = meta.getMetadata<openvdb::DoubleMetadata>(kMetaVoxelSize)) {
         if (std::abs(size->value() - field.voxelSize()) > 1e-9 * field.voxelSize()) {
             throw InputError(path.string() + ": corrupt (voxel size in metadata " + formatNumber(size->value()) +
@@ -215,12 +230,45 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     openvdb::MetaMap& meta = companions.metadata;
     std::string units = FieldImage::kDefaultUnits;
     if (auto u = meta.getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
+    checkPieceChecksum(*grid);
     FieldImage field(asNarrowBand(grid, path, warnings), units);
-    checkDocumentMetadata(meta, field, path);
+    checkDocumentMetadata(meta, field, path, layout.editedGrid.empty() || layout.editedGrid == chosen.name);
     for (const char* ours : {kMetaVersion, kMetaUnits, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
         meta.removeMeta(ours);
     }
     return {std::move(field), std::move(companions), std::move(warnings)};
+}
+
+/// A piece with the look its grid's metadata records (the defaults where it records none).
+Piece pieceOf(FieldImage field)
+{
+    const openvdb::FloatGrid& grid = field.grid();
+    Piece piece{grid.getName().empty() ? "surface" : grid.getName(), std::move(field)};
+    if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) piece.colour = colour->value();
+    if (auto visible = grid.getMetadata<openvdb::BoolMetadata>(kMetaPieceVisible)) piece.visible = visible->value();
+    return piece;
+}
+
+/// The grid a piece is written as: its tree shared, its name and look in its metadata.
+openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece)
+{
+    openvdb::FloatGrid::Ptr grid = openvdb::ConstPtrCast<openvdb::FloatGrid>(piece.field.gridPtr())->copy();
+    grid->setName(piece.name);
+    grid->insertMeta(kMetaPieceColour, openvdb::Vec3SMetadata(piece.colour));
+    grid->insertMeta(kMetaPieceVisible, openvdb::BoolMetadata(piece.visible));
+    grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
+    return grid;
+}
+
+void checkPieceNames(const std::vector<Piece>& pieces, const fs::path& path)
+{
+    if (pieces.empty()) throw InputError(path.string() + ": a document needs at least one piece");
+    std::set<std::string> names;
+    for (const Piece& piece : pieces) {
+        if (piece.name.empty()) throw InputError(path.string() + ": a piece has no name");
+        if (!names.insert(piece.name).second)
+            throw InputError(path.string() + ": two pieces are named '" + piece.name + "'");
+    }
 }
 
 }  // namespace
@@ -244,6 +292,28 @@ VdbDocument readVdbDocument(const fs::path& path, const std::string& gridName)
     } catch (const std::exception& e) {
         throw InputError(path.string() + ": not a valid OpenVDB file, or truncated or corrupt (" + e.what() + ")");
     }
+}
+
+VdbPieces readVdbPieces(const fs::path& path)
+{
+    VdbDocument document = readVdbDocument(path);
+    const std::string units = document.field.units();
+    VdbPieces read{{pieceOf(std::move(document.field))}, {{}, std::move(document.companions.metadata)},
+                   std::move(document.warnings)};
+    for (const openvdb::GridBase::Ptr& grid : document.companions.grids) {
+        const auto levelSet = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
+        if (!levelSet || !levelSet->getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) {
+            read.companions.grids.push_back(grid);
+            continue;
+        }
+        try {
+            checkPieceChecksum(*levelSet);
+            read.pieces.push_back(pieceOf(FieldImage(levelSet, units)));
+        } catch (const InputError& e) {
+            throw InputError(path.string() + ": " + e.what());
+        }
+    }
+    return read;
 }
 
 FieldImage readFieldImage(const fs::path& path, const std::string& gridName)
@@ -278,6 +348,15 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
         throw InputError(path.string() + ": cannot write (" + e.what() + ")");
     }
     out.commit();
+}
+
+void writeVdbPieces(const std::vector<Piece>& pieces, const fs::path& path, const VdbCompanions& companions)
+{
+    checkPieceNames(pieces, path);
+    VdbCompanions others{{}, companions.metadata};
+    for (std::size_t i = 1; i < pieces.size(); ++i) others.grids.push_back(pieceGrid(pieces[i]));
+    others.grids.insert(others.grids.end(), companions.grids.begin(), companions.grids.end());
+    writeFieldImage(FieldImage(pieceGrid(pieces.front()), pieces.front().field.units()), path, others);
 }
 
 }  // namespace sculpt

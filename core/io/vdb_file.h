@@ -8,11 +8,18 @@
 ///   sculpt.units          (string)— length unit of world coordinates, e.g. "mm"
 ///   sculpt.voxel_size     (double)— redundant with the transform; a mismatch means damage
 ///   sculpt.checksum       (string)— gridChecksum() in hex; a mismatch means damage
+/// A document of several pieces (piece.h) holds one level set per piece, named after it, the first
+/// recorded as the edited grid so that every reader of one surface opens it; each piece grid
+/// carries in its own metadata
+///   sculpt.piece_colour   (vec3s) — sRGB 0..1; marks the grid as a piece
+///   sculpt.piece_visible  (bool)
+///   sculpt.checksum       (string)— as above, for the pieces after the first
 /// Files from other programs are accepted: the grid named "surface" is edited, else the only
 /// float level set, else the one the user names. Their other grids and metadata are kept and
 /// written back on save; a float grid that is not a narrow band (a dense `phi`) is rebuilt into one.
 
 #include "core/field/field_image.h"
+#include "core/field/piece.h"
 
 #include <openvdb/openvdb.h>
 
@@ -53,5 +60,25 @@ FieldImage readFieldImage(const std::filesystem::path& path, const std::string& 
 /// @throws InputError naming the file if its directory does not exist, it cannot be written, or
 ///         it is a .vdb holding a grid this build cannot decode (writing would lose that grid).
 void writeFieldImage(const FieldImage& field, const std::filesystem::path& path, const VdbCompanions& companions = {});
+
+/// A document's pieces: the edited grid first, then every level set marked as a piece, in file
+/// order; a document of one surface (every file written before pieces) is one piece named
+/// after its grid.
+struct VdbPieces {
+    std::vector<Piece> pieces;
+    VdbCompanions companions;  ///< the grids that are not pieces, and the file's metadata
+    std::vector<std::string> warnings;
+};
+
+/// Reads every piece of a document.
+/// @throws InputError as readVdbDocument, and naming the piece whose voxels do not match its checksum.
+VdbPieces readVdbPieces(const std::filesystem::path& path);
+
+/// Writes pieces (at least one, unique non-empty names, the same units) atomically as above; a
+/// single piece is written as writeFieldImage writes its field.
+/// @throws InputError naming the file as writeFieldImage, or the piece whose name is empty or
+///         taken twice.
+void writeVdbPieces(const std::vector<Piece>& pieces, const std::filesystem::path& path,
+                    const VdbCompanions& companions = {});
 
 }  // namespace sculpt

@@ -234,6 +234,39 @@ std::vector<int> ScanVolume::labels() const
     return labels;
 }
 
+double ScanVolume::sameNeighbourFraction() const
+{
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    const openvdb::Coord d = dims();
+    std::size_t pairs = 0, same = 0;
+    std::vector<double> row(std::size_t(d.x()));
+    for (vtkIdType start = 0; start < samples->GetNumberOfTuples(); start += d.x()) {
+        for (int x = 0; x < d.x(); ++x) row[std::size_t(x)] = samples->GetComponent(start + x, 0);
+        for (std::size_t x = 1; x < row.size(); ++x) {
+            if (row[x] == 0.0 && row[x - 1] == 0.0) continue;
+            ++pairs;
+            same += row[x] == row[x - 1];
+        }
+    }
+    return pairs > 0 ? double(same) / double(pairs) : 1.0;
+}
+
+std::map<int, ScanVolume::LabelExtent> ScanVolume::labelExtents() const
+{
+    vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();
+    const openvdb::Coord d = dims();
+    std::map<int, LabelExtent> extents;
+    vtkIdType i = 0;
+    for (int z = 0; z < d.z(); ++z)
+        for (int y = 0; y < d.y(); ++y)
+            for (int x = 0; x < d.x(); ++x, ++i) {
+                LabelExtent& extent = extents[int(samples->GetComponent(i, 0))];
+                extent.box.expand(openvdb::Coord(x, y, z));
+                ++extent.samples;
+            }
+    return extents;
+}
+
 ScanVolume ScanVolume::labelMask(int label) const
 {
     vtkDataArray* samples = mImpl->image->GetPointData()->GetScalars();

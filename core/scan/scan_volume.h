@@ -9,6 +9,7 @@
 
 #include <openvdb/openvdb.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -66,6 +67,16 @@ public:
     /// and there are at most kMaxLabels of them; empty otherwise (intensities, not labels).
     std::vector<int> labels() const;
     static constexpr std::size_t kMaxLabels = 4096;
+    /// Among the pairs of neighbouring samples along x that are not both 0, the fraction holding
+    /// one value: most of a label map's (regions of one label; 0.68 to 0.89 in MRIcron's atlases),
+    /// few of an intensity scan's, even one of few values (noise; 0.09 to 0.23 for its MRIs).
+    double sameNeighbourFraction() const;
+    /// Where each value of a label map (labels()) lies: the index box of its samples, and their count.
+    struct LabelExtent {
+        openvdb::CoordBBox box;
+        std::size_t samples = 0;
+    };
+    std::map<int, LabelExtent> labelExtents() const;
     /// A mask of one label: 1 where the sample is `label`, 0 elsewhere (bytes), placed as the scan.
     ScanVolume labelMask(int label) const;
     /// Otsu's threshold: the value that best splits a 256-bin histogram into two classes.

@@ -6,6 +6,7 @@
 #include "core/io/vdb_file.h"
 
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -15,11 +16,14 @@ namespace sculpt::cli {
 
 struct DocumentInput {
     std::string path;
-    std::string grid;  ///< empty: "surface", else the only level set
+    std::string grid;  ///< a piece's or grid's name; empty: the edited one, "surface" or the only level set
 };
 
 /// Adds the positional `input` (described by `what`) and `--grid` to `cmd`.
 void addDocumentInput(CLI::App& cmd, DocumentInput& input, const std::string& what);
+
+/// Every piece of the document, or the one `grid` names, printing its warnings on stderr.
+std::vector<Piece> readPieces(const DocumentInput& input);
 
 /// Reads the document, printing its warnings (a grid left out, a band rebuilt) on stderr.
 VdbDocument readDocument(const DocumentInput& input);

@@ -22,7 +22,7 @@ struct ImportCommandOptions {
     std::string input, output, mesh;
     double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
     int label = 0;
-    bool autoIso = false, largest = false, antiAlias = false;
+    bool autoIso = false, largest = false, antiAlias = false, labels = false;
     std::vector<int> crop;
     std::vector<int> rawDims;
     std::string rawType = "uint8";
@@ -61,10 +61,32 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
     return options;
 }
 
+/// `--labels`: a piece per label, written as one document.
+void runLabelsImport(const ImportCommandOptions& o)
+{
+    ImportReport report;
+    const std::vector<Piece> pieces = [&] {
+        ProgressBar bar("importing labels");
+        return importLabelPieces(o.input, toImportOptions(o), report, bar.callback());
+    }();
+    for (const std::string& warning : report.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
+    writeVdbPieces(pieces, o.output);
+    std::cout << "imported " << o.input << " (a label map): " << pieces.size() << " pieces, voxel size "
+              << report.voxelSize << (report.maskAntiAliased ? ", anti-aliased" : "") << "\nwrote " << o.output
+              << ":\n";
+    for (const Piece& piece : pieces) {
+        const FieldMeasures m = measureField(piece.field);
+        std::cout << "  '" << piece.name << "': volume " << m.volume << ", area " << m.area << ", " << m.components
+                  << " components\n";
+    }
+    if (!o.mesh.empty()) writePiecesMeshes(pieces, o.mesh);
+}
+
 void runImport(const ImportCommandOptions& o)
 {
     AtomicFile::checkTarget(o.output);
     checkMeshOutput(o.mesh);
+    if (o.labels) return runLabelsImport(o);
     ImportReport report;
     const FieldImage field = [&] {
         ProgressBar bar("importing");
@@ -114,6 +136,11 @@ void addImportCommand(CLI::App& app)
                                      "a label map (a segmentation: integer samples, one value per structure): the\n"
                                      "surface around the samples of this label, anti-aliased")
                          ->excludes(o->isoOption);
+    cmd->add_flag("--labels", o->labels,
+                  "a label map: one piece per label (but 0, the background), named 'label N', each\n"
+                  "anti-aliased; --mesh then writes a file per piece (or one OBJ of an object each)")
+        ->excludes(o->isoOption)
+        ->excludes(o->labelOption);
     o->voxelOption = cmd->add_option(
         "--voxel-size", o->voxelSize,
         "voxel size of the document (default: the scan's smallest spacing; a mesh's longest side / 256)");

@@ -7,6 +7,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -44,12 +46,9 @@ nlohmann::json toJson(const FieldMeasures& m, const std::string& units)
             {"components", m.components}};
 }
 
-void printText(const FieldMeasures& m, const std::string& units, const std::string& input, const std::string& grid,
-               const VdbLayout& layout)
+void printMeasures(const FieldMeasures& m, const std::string& units)
 {
     const char* u = units.c_str();
-    std::printf("file:                 %s\n", input.c_str());
-    std::printf("grid:                 %s (the file holds %s)\n", grid.c_str(), describeGrids(layout).c_str());
     std::printf("voxel size:           %g %s (band half width %g voxels)\n", m.voxelSize, u, m.halfWidthVoxels);
     std::printf("active voxels:        %llu\n", static_cast<unsigned long long>(m.activeVoxels));
     std::printf("memory:               %s\n", formatBytes(double(m.memoryBytes)).c_str());
@@ -61,19 +60,91 @@ void printText(const FieldMeasures& m, const std::string& units, const std::stri
     std::printf("components:           %d\n", m.components);
 }
 
+/// "#cc7a66": a piece's colour as people type it.
+std::string hexColour(const openvdb::Vec3f& c)
+{
+    char text[8];
+    const auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+    std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c[0]), byte(c[1]), byte(c[2]));
+    return text;
+}
+
+/// The pieces together: sums, the union of their boxes, the first's voxel size and band.
+FieldMeasures total(const std::vector<FieldMeasures>& pieces)
+{
+    FieldMeasures sum = pieces.front();
+    for (std::size_t i = 1; i < pieces.size(); ++i) {
+        const FieldMeasures& m = pieces[i];
+        sum.activeVoxels += m.activeVoxels;
+        sum.memoryBytes += m.memoryBytes;
+        sum.bboxMin = openvdb::math::minComponent(sum.bboxMin, m.bboxMin);
+        sum.bboxMax = openvdb::math::maxComponent(sum.bboxMax, m.bboxMax);
+        sum.volume += m.volume;
+        sum.area += m.area;
+        sum.eulerCharacteristic += m.eulerCharacteristic;
+        sum.components += m.components;
+    }
+    return sum;
+}
+
+/// The file's grids that are not pieces.
+VdbLayout othersThan(VdbLayout layout, const std::vector<Piece>& pieces)
+{
+    const auto isPiece = [&](const VdbGridEntry& grid) {
+        return std::any_of(pieces.begin(), pieces.end(), [&](const Piece& p) { return p.name == grid.name; });
+    };
+    layout.grids.erase(std::remove_if(layout.grids.begin(), layout.grids.end(), isPiece), layout.grids.end());
+    return layout;
+}
+
+void printPieces(const std::vector<Piece>& pieces, const std::vector<FieldMeasures>& measures, const VdbLayout& others)
+{
+    if (!others.grids.empty()) std::printf("other grids:          %s\n", describeGrids(others).c_str());
+    const std::string& units = pieces.front().field.units();
+    std::printf("pieces:               %zu\n", pieces.size());
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const FieldMeasures& m = measures[i];
+        std::printf("  %-20s volume %g %s^3, area %g %s^2, euler characteristic %d, %d components, voxel size %g, "
+                    "%s%s\n",
+                    ("'" + pieces[i].name + "'").c_str(), m.volume, units.c_str(), m.area, units.c_str(),
+                    m.eulerCharacteristic, m.components, m.voxelSize, hexColour(pieces[i].colour).c_str(),
+                    pieces[i].visible ? "" : ", hidden");
+    }
+    std::printf("all pieces:\n");
+}
+
 void runInfo(const InfoOptions& o)
 {
-    const FieldImage field = readDocument(o.input).field;
+    const std::vector<Piece> pieces = readPieces(o.input);
     const VdbLayout layout = scanVdbLayout(o.input.path);
-    const FieldMeasures m = measureField(field);
+    std::vector<FieldMeasures> measures;
+    for (const Piece& piece : pieces) measures.push_back(measureField(piece.field));
+    const FieldMeasures all = total(measures);
+    const std::string& units = pieces.front().field.units();
     if (o.json) {
-        nlohmann::json report = toJson(m, field.units());
-        report["grid"] = field.grid().getName();
+        nlohmann::json report = toJson(all, units);
+        report["grid"] = pieces.front().field.grid().getName();
         report["grids"] = gridsJson(layout);
+        report["pieces"] = nlohmann::json::array();
+        for (std::size_t i = 0; i < pieces.size(); ++i) {
+            nlohmann::json piece = toJson(measures[i], units);
+            const openvdb::Vec3f& c = pieces[i].colour;
+            piece["name"] = pieces[i].name;
+            piece["colour"] = {c[0], c[1], c[2]};
+            piece["visible"] = pieces[i].visible;
+            report["pieces"].push_back(piece);
+        }
         std::cout << report.dump() << "\n";
-    } else {
-        printText(m, field.units(), o.input.path, field.grid().getName(), layout);
+        return;
     }
+    std::printf("file:                 %s\n", o.input.path.c_str());
+    if (pieces.size() == 1) {
+        std::printf("grid:                 %s (the file holds %s)\n", pieces.front().field.grid().getName().c_str(),
+                    describeGrids(layout).c_str());
+    } else {
+        printPieces(pieces, measures, othersThan(layout, pieces));
+    }
+    printMeasures(all, units);
 }
 
 }  // namespace
@@ -84,13 +155,16 @@ void addInfoCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("info", "Print a document's voxel size, active voxels, memory, bounding box, volume,\n"
                                    "area, Euler characteristic (2 per sphere-like piece, 0 per torus) and\n"
-                                   "number of connected surface components, and the grids the file holds.");
+                                   "number of connected surface components, and the grids the file holds.\n"
+                                   "A document of several pieces is measured per piece and in total.");
     addDocumentInput(*cmd, options->input, "the .vdb document to measure");
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
                   "bbox_min, bbox_max, volume, area, euler_characteristic, components\n"
-                  "(plus units, half_width_voxels, grid: the grid measured, and grids: every\n"
-                  "grid of the file with its name, type and class)");
+                  "(plus units, half_width_voxels, grid: the first grid measured, grids: every\n"
+                  "grid of the file with its name, type and class, and pieces: the same keys per\n"
+                  "piece with its name, colour (sRGB 0..1) and visible; the top-level keys are the\n"
+                  "pieces' total)");
     cmd->callback([options] { runInfo(*options); });
 }
 

@@ -1,12 +1,9 @@
-#include "core/base/atomic_file.h"
-#include "core/io/mesh_file.h"
-#include "core/mesh/incremental_mesher.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
+#include "sculpt/cli/mesh_output.h"
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
 
 namespace sculpt::cli {
@@ -20,13 +17,8 @@ struct MeshOptions {
 
 void runMesh(const MeshOptions& o)
 {
-    meshFormatOf(o.output);
-    AtomicFile::checkTarget(o.output);
-    const FieldImage field = readDocument(o.input).field;
-    const TriangleMesh mesh = meshLevelSet(field);
-    writeMesh(mesh, o.output);
-    std::cout << "wrote " << o.output << ": " << mesh.positions.size() << " vertices, " << mesh.triangles.size()
-              << " triangles\n";
+    checkMeshOutput(o.output);
+    writePiecesMeshes(readPieces(o.input), o.output);
 }
 
 }  // namespace
@@ -37,7 +29,9 @@ void addMeshCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
                                    "or rendering. The format follows the output's extension: .ply (binary, with\n"
-                                   "normals), .obj (text) or .stl (binary).");
+                                   "normals), .obj (text) or .stl (binary). A document of several pieces gives\n"
+                                   "one OBJ file of an object per piece, or a .ply or .stl file per piece named\n"
+                                   "OUTPUT's stem, a dash and the piece's name; --piece NAME exports one.");
     addDocumentInput(*cmd, options->input, "the .vdb document to mesh");
     cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
     cmd->callback([options] { runMesh(*options); });

@@ -9,9 +9,13 @@
 #include "core/mesh/field_measures.h"
 #include "core/motion/surface_flows.h"
 #include "core/scan/scan_to_level_set.h"
+#include "sculpt/session/label_names.h"
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <vector>
 
 namespace sculpt {
 
@@ -94,15 +98,23 @@ std::string labelList(const std::vector<int>& labels)
     return text + " (" + std::to_string(labels.size()) + " labels)";
 }
 
-/// The mask of `label` in a label map. @throws InputError naming the file when the scan holds
-/// intensities, not labels, or no sample of that label.
-ScanVolume labelMaskOf(const ScanVolume& scan, int label, const fs::path& input)
+/// The values of a label map. @throws InputError naming the file when the scan holds
+/// intensities, not labels.
+std::vector<int> labelsOf(const ScanVolume& scan, const fs::path& input)
 {
-    const std::vector<int> labels = scan.labels();
+    std::vector<int> labels = scan.labels();
     if (labels.empty()) {
         throw InputError(input.string() + ": its samples are not labels (not all integers, or more than " +
                          std::to_string(ScanVolume::kMaxLabels) + " values): import it at an iso-value instead");
     }
+    return labels;
+}
+
+/// The mask of `label` in a label map. @throws InputError naming the file when the scan holds
+/// intensities, not labels, or no sample of that label.
+ScanVolume labelMaskOf(const ScanVolume& scan, int label, const fs::path& input)
+{
+    const std::vector<int> labels = labelsOf(scan, input);
     if (!std::binary_search(labels.begin(), labels.end(), label)) {
         throw InputError(input.string() + ": no sample has label " + std::to_string(label) + "; its labels are " +
                          labelList(labels));
@@ -110,17 +122,19 @@ ScanVolume labelMaskOf(const ScanVolume& scan, int label, const fs::path& input)
     return scan.labelMask(label);
 }
 
-FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,
-                      const Progress& progress)
+/// The scan as the options read it: raw or from its file, cropped; its reader's warnings reported.
+ScanVolume readScanOf(const fs::path& input, const ImportOptions& options, ImportReport& report)
 {
-    if (options.label && options.iso) {
-        throw InputError(input.string() + ": a label and an iso-value exclude each other (a label's surface is "
-                                          "where its mask crosses 0.5)");
-    }
     ScanVolume scan = options.raw ? readRawScan(input, *options.raw) : readScan(input);
     report.warnings.insert(report.warnings.end(), scan.warnings().begin(), scan.warnings().end());
-    if (options.crop) scan = scan.cropped(*options.crop);
-    if (options.label) scan = labelMaskOf(scan, *options.label, input);
+    return options.crop ? scan.cropped(*options.crop) : scan;
+}
+
+/// The surface of a scan (or of one label's mask) as the options ask: smoothed, at the iso-value
+/// and voxel size, anti-aliased.
+FieldImage scanSurface(ScanVolume scan, const fs::path& input, const ImportOptions& options, ImportReport& report,
+                       const Progress& progress)
+{
     if (options.voxelSize) refuseCoarserThan(*options.voxelSize, scan.worldExtent(), input, "scan");
     if (options.smoothSigma > scan.worldExtent()) {
         throw InputError(input.string() + ": a smoothing sigma of " + formatNumber(options.smoothSigma) +
@@ -144,10 +158,74 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
     return field;
 }
 
-/// Runs `convert`, making sure any refusal names the file: a message from deep in the engine
+FieldImage importScan(const fs::path& input, const ImportOptions& options, ImportReport& report,
+                      const Progress& progress)
+{
+    if (options.label && options.iso) {
+        throw InputError(input.string() + ": a label and an iso-value exclude each other (a label's surface is "
+                                          "where its mask crosses 0.5)");
+    }
+    ScanVolume scan = readScanOf(input, options, report);
+    if (options.label) scan = labelMaskOf(scan, *options.label, input);
+    return scanSurface(std::move(scan), input, options, report, progress);
+}
+
+/// The samples around one label's box: a margin of the band, the filters' reach and a voxel
+/// (world widths over the finest spacing), so its surface is the one the whole scan gives.
+ScanVolume aroundLabel(const ScanVolume& scan, const openvdb::CoordBBox& box, const ImportOptions& options,
+                       double voxelSize)
+{
+    const double finest = std::min({scan.spacing(0), scan.spacing(1), scan.spacing(2)});
+    const double reach = (FieldImage::kDefaultHalfWidthVoxels + 2.0) * voxelSize + 3.0 * options.smoothSigma;
+    openvdb::CoordBBox around = box;
+    around.expand(int(std::ceil(reach / finest)) + 1);
+    around.intersect(openvdb::CoordBBox(openvdb::Coord(0), scan.dims() - openvdb::Coord(1)));
+    return scan.cropped(around);
+}
+
+/// Debris removed and, when asked, all but the largest solid piece: the end of every import.
+void cleanUp(FieldImage& field, const ImportOptions& options, ImportReport& report, const Progress& progress)
+{
+    if (options.largestComponent) report.pieces = keepLargestComponent(field, progress);
+    if (const std::size_t flipped = removeSpecks(field)) {
+        report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +
+                                  std::to_string(kMaxSpeckVoxels) + " voxels, too small to keep at this voxel size)");
+    }
+}
+
+/// The surface of the label `options.label`, whose samples lie in `box`, cleaned up.
+FieldImage labelSurface(const ScanVolume& scan, const openvdb::CoordBBox& box, const fs::path& input,
+                        const ImportOptions& options, ImportReport& report, const Progress& progress)
+{
+    const double voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
+    const ScanVolume mask = aroundLabel(scan, box, options, voxelSize).labelMask(*options.label);
+    FieldImage field = scanSurface(mask, input, options, report, scaledProgress(progress, 0.0, 0.9));
+    cleanUp(field, options, report, scaledProgress(progress, 0.9, 1.0));
+    return field;
+}
+
+/// Below this sameNeighbourFraction() a scan is taken for intensities (ScanVolume's figures).
+constexpr double kLeastLabelMapAgreement = 0.5;
+
+/// A label's piece: named and coloured as the files beside the scan say, else "label N" in the
+/// palette's colours from its second (the first is the clay's grey); a name taken already gets
+/// the label's number.
+Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std::string>& names, std::size_t index,
+                 FieldImage field)
+{
+    const auto look = looks.find(label);
+    const std::string number = "label " + std::to_string(label);
+    std::string name = look != looks.end() && !look->second.name.empty() ? look->second.name : number;
+    if (!names.insert(name).second) names.insert(name += " (" + number + ")");
+    const openvdb::Vec3f colour = look != looks.end() && look->second.colour ? *look->second.colour
+                                                                             : paletteColour(index + 1);
+    return {name, std::move(field), colour};
+}
+
+/// Runs `convert` and returns what it returns, making sure any refusal names the file: a message from deep in the engine
 /// ("the mesh at voxel size ... needs ...") does not know it.
 template <typename Convert>
-FieldImage namingInput(const fs::path& input, const Convert& convert)
+auto namingInput(const fs::path& input, const Convert& convert)
 {
     try {
         return convert();
@@ -183,12 +261,41 @@ FieldImage importShape(const fs::path& input, const ImportOptions& options, Impo
         return isMeshPath(input) && !options.raw ? importMesh(input, options, report, converting)
                                                  : importScan(input, options, report, converting);
     });
-    if (options.largestComponent) report.pieces = keepLargestComponent(field, scaledProgress(progress, 0.8, 1.0));
-    if (const std::size_t flipped = removeSpecks(field)) {
-        report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +
-                                  std::to_string(kMaxSpeckVoxels) + " voxels, too small to keep at this voxel size)");
-    }
+    cleanUp(field, options, report, scaledProgress(progress, 0.8, 1.0));
     return field;
+}
+
+std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions& options, ImportReport& report,
+                                     const Progress& progress)
+{
+    if (options.label || options.iso) {
+        throw InputError(input.string() + ": every label becomes a piece; a label or an iso-value choose one surface");
+    }
+    if (isMeshPath(input) && !options.raw) throw InputError(input.string() + ": a mesh has no labels");
+    return namingInput(input, [&] {
+        std::vector<Piece> pieces;
+        const ScanVolume scan = readScanOf(input, options, report);
+        labelsOf(scan, input);
+        if (const double same = scan.sameNeighbourFraction(); same < kLeastLabelMapAgreement) {
+            throw InputError("its samples look like intensities, not labels: " + formatNumber(std::round(100.0 * same)) +
+                             "% of neighbouring samples off the background agree, where a label map's mostly "
+                             "do (regions of one label); import it at an iso-value, or one value with --label");
+        }
+        std::map<int, ScanVolume::LabelExtent> extents = scan.labelExtents();
+        extents.erase(kBackgroundLabel);
+        if (extents.empty()) throw InputError("every sample is background (label 0)");
+        const std::map<int, LabelLook> looks = readLabelLooks(input, report.warnings);
+        std::set<std::string> names;
+        for (const auto& [label, extent] : extents) {
+            const double done = double(pieces.size()) / double(extents.size());
+            ImportOptions one = options;
+            one.label = label;
+            FieldImage field = labelSurface(scan, extent.box, input, one, report,
+                                            scaledProgress(progress, done, done + 1.0 / double(extents.size())));
+            pieces.push_back(labelPiece(label, looks, names, pieces.size(), std::move(field)));
+        }
+        return pieces;
+    });
 }
 
 FieldImage loadShape(const fs::path& input, std::optional<double> voxelSize, std::vector<std::string>& warnings,

@@ -4,6 +4,7 @@
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
+#include "core/field/piece.h"
 #include "core/scan/largest_component.h"
 #include "core/scan/scan_readers.h"
 
@@ -56,6 +57,17 @@ struct ImportReport {
 ///         empty result, scan options given for a mesh.
 FieldImage importShape(const std::filesystem::path& input, const ImportOptions& options, ImportReport& report,
                        const Progress& progress = {});
+
+/// The label every segmentation tool gives the samples outside all structures.
+constexpr int kBackgroundLabel = 0;
+
+/// Imports a label map (a segmentation: integer samples, one value per structure) as one piece
+/// per label but the background, named "label N": each label's surface as `label` imports it,
+/// from the samples around it only. `report` tells of the last piece and every warning.
+/// @throws InputError naming the file if it is a mesh, its samples are not labels, or it holds
+///         background only; as importShape otherwise.
+std::vector<Piece> importLabelPieces(const std::filesystem::path& input, const ImportOptions& options,
+                                     ImportReport& report, const Progress& progress = {});
 
 /// A document (.vdb) as is, or anything importShape reads with its defaults (and the given voxel
 /// size, so two shapes can share a lattice); warnings go to `warnings`.
