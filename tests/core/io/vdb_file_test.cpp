@@ -326,3 +326,94 @@ TEST(VdbFile, RefusesLengthsBeyondTheFileBeforeAllocating)
 
 }  // namespace
 }  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+/// Three pieces, each with its own look and the third its own voxel size.
+std::vector<Piece> threePieces()
+{
+    return {{"head", makeSphere(6.0, 0.5), {0.9f, 0.6f, 0.5f}, true},
+            {"hat", makeBox(3.0, 0.5), {0.2f, 0.2f, 0.8f}, false},
+            {"eye", makeSphere(1.5, 0.25), {1.0f, 1.0f, 1.0f}, true}};
+}
+
+void expectSamePieces(const std::vector<Piece>& read, const std::vector<Piece>& written)
+{
+    ASSERT_EQ(read.size(), written.size());
+    for (std::size_t i = 0; i < read.size(); ++i) {
+        EXPECT_EQ(read[i].name, written[i].name);
+        EXPECT_EQ(read[i].colour, written[i].colour) << read[i].name;
+        EXPECT_EQ(read[i].visible, written[i].visible) << read[i].name;
+        EXPECT_EQ(gridChecksum(read[i].field.grid()), gridChecksum(written[i].field.grid())) << read[i].name;
+        EXPECT_DOUBLE_EQ(read[i].field.voxelSize(), written[i].field.voxelSize()) << read[i].name;
+    }
+}
+
+}  // namespace
+
+// Pieces keep their names, colours, visibility and voxels (each its own voxel size); a reader
+// of one surface (the window today) opens the first and keeps the others, so saving it loses none.
+TEST(VdbPieces, RoundTripWithTheirLooksAndSurviveAReaderOfOneSurface)
+{
+    TempDir dir;
+    const std::vector<Piece> pieces = threePieces();
+    writeVdbPieces(pieces, dir / "doc.vdb");
+    EXPECT_EQ(gridNamesIn(dir / "doc.vdb"), (std::vector<std::string>{"head", "hat", "eye"}));
+    const VdbPieces read = readVdbPieces(dir / "doc.vdb");
+    expectSamePieces(read.pieces, pieces);
+    EXPECT_TRUE(read.companions.grids.empty());
+    EXPECT_TRUE(read.warnings.empty());
+
+    VdbDocument document = readVdbDocument(dir / "doc.vdb");
+    EXPECT_EQ(document.field.grid().getName(), "head");
+    ASSERT_EQ(document.companions.grids.size(), 2u);
+    writeFieldImage(document.field, dir / "saved.vdb", document.companions);
+    expectSamePieces(readVdbPieces(dir / "saved.vdb").pieces, pieces);
+    // One piece alone, by name, is checked against its own checksum.
+    EXPECT_EQ(gridChecksum(readFieldImage(dir / "doc.vdb", "eye").grid()), gridChecksum(pieces[2].field.grid()));
+}
+
+// Every file of one surface is a document of one piece named after its grid, written back as it was.
+TEST(VdbPieces, ADocumentOfOneSurfaceIsOnePieceAndSavesUnchanged)
+{
+    TempDir dir;
+    const FieldImage torus = makeTorus(10.0, 3.0, 0.5);
+    writeFieldImage(torus, dir / "one.vdb");
+    const VdbPieces read = readVdbPieces(dir / "one.vdb");
+    ASSERT_EQ(read.pieces.size(), 1u);
+    EXPECT_EQ(read.pieces[0].name, "surface");
+    writeVdbPieces(read.pieces, dir / "again.vdb");
+    EXPECT_EQ(gridNamesIn(dir / "again.vdb"), std::vector<std::string>{"surface"});
+    EXPECT_EQ(gridChecksum(readFieldImage(dir / "again.vdb").grid()), gridChecksum(torus.grid()));
+    // Other programs' grids stay out of the pieces and are written back.
+    const fs::path three = writeThreeGridFile(dir, torus);
+    const VdbPieces mixed = readVdbPieces(three);
+    ASSERT_EQ(mixed.pieces.size(), 1u);
+    EXPECT_EQ(mixed.companions.grids.size(), 2u);
+}
+
+TEST(VdbPieces, RefuseAPieceWhoseVoxelsChangedAndNamesTakenTwice)
+{
+    TempDir dir;
+    writeVdbPieces(threePieces(), dir / "doc.vdb");
+    // A writer that changes a piece's voxels but keeps its recorded checksum: damage.
+    VdbDocument document = readVdbDocument(dir / "doc.vdb");
+    auto hat = openvdb::gridPtrCast<openvdb::FloatGrid>(document.companions.grids[0]);
+    hat->tree().setValue(hat->tree().cbeginLeaf()->origin(), 0.125f);
+    writeFieldImage(document.field, dir / "damaged.vdb", document.companions);
+    try {
+        readVdbPieces(dir / "damaged.vdb");
+        FAIL() << "expected the damage to be seen";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("damaged.vdb"), std::string::npos) << what;
+        EXPECT_NE(what.find("'hat'"), std::string::npos) << what;
+    }
+    std::vector<Piece> twice = threePieces();
+    twice[2].name = "head";
+    EXPECT_THROW(writeVdbPieces(twice, dir / "twice.vdb"), InputError);
+    EXPECT_FALSE(fs::exists(dir / "twice.vdb"));
+}
+
+}  // namespace sculpt

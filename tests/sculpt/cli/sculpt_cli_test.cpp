@@ -292,6 +292,54 @@ TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
     EXPECT_NEAR(infoJson(dir, "label.vdb")["area"].get<double>(), sphere, 0.02 * sphere);
 }
 
+// A label map (raw bytes: a box holding a ball, a ball touching it) imports as a document of a
+// piece per label; info measures each and the total; mesh writes a closed file per piece with the
+// piece's volume, one OBJ of an object each (that VTK reads whole), or the piece asked for.
+TEST(SculptCli, ALabelMapImportsAsPiecesThatMeshOneByOne)
+{
+    TempDir dir;
+    const int nx = 48, ny = 32, nz = 32;
+    std::string bytes;
+    for (int k = 0; k < nz; ++k)
+        for (int j = 0; j < ny; ++j)
+            for (int i = 0; i < nx; ++i) {
+                const bool box = std::max({std::abs(i - 15.5), std::abs(j - 15.5), std::abs(k - 15.5)}) < 10.0;
+                const double centre = std::hypot(i - 15.5, j - 15.5, k - 15.5);
+                bytes.push_back(centre < 5.0 ? 2 : box ? 1 : std::hypot(i - 31.5, j - 15.5, k - 15.5) < 6.0 ? 3 : 0);
+            }
+    std::ofstream(dir / "map.raw", std::ios::binary) << bytes;
+    const auto import = runSculpt("import map.raw --raw-dims 48,32,32 --labels -o pieces.vdb", dir.path());
+    ASSERT_EQ(import.exitCode, 0) << import.err;
+    EXPECT_NE(import.out.find("3 pieces"), std::string::npos) << import.out;
+    const nlohmann::json info = infoJson(dir, "pieces.vdb");
+    ASSERT_EQ(info["pieces"].size(), 3u);
+    double sum = 0.0;
+    for (const auto& piece : info["pieces"]) sum += piece["volume"].get<double>();
+    EXPECT_NEAR(info["volume"].get<double>(), sum, 1e-9 * sum);
+    EXPECT_EQ(info["pieces"][1]["name"], "label 2");
+
+    const auto ply = runSculpt("mesh pieces.vdb -o part.ply", dir.path());
+    ASSERT_EQ(ply.exitCode, 0) << ply.err;
+    for (int label = 1; label <= 3; ++label) {
+        const test::VtkMeshReport mesh = test::vtkMeshReport(dir / ("part-label_" + std::to_string(label) + ".ply"));
+        EXPECT_EQ(mesh.boundaryEdges + mesh.nonManifoldEdges, 0) << label;
+        const double volume = info["pieces"][label - 1]["volume"].get<double>();
+        EXPECT_NEAR(mesh.volume, volume, 0.01 * volume) << label;
+    }
+    ASSERT_EQ(runSculpt("mesh pieces.vdb -o all.obj", dir.path()).exitCode, 0);
+    std::ifstream obj(dir / "all.obj");
+    std::string line;
+    std::vector<std::string> objects;
+    while (std::getline(obj, line))
+        if (line.rfind("o ", 0) == 0) objects.push_back(line.substr(2));
+    EXPECT_EQ(objects, (std::vector<std::string>{"label 1", "label 2", "label 3"}));
+    EXPECT_NEAR(test::vtkMeshReport(dir / "all.obj").volume, sum, 0.01 * sum);
+    const auto one = runSculpt("mesh pieces.vdb --piece 'label 3' -o three.stl", dir.path());
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    const double three = info["pieces"][2]["volume"].get<double>();
+    EXPECT_NEAR(test::vtkMeshReport(dir / "three.stl").volume, three, 0.01 * three);
+}
+
 /// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.
 struct Regression {
     const char* file;

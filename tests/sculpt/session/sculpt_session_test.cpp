@@ -676,3 +676,91 @@ TEST(ShapeImport, ARealAtlasLabelImportsAsTheVolumeOfItsSamples)
 
 }  // namespace
 }  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+/// A label map of three structures, nested and touching, as raw bytes of 0.5 mm samples: a box
+/// (label 1, half side 10) holding a ball (label 2, radius 5), and a ball (label 3, radius 6)
+/// touching the box's +x side. Returns each label's sample count.
+std::map<int, std::size_t> writeThreeLabels(const std::filesystem::path& path, ImportOptions& options)
+{
+    const openvdb::Coord dims(73, 49, 49);
+    const double h = 0.5;
+    std::string bytes;
+    std::map<int, std::size_t> counts;
+    for (int k = 0; k < dims.z(); ++k)
+        for (int j = 0; j < dims.y(); ++j)
+            for (int i = 0; i < dims.x(); ++i) {
+                const openvdb::Vec3d p(-12.0 + i * h, -12.0 + j * h, -12.0 + k * h);
+                int label = std::max({std::abs(p.x()), std::abs(p.y()), std::abs(p.z())}) <= 10.0 ? 1 : 0;
+                if (p.length() <= 5.0) label = 2;
+                if ((p - openvdb::Vec3d(16.0, 0.0, 0.0)).length() <= 6.0) label = 3;
+                bytes.push_back(char(label));
+                ++counts[label];
+            }
+    std::ofstream(path, std::ios::binary) << bytes;
+    RawLayout raw;
+    raw.dims = dims;
+    raw.spacing = openvdb::Vec3d(h);
+    options.raw = raw;
+    return counts;
+}
+
+}  // namespace
+
+// Each label becomes a piece whose volume is its samples' (within 1%), with the shells it has
+// (the box: its outside and the ball's cavity), equal to the label imported alone from the
+// whole map although only the samples around it were read.
+TEST(LabelImport, APiecePerLabelWithItsSamplesVolume)
+{
+    test::TempDir dir;
+    ImportOptions options;
+    const std::map<int, std::size_t> counts = writeThreeLabels(dir / "map.raw", options);
+    ImportReport report;
+    const std::vector<Piece> pieces = importLabelPieces(dir / "map.raw", options, report);
+    ASSERT_EQ(pieces.size(), 3u);
+    EXPECT_TRUE(report.maskAntiAliased);
+    for (int label = 1; label <= 3; ++label) {
+        const Piece& piece = pieces[std::size_t(label - 1)];
+        EXPECT_EQ(piece.name, "label " + std::to_string(label));
+        const FieldMeasures m = measureField(piece.field);
+        const double samples = double(counts.at(label)) * 0.125;
+        EXPECT_NEAR(m.volume, samples, 0.01 * samples) << piece.name;
+        EXPECT_EQ(m.components, label == 1 ? 2 : 1) << piece.name;
+        ImportOptions alone = options;
+        alone.label = label;
+        ImportReport aloneReport;
+        const FieldImage whole = importShape(dir / "map.raw", alone, aloneReport);
+        EXPECT_NEAR(measureField(whole).volume, m.volume, 1e-6 * m.volume) << piece.name;
+    }
+    EXPECT_NE(pieces[0].colour, pieces[1].colour);
+}
+
+// MRIcron's atlases name their labels in a .txt and colour them in a .lut beside the volume;
+// an MRI is not a label map, even of few values, and is refused in one line.
+TEST(LabelImport, NamesAndColoursFromTheAtlasFilesAndRefusesIntensities)
+{
+    const std::filesystem::path templates = "/usr/share/mricron/templates";
+    if (!std::filesystem::exists(templates / "JHU-WhiteMatter-labels-2mm.nii.gz"))
+        GTEST_SKIP() << "apt-get install mricron-data";
+    ImportReport report;
+    const std::vector<Piece> pieces =
+        importLabelPieces(templates / "JHU-WhiteMatter-labels-2mm.nii.gz", ImportOptions{}, report);
+    ASSERT_EQ(pieces.size(), 48u);
+    EXPECT_EQ(pieces[2].name, "Genu_of_corpus_callosum");
+    EXPECT_EQ(pieces[47].name, "Tapetum_L");
+    // The .lut's third entry, 203 149 149 of 255.
+    EXPECT_NEAR(pieces[2].colour[0], 203.0 / 255.0, 1e-6);
+    EXPECT_NEAR(pieces[2].colour[1], 149.0 / 255.0, 1e-6);
+    for (const Piece& piece : pieces) EXPECT_GT(measureField(piece.field).volume, 0.0) << piece.name;
+    try {
+        importLabelPieces(templates / "ch2better.nii.gz", ImportOptions{}, report);
+        FAIL() << "an MRI imported as labels";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("ch2better.nii.gz: its samples look like intensities"), std::string::npos) << what;
+    }
+}
+
+}  // namespace sculpt
