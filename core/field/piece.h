@@ -23,13 +23,13 @@ struct Piece {
 inline openvdb::Vec3f paletteColour(std::size_t index)
 {
     static constexpr std::array<std::array<float, 3>, 8> kPalette{{{0.80f, 0.80f, 0.80f},
-                                                                    {0.86f, 0.49f, 0.40f},
-                                                                    {0.45f, 0.66f, 0.85f},
-                                                                    {0.55f, 0.78f, 0.48f},
-                                                                    {0.91f, 0.78f, 0.42f},
-                                                                    {0.70f, 0.55f, 0.82f},
-                                                                    {0.45f, 0.80f, 0.78f},
-                                                                    {0.88f, 0.60f, 0.75f}}};
+                                                                   {0.86f, 0.49f, 0.40f},
+                                                                   {0.45f, 0.66f, 0.85f},
+                                                                   {0.55f, 0.78f, 0.48f},
+                                                                   {0.91f, 0.78f, 0.42f},
+                                                                   {0.70f, 0.55f, 0.82f},
+                                                                   {0.45f, 0.80f, 0.78f},
+                                                                   {0.88f, 0.60f, 0.75f}}};
     const auto& c = kPalette[index % kPalette.size()];
     return {c[0], c[1], c[2]};
 }

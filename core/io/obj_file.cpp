@@ -54,7 +54,7 @@ void writeObjObjects(const std::vector<std::pair<std::string, TriangleMesh>>& ob
 {
     AtomicFile out(path);
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(out.temporaryPath().c_str(), "w"),
-                                                              &std::fclose);
+                                                               &std::fclose);
     if (!file) throw InputError(path.string() + ": cannot be written");
     std::size_t first = 1, firstNormal = 1;
     for (const auto& [name, mesh] : objects) {

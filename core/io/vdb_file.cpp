@@ -298,7 +298,8 @@ VdbPieces readVdbPieces(const fs::path& path)
 {
     VdbDocument document = readVdbDocument(path);
     const std::string units = document.field.units();
-    VdbPieces read{{pieceOf(std::move(document.field))}, {{}, std::move(document.companions.metadata)},
+    VdbPieces read{{pieceOf(std::move(document.field))},
+                   {{}, std::move(document.companions.metadata)},
                    std::move(document.warnings)};
     for (const openvdb::GridBase::Ptr& grid : document.companions.grids) {
         const auto levelSet = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);

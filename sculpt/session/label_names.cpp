@@ -55,7 +55,9 @@ void readColours(const fs::path& path, std::map<int, LabelLook>& looks)
     std::ifstream in(path, std::ios::binary);
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (bytes.size() != kLutBytes) throw InputError(path.string() + ": not a colour table of 768 bytes");
-    const auto channel = [&](int plane, int value) { return float(static_cast<unsigned char>(bytes[plane * 256 + value])) / 255.0f; };
+    const auto channel = [&](int plane, int value) {
+        return float(static_cast<unsigned char>(bytes[plane * 256 + value])) / 255.0f;
+    };
     for (int value = 0; value < 256; ++value)
         looks[value].colour = openvdb::Vec3f(channel(0, value), channel(1, value), channel(2, value));
 }

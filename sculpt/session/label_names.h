@@ -15,7 +15,7 @@
 namespace sculpt {
 
 struct LabelLook {
-    std::string name;                     ///< empty: none given
+    std::string name;                      ///< empty: none given
     std::optional<openvdb::Vec3f> colour;  ///< sRGB 0..1
 };
 

@@ -217,8 +217,8 @@ Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std:
     const std::string number = "label " + std::to_string(label);
     std::string name = look != looks.end() && !look->second.name.empty() ? look->second.name : number;
     if (!names.insert(name).second) names.insert(name += " (" + number + ")");
-    const openvdb::Vec3f colour = look != looks.end() && look->second.colour ? *look->second.colour
-                                                                             : paletteColour(index + 1);
+    const openvdb::Vec3f colour =
+        look != looks.end() && look->second.colour ? *look->second.colour : paletteColour(index + 1);
     return {name, std::move(field), colour};
 }
 
@@ -277,9 +277,10 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
         const ScanVolume scan = readScanOf(input, options, report);
         labelsOf(scan, input);
         if (const double same = scan.sameNeighbourFraction(); same < kLeastLabelMapAgreement) {
-            throw InputError("its samples look like intensities, not labels: " + formatNumber(std::round(100.0 * same)) +
-                             "% of neighbouring samples off the background agree, where a label map's mostly "
-                             "do (regions of one label); import it at an iso-value, or one value with --label");
+            throw InputError(
+                "its samples look like intensities, not labels: " + formatNumber(std::round(100.0 * same)) +
+                "% of neighbouring samples off the background agree, where a label map's mostly "
+                "do (regions of one label); import it at an iso-value, or one value with --label");
         }
         std::map<int, ScanVolume::LabelExtent> extents = scan.labelExtents();
         extents.erase(kBackgroundLabel);
