@@ -13,6 +13,7 @@ declare -A allowed=(
   [local]="base field"
   [motion]="base field local mesh"
   [tracking]="base field mesh motion"
+  [pieces]="base field mesh"
   [mesh]="base field"
   [primitives]="base field"
   [brushes]="base field local motion primitives"

@@ -16,6 +16,9 @@ struct Piece {
     FieldImage field;
     openvdb::Vec3f colour{0.8f, 0.8f, 0.8f};  ///< sRGB, 0..1
     bool visible = true;
+    /// World from the field's own world (row vectors, as OpenVDB: p * placement): moving,
+    /// turning or scaling a piece edits this, never a voxel.
+    openvdb::Mat4d placement = openvdb::Mat4d::identity();
 };
 
 /// The colour a new piece gets: the i-th of a palette whose neighbours tell apart (a label map's

@@ -32,6 +32,7 @@ constexpr const char* kMetaVoxelSize = "sculpt.voxel_size";
 constexpr const char* kMetaChecksum = "sculpt.checksum";
 constexpr const char* kMetaPieceColour = "sculpt.piece_colour";
 constexpr const char* kMetaPieceVisible = "sculpt.piece_visible";
+constexpr const char* kMetaPiecePlacement = "sculpt.piece_placement";
 
 /// The grid to edit: the one named, else the default one.
 const VdbGridEntry& chooseGrid(const VdbLayout& layout, const std::string& requested)
@@ -246,6 +247,8 @@ Piece pieceOf(FieldImage field)
     Piece piece{grid.getName().empty() ? "surface" : grid.getName(), std::move(field)};
     if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) piece.colour = colour->value();
     if (auto visible = grid.getMetadata<openvdb::BoolMetadata>(kMetaPieceVisible)) piece.visible = visible->value();
+    if (auto placement = grid.getMetadata<openvdb::Mat4DMetadata>(kMetaPiecePlacement))
+        piece.placement = placement->value();
     return piece;
 }
 
@@ -256,6 +259,7 @@ openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece)
     grid->setName(piece.name);
     grid->insertMeta(kMetaPieceColour, openvdb::Vec3SMetadata(piece.colour));
     grid->insertMeta(kMetaPieceVisible, openvdb::BoolMetadata(piece.visible));
+    grid->insertMeta(kMetaPiecePlacement, openvdb::Mat4DMetadata(piece.placement));
     grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
     return grid;
 }

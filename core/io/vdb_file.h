@@ -13,6 +13,7 @@
 /// carries in its own metadata
 ///   sculpt.piece_colour   (vec3s) — sRGB 0..1; marks the grid as a piece
 ///   sculpt.piece_visible  (bool)
+///   sculpt.piece_placement (mat4d)— world from the grid's world: a move that kept the voxels
 ///   sculpt.checksum       (string)— as above, for the pieces after the first
 /// Files from other programs are accepted: the grid named "surface" is edited, else the only
 /// float level set, else the one the user names. Their other grids and metadata are kept and

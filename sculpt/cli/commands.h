@@ -29,5 +29,7 @@ void addApplyCommand(CLI::App& app);
 /// `sculpt import`: a scan or a mesh as a new document.
 void addImportCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+/// `sculpt pieces`: add, rename, colour, hide, merge, split and delete a document's pieces.
+void addPiecesCommand(CLI::App& app);
 
 }  // namespace sculpt::cli

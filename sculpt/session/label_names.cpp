@@ -1,11 +1,15 @@
 #include "sculpt/session/label_names.h"
 
 #include "core/base/errors.h"
+#include "core/base/file_extension.h"
 #include "core/io/text_lines.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <sstream>
 
 namespace sculpt {
 
@@ -62,11 +66,61 @@ void readColours(const fs::path& path, std::map<int, LabelLook>& looks)
         looks[value].colour = openvdb::Vec3f(channel(0, value), channel(1, value), channel(2, value));
 }
 
+/// The header of a NRRD file: up to its first empty line, read at most kMaxSidecarBytes.
+std::string nrrdHeader(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string header, line;
+    while (header.size() < kMaxSidecarBytes && std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) break;
+        header += line + '\n';
+    }
+    return header;
+}
+
+/// 3D Slicer's segments: "SegmentK_Field:=value" lines; a segment without a LabelValue (Slicer
+/// before 4.11) is label K + 1.
+void readSlicerSegments(const fs::path& path, std::map<int, LabelLook>& looks)
+{
+    struct Segment {
+        std::string name, colour;
+        std::optional<int> label;
+    };
+    std::map<int, Segment> segments;
+    std::istringstream header(nrrdHeader(path));
+    for (std::string line; std::getline(header, line);) {
+        const auto underscore = line.find('_'), assign = line.find(":=");
+        if (line.rfind("Segment", 0) != 0 || underscore == std::string::npos || assign == std::string::npos ||
+            assign < underscore)
+            continue;
+        int index = 0;
+        try {
+            index = std::stoi(line.substr(7, underscore - 7));
+        } catch (const std::exception&) {
+            continue;
+        }
+        const std::string field = line.substr(underscore + 1, assign - underscore - 1), value = line.substr(assign + 2);
+        Segment& segment = segments[index];
+        if (field == "Name") segment.name = value;
+        if (field == "Color") segment.colour = value;
+        if (field == "LabelValue") segment.label = std::atoi(value.c_str());
+    }
+    for (const auto& [index, segment] : segments) {
+        LabelLook& look = looks[segment.label.value_or(index + 1)];
+        look.name = segment.name;
+        float r = 0.0f, g = 0.0f, b = 0.0f;
+        if (std::sscanf(segment.colour.c_str(), "%f %f %f", &r, &g, &b) == 3) look.colour = openvdb::Vec3f(r, g, b);
+    }
+}
+
 }  // namespace
 
 std::map<int, LabelLook> readLabelLooks(const fs::path& volume, std::vector<std::string>& warnings)
 {
     std::map<int, LabelLook> looks;
+    const std::string format = lowerExtension(volume);
+    if (format == ".nrrd" || format == ".nhdr") readSlicerSegments(volume, looks);
     const std::pair<const char*, void (*)(const fs::path&, std::map<int, LabelLook>&)> readers[] = {
         {".txt", &readNames}, {".lut", &readColours}};
     for (const auto& [extension, read] : readers) {

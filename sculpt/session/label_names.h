@@ -1,7 +1,9 @@
 #pragma once
 /// @file label_names.h
-/// @brief The names and colours a segmentation tool keeps beside a label map, for its pieces:
-///        MRIcron's (and FSLeyes') "<volume>.txt", a line "value name ..." per label, and
+/// @brief The names and colours a segmentation tool gives a label map's values, for its pieces:
+///        3D Slicer's in a segmentation's NRRD header ("Segment0_Name:=Liver",
+///        "Segment0_LabelValue:=1", "Segment0_Color:=0.9 0.5 0.4"), MRIcron's (and FSLeyes')
+///        beside the volume: "<volume>.txt", a line "value name ..." per label, and
 ///        "<volume>.lut", 768 bytes: 256 reds, then 256 greens, then 256 blues.
 
 #include <openvdb/openvdb.h>
@@ -19,7 +21,7 @@ struct LabelLook {
     std::optional<openvdb::Vec3f> colour;  ///< sRGB 0..1
 };
 
-/// The looks of the labels the files beside `volume` give ("atlas.nii.gz" -> "atlas.nii.txt" and
+/// The looks of the labels a NRRD volume's header or the files beside `volume` give ("atlas.nii.gz" -> "atlas.nii.txt" and
 /// "atlas.nii.lut"; "seg.nrrd" -> "seg.txt", "seg.lut"). Files that are missing give nothing; a
 /// line that names no label is skipped, and a file that cannot be read adds a warning.
 std::map<int, LabelLook> readLabelLooks(const std::filesystem::path& volume, std::vector<std::string>& warnings);

@@ -330,11 +330,19 @@ TEST(VdbFile, RefusesLengthsBeyondTheFileBeforeAllocating)
 namespace sculpt {
 namespace {
 
-/// Three pieces, each with its own look and the third its own voxel size.
+/// A placement: a turn about z, then 9 up.
+openvdb::Mat4d turnedAndRaised()
+{
+    openvdb::Mat4d m = openvdb::math::rotation<openvdb::Mat4d>(openvdb::math::Z_AXIS, 0.3);
+    m.postTranslate(openvdb::Vec3d(0.0, 0.0, 9.0));
+    return m;
+}
+
+/// Three pieces, each with its own look (the second moved) and the third its own voxel size.
 std::vector<Piece> threePieces()
 {
     return {{"head", makeSphere(6.0, 0.5), {0.9f, 0.6f, 0.5f}, true},
-            {"hat", makeBox(3.0, 0.5), {0.2f, 0.2f, 0.8f}, false},
+            {"hat", makeBox(3.0, 0.5), {0.2f, 0.2f, 0.8f}, false, turnedAndRaised()},
             {"eye", makeSphere(1.5, 0.25), {1.0f, 1.0f, 1.0f}, true}};
 }
 
@@ -345,6 +353,7 @@ void expectSamePieces(const std::vector<Piece>& read, const std::vector<Piece>& 
         EXPECT_EQ(read[i].name, written[i].name);
         EXPECT_EQ(read[i].colour, written[i].colour) << read[i].name;
         EXPECT_EQ(read[i].visible, written[i].visible) << read[i].name;
+        EXPECT_EQ(read[i].placement, written[i].placement) << read[i].name;
         EXPECT_EQ(gridChecksum(read[i].field.grid()), gridChecksum(written[i].field.grid())) << read[i].name;
         EXPECT_DOUBLE_EQ(read[i].field.voxelSize(), written[i].field.voxelSize()) << read[i].name;
     }
@@ -352,7 +361,7 @@ void expectSamePieces(const std::vector<Piece>& read, const std::vector<Piece>& 
 
 }  // namespace
 
-// Pieces keep their names, colours, visibility and voxels (each its own voxel size); a reader
+// Pieces keep their names, colours, visibility, placements and voxels (each its own voxel size); a reader
 // of one surface (the window today) opens the first and keeps the others, so saving it loses none.
 TEST(VdbPieces, RoundTripWithTheirLooksAndSurviveAReaderOfOneSurface)
 {

@@ -294,8 +294,10 @@ TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
 
 // A label map (raw bytes: a box holding a ball, a ball touching it) imports as a document of a
 // piece per label; info measures each and the total; mesh writes a closed file per piece with the
-// piece's volume, one OBJ of an object each (that VTK reads whole), or the piece asked for.
-TEST(SculptCli, ALabelMapImportsAsPiecesThatMeshOneByOne)
+// piece's volume, one OBJ of an object each (that VTK reads whole), or the piece asked for;
+// `pieces` renames, colours, hides, merges (the box and the ball filling it: the box's outer
+// volume) and splits (the two balls merged into one piece: two solids).
+TEST(SculptCli, ALabelMapImportsAsPiecesThatMeshAndChangeOneByOne)
 {
     TempDir dir;
     const int nx = 48, ny = 32, nz = 32;
@@ -338,6 +340,32 @@ TEST(SculptCli, ALabelMapImportsAsPiecesThatMeshOneByOne)
     ASSERT_EQ(one.exitCode, 0) << one.err;
     const double three = info["pieces"][2]["volume"].get<double>();
     EXPECT_NEAR(test::vtkMeshReport(dir / "three.stl").volume, three, 0.01 * three);
+
+    const auto edit = runSculpt("pieces pieces.vdb --rename 'label 3=ball' --colour 'ball=#ff8000' --hide ball "
+                                "--merge 'label 1,label 2' -o edited.vdb",
+                                dir.path());
+    ASSERT_EQ(edit.exitCode, 0) << edit.err;
+    const nlohmann::json edited = infoJson(dir, "edited.vdb");
+    ASSERT_EQ(edited["pieces"].size(), 2u);
+    EXPECT_EQ(edited["pieces"][0]["name"], "label 1");
+    EXPECT_EQ(edited["pieces"][0]["components"], 1);  // the cavity filled
+    const double box = 20.0 * 20.0 * 20.0;
+    EXPECT_NEAR(edited["pieces"][0]["volume"].get<double>(), box, 0.01 * box);
+    EXPECT_EQ(edited["pieces"][1]["name"], "ball");
+    EXPECT_EQ(edited["pieces"][1]["visible"], false);
+    EXPECT_NEAR(edited["pieces"][1]["colour"][1].get<double>(), 128.0 / 255.0, 1e-6);
+    // The inner ball and the outer one, apart, merged into one piece and split again.
+    ASSERT_EQ(
+        runSculpt("pieces pieces.vdb --merge 'label 2,label 3' --split 'label 2' -o split.vdb", dir.path()).exitCode,
+        0);
+    const nlohmann::json split = infoJson(dir, "split.vdb");
+    ASSERT_EQ(split["pieces"].size(), 3u);
+    EXPECT_EQ(split["pieces"][1]["name"], "label 2 1");
+    EXPECT_EQ(split["pieces"][2]["name"], "label 2 2");
+    const auto unknown = runSculpt("pieces edited.vdb --delete nose -o x.vdb", dir.path());
+    EXPECT_EQ(unknown.exitCode, 2);
+    EXPECT_NE(unknown.err.find("no piece is named 'nose'"), std::string::npos) << unknown.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.vdb"));
 }
 
 /// A file of the regression corpus (tests/bad-inputs/) and the command that once failed on it.

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <random>
 
@@ -735,6 +736,33 @@ TEST(LabelImport, APiecePerLabelWithItsSamplesVolume)
         EXPECT_NEAR(measureField(whole).volume, m.volume, 1e-6 * m.volume) << piece.name;
     }
     EXPECT_NE(pieces[0].colour, pieces[1].colour);
+}
+
+// 3D Slicer's segmentation (.seg.nrrd) names and colours its segments in its header; a segment
+// without a LabelValue (Slicer before 4.11) is its index plus one.
+TEST(LabelImport, SlicerSegmentNamesAndColoursFromTheHeader)
+{
+    test::TempDir dir;
+    ImportOptions raw;
+    writeThreeLabels(dir / "map.raw", raw);
+    std::ifstream in(dir / "map.raw", std::ios::binary);
+    const std::string samples((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::ofstream(dir / "map.seg.nrrd", std::ios::binary)
+        << "NRRD0004\ntype: unsigned char\ndimension: 3\nspace: left-posterior-superior\nsizes: 73 49 49\n"
+           "space directions: (0.5,0,0) (0,0.5,0) (0,0,0.5)\nkinds: domain domain domain\nencoding: raw\n"
+           "space origin: (0,0,0)\n"
+           "Segment0_Color:=0.9 0.3 0.2\nSegment0_ID:=Segment_1\nSegment0_LabelValue:=1\nSegment0_Name:=Liver\n"
+           "Segment1_Name:=Tumour\n"
+           "Segment2_Color:=0.2 0.4 0.9\nSegment2_LabelValue:=3\nSegment2_Name:=Portal vein\n\n"
+        << samples;
+    ImportReport report;
+    const std::vector<Piece> pieces = importLabelPieces(dir / "map.seg.nrrd", ImportOptions{}, report);
+    ASSERT_EQ(pieces.size(), 3u);
+    EXPECT_EQ(pieces[0].name, "Liver");
+    EXPECT_EQ(pieces[1].name, "Tumour");
+    EXPECT_EQ(pieces[2].name, "Portal vein");
+    EXPECT_EQ(pieces[0].colour, openvdb::Vec3f(0.9f, 0.3f, 0.2f));
+    EXPECT_EQ(pieces[2].colour, openvdb::Vec3f(0.2f, 0.4f, 0.9f));
 }
 
 // MRIcron's atlases name their labels in a .txt and colour them in a .lut beside the volume;

@@ -1,0 +1,120 @@
+// Pieces: the contact query through local boxes beside sampling every vertex, and a label map's
+// import as pieces beside one label's, in one run.
+// Run: build/tests/bench/pieces_bench
+//
+// BM_Contact/P/B : CGAL's cow against its figure eight (libcgal-demo), each 256 voxels across,
+//                  the cow moved along x from touching (P = 0) to centred on the eight (P = 100);
+//                  B = 1: overlap() through the local boxes, B = 0: every vertex of each sampled in
+//                  the other's field (the brute force; both parallel). Counters: vertices sampled,
+//                  vertices found inside.
+// BM_LabelImport/A : mricron-data's JHU white-matter atlas at 1 mm (182 x 218 x 182, 48 labels):
+//                  A = 1 every label as a piece (importLabelPieces), A = 0 one label
+//                  (importShape --label 3, read and converted from the whole map).
+
+#include "core/io/mesh_import.h"
+#include "core/mesh/incremental_mesher.h"
+#include "core/pieces/contact.h"
+#include "sculpt/session/shape_import.h"
+#include "tests/support/cgal_data.h"
+
+#include <benchmark/benchmark.h>
+#include <openvdb/tools/Interpolation.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+using namespace sculpt;
+using openvdb::Mat4d;
+using openvdb::Vec3d;
+
+struct Body {
+    FieldImage field;
+    IncrementalMesher mesher;
+    TriangleMesh welded;
+    openvdb::BBoxd box;
+};
+
+std::unique_ptr<Body> bodyOf(const std::string& name)
+{
+    const std::filesystem::path path = test::cgalMesh(name);
+    if (path.empty()) return nullptr;
+    const TriangleMesh mesh = readMesh(path);
+    auto body = std::make_unique<Body>(Body{meshToField(mesh, voxelSizeFor(mesh)), IncrementalMesher(), {}, {}});
+    body->mesher.rebuild(body->field);
+    body->welded = body->mesher.weldedMesh();
+    for (const auto& p : body->welded.positions) body->box.expand(Vec3d(p[0], p[1], p[2]));
+    return body;
+}
+
+/// Vertices of `a` (placed at `pa`) inside `b`, every one sampled.
+std::size_t everyVertexInside(const Body& a, const Mat4d& pa, const Body& b)
+{
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, a.welded.positions.size(), 4096), std::size_t(0),
+        [&](const tbb::blocked_range<std::size_t>& range, std::size_t inside) {
+            const auto accessor = b.field.grid().getConstAccessor();
+            for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                const auto& p = a.welded.positions[v];
+                const Vec3d index = b.field.grid().transform().worldToIndex(pa.transform(Vec3d(p[0], p[1], p[2])));
+                inside += openvdb::tools::BoxSampler::sample(accessor, index) < 0.0;
+            }
+            return inside;
+        },
+        [](std::size_t x, std::size_t y) { return x + y; });
+}
+
+void BM_Contact(benchmark::State& state)
+{
+    static const auto cow = bodyOf("cow.off"), eight = bodyOf("eight.off");
+    if (!cow || !eight) return state.SkipWithError("install libcgal-demo");
+    // From the cow's +x side touching the eight's -x side to their centres together.
+    const double touching = eight->box.min().x() - cow->box.max().x();
+    const double centred = eight->box.getCenter().x() - cow->box.getCenter().x();
+    const double p = double(state.range(0)) / 100.0;
+    Mat4d placement = Mat4d::identity();
+    placement.setTranslation(Vec3d((1.0 - p) * touching + p * centred,
+                                   eight->box.getCenter().y() - cow->box.getCenter().y(),
+                                   eight->box.getCenter().z() - cow->box.getCenter().z()));
+    const bool boxes = state.range(1) == 1;
+    Penetration found;
+    for (auto _ : state) {
+        if (boxes) {
+            found = overlap({cow->field, cow->mesher, placement}, {eight->field, eight->mesher});
+        } else {
+            found.sampledVertices = cow->welded.positions.size() + eight->welded.positions.size();
+            found.penetratingVertices =
+                everyVertexInside(*cow, placement, *eight) + everyVertexInside(*eight, placement.inverse(), *cow);
+        }
+        benchmark::DoNotOptimize(found);
+    }
+    state.counters["sampled"] = double(found.sampledVertices);
+    state.counters["inside"] = double(found.penetratingVertices);
+}
+BENCHMARK(BM_Contact)
+    ->ArgsProduct({{0, 25, 50, 100}, {0, 1}})
+    ->ArgNames({"overlap%", "boxes"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_LabelImport(benchmark::State& state)
+{
+    const std::filesystem::path atlas = "/usr/share/mricron/templates/JHU-WhiteMatter-labels-1mm.nii.gz";
+    if (!std::filesystem::exists(atlas)) return state.SkipWithError("install mricron-data");
+    for (auto _ : state) {
+        ImportReport report;
+        if (state.range(0) == 1) {
+            benchmark::DoNotOptimize(importLabelPieces(atlas, {}, report).size());
+        } else {
+            ImportOptions one;
+            one.label = 3;
+            benchmark::DoNotOptimize(importShape(atlas, one, report).voxelSize());
+        }
+    }
+}
+BENCHMARK(BM_LabelImport)->Arg(0)->Arg(1)->ArgName("all")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+
+}  // namespace
