@@ -82,14 +82,9 @@ openvdb::Vec3f hexColour(const std::string& text)
     return {channel(0), channel(1), channel(2)};
 }
 
-void runPieces(const PiecesOptions& o)
+/// Names and looks: --rename, --colour, --hide, --show.
+void relabel(PieceList& list, const PiecesOptions& o)
 {
-    AtomicFile::checkTarget(o.output);
-    VdbPieces document = readVdbPieces(o.input);
-    for (const std::string& warning : document.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
-    PieceList list(std::move(document.pieces), o.input);
-    for (const std::string& file : o.add)
-        for (Piece& piece : readVdbPieces(file).pieces) list.add(std::move(piece));
     for (const std::string& change : o.rename) {
         const auto [from, to] = pairOf(change, "--rename");
         list.find(from)->name = freeName(list.pieces(), to);
@@ -100,6 +95,11 @@ void runPieces(const PiecesOptions& o)
     }
     for (const std::string& name : o.hide) list.find(name)->visible = false;
     for (const std::string& name : o.show) list.find(name)->visible = true;
+}
+
+/// Shapes: --merge A,B (B goes), --split NAME (its solids take its place).
+void reshape(PieceList& list, const PiecesOptions& o)
+{
     for (const std::string& pair : o.merge) {
         const auto comma = pair.find(',');
         if (comma == std::string::npos) throw InputError("--merge expects A,B, got '" + pair + "'");
@@ -110,11 +110,23 @@ void runPieces(const PiecesOptions& o)
     }
     for (const std::string& name : o.split) {
         const auto at = list.find(name);
-        std::vector<Piece> parts = splitPiece(*at);
+        const std::vector<Piece> parts = splitPiece(*at);
         const auto index = at - list.pieces().begin();
         list.pieces().erase(at);
         list.pieces().insert(list.pieces().begin() + index, parts.begin(), parts.end());
     }
+}
+
+void runPieces(const PiecesOptions& o)
+{
+    AtomicFile::checkTarget(o.output);
+    VdbPieces document = readVdbPieces(o.input);
+    for (const std::string& warning : document.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
+    PieceList list(std::move(document.pieces), o.input);
+    for (const std::string& file : o.add)
+        for (Piece& piece : readVdbPieces(file).pieces) list.add(std::move(piece));
+    relabel(list, o);
+    reshape(list, o);
     for (const std::string& name : o.remove) list.pieces().erase(list.find(name));
     if (list.pieces().empty()) throw InputError(o.input + ": deleting every piece would leave nothing to save");
     writeVdbPieces(list.pieces(), o.output, document.companions);
