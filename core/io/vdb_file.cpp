@@ -185,6 +185,13 @@ void refuseToLoseGrids(const fs::path& path)
     }
 }
 
+/// The level sets our files mark as pieces (their colour marks them).
+openvdb::FloatGrid::Ptr asPieceGrid(const openvdb::GridBase::Ptr& grid)
+{
+    const auto levelSet = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
+    return levelSet && levelSet->getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour) ? levelSet : nullptr;
+}
+
 /// A piece's own checksum (in its grid's metadata) checked, then dropped: edits outdate it.
 void checkPieceChecksum(openvdb::FloatGrid& grid)
 {
@@ -306,8 +313,8 @@ VdbPieces readVdbPieces(const fs::path& path)
                    {{}, std::move(document.companions.metadata)},
                    std::move(document.warnings)};
     for (const openvdb::GridBase::Ptr& grid : document.companions.grids) {
-        const auto levelSet = openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
-        if (!levelSet || !levelSet->getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) {
+        const openvdb::FloatGrid::Ptr levelSet = asPieceGrid(grid);
+        if (!levelSet) {
             read.companions.grids.push_back(grid);
             continue;
         }
@@ -319,6 +326,15 @@ VdbPieces readVdbPieces(const fs::path& path)
         }
     }
     return read;
+}
+
+std::vector<Piece> piecesAmong(const VdbCompanions& companions, const std::string& units)
+{
+    std::vector<Piece> pieces;
+    for (const openvdb::GridBase::Ptr& grid : companions.grids)
+        if (const openvdb::FloatGrid::Ptr levelSet = asPieceGrid(grid))
+            pieces.push_back(pieceOf(FieldImage(levelSet, units)));
+    return pieces;
 }
 
 FieldImage readFieldImage(const fs::path& path, const std::string& gridName)

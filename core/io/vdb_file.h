@@ -75,6 +75,10 @@ struct VdbPieces {
 /// @throws InputError as readVdbDocument, and naming the piece whose voxels do not match its checksum.
 VdbPieces readVdbPieces(const std::filesystem::path& path);
 
+/// The pieces among a document's other grids (those read with its first piece by
+/// readVdbDocument), sharing their grids: what a reader of one surface shows beside it.
+std::vector<Piece> piecesAmong(const VdbCompanions& companions, const std::string& units);
+
 /// Writes pieces (at least one, unique non-empty names, the same units) atomically as above; a
 /// single piece is written as writeFieldImage writes its field.
 /// @throws InputError naming the file as writeFieldImage, or the piece whose name is empty or

@@ -62,8 +62,11 @@ void readColours(const fs::path& path, std::map<int, LabelLook>& looks)
     const auto channel = [&](int plane, int value) {
         return float(static_cast<unsigned char>(bytes[plane * 256 + value])) / 255.0f;
     };
-    for (int value = 0; value < 256; ++value)
-        looks[value].colour = openvdb::Vec3f(channel(0, value), channel(1, value), channel(2, value));
+    for (int value = 0; value < 256; ++value) {
+        const openvdb::Vec3f colour(channel(0, value), channel(1, value), channel(2, value));
+        // Black marks a value the table leaves uncoloured (JHU's 21 to 30): the palette's then.
+        if (colour != openvdb::Vec3f(0.0f)) looks[value].colour = colour;
+    }
 }
 
 /// The header of a NRRD file: up to its first empty line, read at most kMaxSidecarBytes.

@@ -291,9 +291,12 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
             const double done = double(pieces.size()) / double(extents.size());
             ImportOptions one = options;
             one.label = label;
+            const std::size_t warned = report.warnings.size();
             FieldImage field = labelSurface(scan, extent.box, input, one, report,
                                             scaledProgress(progress, done, done + 1.0 / double(extents.size())));
             pieces.push_back(labelPiece(label, looks, names, pieces.size(), std::move(field)));
+            for (std::size_t w = warned; w < report.warnings.size(); ++w)
+                report.warnings[w] = "piece '" + pieces.back().name + "': " + report.warnings[w];
         }
         return pieces;
     });

@@ -878,3 +878,49 @@ TEST(SculptUi, BadInputIsOneLineAndExitTwo)
 
 }  // namespace
 }  // namespace sculpt::test
+
+namespace sculpt::test {
+namespace {
+
+/// A body (edited), an eye on another lattice and a hat placed above it, apart from the body.
+std::vector<Piece> bodyEyeAndHat()
+{
+    std::vector<Piece> pieces{{"body", makeSphere(20.0, 0.5)},
+                              {"eye", makeSphere(3.0, 0.25), {0.1f, 0.3f, 0.9f}},
+                              {"hat", makeBox(6.0, 0.5), {0.9f, 0.2f, 0.2f}}};
+    pieces[1].placement.setTranslation(openvdb::Vec3d(8.0, 8.0, 18.0));
+    pieces[2].placement.setTranslation(openvdb::Vec3d(0.0, 30.0, 0.0));
+    return pieces;
+}
+
+// A document of three pieces opens with the first to sculpt and the others drawn in their colours
+// where they are placed; a stroke on the first leaves the others bit for bit, and saving keeps
+// every piece, its look and its placement.
+TEST(SculptUi, TheOtherPiecesAreDrawnAndAStrokeOnOneLeavesThemBitForBit)
+{
+    TempDir dir;
+    const std::vector<Piece> pieces = bodyEyeAndHat();
+    writeVdbPieces(pieces, dir / "figure.vdb");
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r, "opened").screenshot(dir / "figure.png").drag(560, 420, 700, 380, 30).report(r, "stroked");
+    const CommandResult run =
+        play(dir, events, (dir / "figure.vdb").string(), "--save-as " + shellQuoted(dir / "saved.vdb"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    EXPECT_EQ(reports["opened"]["other_pieces"], 2);
+    EXPECT_GT(reports["opened"]["other_pieces_triangles"].get<int>(), 1000);
+    EXPECT_NE(reports["stroked"]["checksum"], reports["opened"]["checksum"]) << "the stroke changed the body";
+    const VdbPieces saved = readVdbPieces(dir / "saved.vdb");
+    ASSERT_EQ(saved.pieces.size(), 3u);
+    EXPECT_EQ(formatChecksum(gridChecksum(saved.pieces[0].field.grid())), reports["stroked"]["checksum"]);
+    for (std::size_t i = 1; i < 3; ++i) {
+        EXPECT_EQ(saved.pieces[i].name, pieces[i].name);
+        EXPECT_EQ(gridChecksum(saved.pieces[i].field.grid()), gridChecksum(pieces[i].field.grid())) << pieces[i].name;
+        EXPECT_EQ(saved.pieces[i].colour, pieces[i].colour);
+        EXPECT_EQ(saved.pieces[i].placement, pieces[i].placement);
+    }
+}
+
+}  // namespace
+}  // namespace sculpt::test

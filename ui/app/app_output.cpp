@@ -105,6 +105,10 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["display_pending_chunks"] = mDisplay.pendingChunks();  // still drawn from a preview
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
+    std::size_t otherTriangles = 0;
+    for (const auto& piece : mOtherPieces) otherTriangles += piece->shown() ? piece->triangleCount() : 0;
+    r["other_pieces"] = mOtherPieces.size();
+    r["other_pieces_triangles"] = otherTriangles;
     r["target"] = mBrush.target.path.string();
     r["xray"] = mLook.xray();
     r["morph"] = nullptr;  // read by replays whether or not frames are on show

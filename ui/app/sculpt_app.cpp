@@ -87,15 +87,40 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
     mReportVersion = mDocument->session().mesher()->version();
     mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
+    showOtherPieces();
     if (frameIt) frameModel();
+}
+
+void SculptApp::showOtherPieces()
+{
+    mOtherPieces.clear();
+    mOtherPiecesBox = openvdb::BBoxd();
+    for (const Piece& piece : mDocument->otherPieces()) {
+        openvdb::CoordBBox box;
+        if (piece.field.grid().tree().evalLeafBoundingBox(box)) {
+            const openvdb::BBoxd own = piece.field.grid().transform().indexToWorld(box);
+            for (int corner = 0; corner < 8; ++corner) {
+                const openvdb::Vec3d p((corner & 1 ? own.max() : own.min()).x(),
+                                       (corner & 2 ? own.max() : own.min()).y(),
+                                       (corner & 4 ? own.max() : own.min()).z());
+                mOtherPiecesBox.expand(piece.placement.transform(p));
+            }
+        }
+        const ShapeStyle style{piece.colour[0], piece.colour[1], piece.colour[2], 1.0, 0.0};
+        mOtherPieces.push_back(std::make_unique<ShapeDisplay>(mViewport.renderer(), style));
+        mOtherPieces.back()->set(&piece.field);
+        mOtherPieces.back()->setShown(piece.visible);
+        mOtherPieces.back()->setPlacement(piece.placement);
+    }
 }
 
 void SculptApp::frameModel()
 {
+    openvdb::BBoxd world = mOtherPiecesBox;
     openvdb::CoordBBox box;
     const FieldImage& field = mDocument->session().field();
-    if (!field.grid().tree().evalLeafBoundingBox(box)) return;
-    const openvdb::BBoxd world = field.grid().transform().indexToWorld(box);
+    if (field.grid().tree().evalLeafBoundingBox(box)) world.expand(field.grid().transform().indexToWorld(box));
+    if (world.empty()) return;
     mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
                   {world.max().x(), world.max().y(), world.max().z()});
 }

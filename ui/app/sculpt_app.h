@@ -230,6 +230,8 @@ private:
     void writeReport(const std::filesystem::path& path, const std::string& name);
     void finishReplay();
     void frameModel();
+    /// Draws the document's other pieces (a label map's other labels) in their colours.
+    void showOtherPieces();
     std::optional<SurfaceHit> pickAt(double x, double y);
     /// What the hover depends on now.
     HoverKey hoverKey() const;
@@ -284,7 +286,9 @@ private:
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
-    ShapeDisplay mGhost;  // the follow target
+    ShapeDisplay mGhost;                                      // the follow target
+    std::vector<std::unique_ptr<ShapeDisplay>> mOtherPieces;  // drawn in their colours, not edited yet
+    openvdb::BBoxd mOtherPiecesBox;                           // theirs, world: framing shows them too
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;

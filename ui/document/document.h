@@ -57,6 +57,8 @@ public:
     const std::filesystem::path& path() const { return mPath; }
     /// The opened file's other grids and metadata, written with every save.
     const VdbCompanions& companions() const { return mCompanions; }
+    /// The document's pieces besides the one edited (a label map's other labels), shown beside it.
+    std::vector<Piece> otherPieces() const { return piecesAmong(mCompanions, mSession.field().units()); }
     /// "face.vdb" or "untitled", with " *" when modified.
     std::string title() const;
     bool modified() const { return mState != mSavedState; }

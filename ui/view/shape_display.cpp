@@ -5,6 +5,7 @@
 #include "ui/view/block_polydata.h"
 
 #include <vtkActor.h>
+#include <vtkMatrix4x4.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -49,6 +50,17 @@ void ShapeDisplay::set(const FieldImage* shape)
     mActor->SetPickable(false);
     mActor->SetVisibility(mShown);
     mRenderer->AddActor(mActor);
+    setPlacement(mPlacement);
+}
+
+void ShapeDisplay::setPlacement(const openvdb::Mat4d& placement)
+{
+    mPlacement = placement;
+    if (!mActor) return;
+    vtkNew<vtkMatrix4x4> matrix;  // VTK's are for column vectors: the transpose
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) matrix->SetElement(i, j, placement(j, i));
+    mActor->SetUserMatrix(matrix);
 }
 
 void ShapeDisplay::setShown(bool shown)

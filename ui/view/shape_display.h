@@ -33,6 +33,8 @@ public:
     /// Meshes `shape` and shows it (if shown); null removes it.
     void set(const FieldImage* shape);
     void setShown(bool shown);
+    /// Where the shape is drawn: world from its field's world (a piece's placement, row vectors).
+    void setPlacement(const openvdb::Mat4d& placement);
     bool shown() const { return mShown; }
     std::size_t triangleCount() const { return mTriangles; }
 
@@ -42,6 +44,7 @@ private:
     vtkSmartPointer<vtkActor> mActor;
     bool mShown = true;
     std::size_t mTriangles = 0;
+    openvdb::Mat4d mPlacement = openvdb::Mat4d::identity();
 };
 
 }  // namespace sculpt::ui
