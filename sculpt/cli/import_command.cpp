@@ -137,8 +137,9 @@ void addImportCommand(CLI::App& app)
                                      "surface around the samples of this label, anti-aliased")
                          ->excludes(o->isoOption);
     cmd->add_flag("--labels", o->labels,
-                  "a label map: one piece per label (but 0, the background), named 'label N', each\n"
-                  "anti-aliased; --mesh then writes a file per piece (or one OBJ of an object each)")
+                  "a label map: one piece per label (but 0, the background), each anti-aliased, named\n"
+                  "and coloured as 3D Slicer's segment fields (.seg.nrrd) or MRIcron's atlas.nii.txt and\n"
+                  ".lut beside it say, else 'label N'; --mesh then writes a file per piece (or one OBJ)")
         ->excludes(o->isoOption)
         ->excludes(o->labelOption);
     o->voxelOption = cmd->add_option(
