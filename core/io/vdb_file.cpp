@@ -259,15 +259,17 @@ Piece pieceOf(FieldImage field)
     return piece;
 }
 
-/// The grid a piece is written as: its tree shared, its name and look in its metadata.
-openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece)
+/// The grid a piece is written as: its tree shared, its name and look in its metadata, and its
+/// checksum unless it is the edited grid (`ownChecksum` false), which the file's checksum covers.
+openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece, bool ownChecksum)
 {
     openvdb::FloatGrid::Ptr grid = openvdb::ConstPtrCast<openvdb::FloatGrid>(piece.field.gridPtr())->copy();
     grid->setName(piece.name);
     grid->insertMeta(kMetaPieceColour, openvdb::Vec3SMetadata(piece.colour));
     grid->insertMeta(kMetaPieceVisible, openvdb::BoolMetadata(piece.visible));
     grid->insertMeta(kMetaPiecePlacement, openvdb::Mat4DMetadata(piece.placement));
-    grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
+    grid->removeMeta(kMetaChecksum);  // one copied from the file the piece came from would be stale
+    if (ownChecksum) grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
     return grid;
 }
 
@@ -375,9 +377,9 @@ void writeVdbPieces(const std::vector<Piece>& pieces, const fs::path& path, cons
 {
     checkPieceNames(pieces, path);
     VdbCompanions others{{}, companions.metadata};
-    for (std::size_t i = 1; i < pieces.size(); ++i) others.grids.push_back(pieceGrid(pieces[i]));
+    for (std::size_t i = 1; i < pieces.size(); ++i) others.grids.push_back(pieceGrid(pieces[i], true));
     others.grids.insert(others.grids.end(), companions.grids.begin(), companions.grids.end());
-    writeFieldImage(FieldImage(pieceGrid(pieces.front()), pieces.front().field.units()), path, others);
+    writeFieldImage(FieldImage(pieceGrid(pieces.front(), false), pieces.front().field.units()), path, others);
 }
 
 }  // namespace sculpt

@@ -14,7 +14,7 @@
 ///   sculpt.piece_colour   (vec3s) — sRGB 0..1; marks the grid as a piece
 ///   sculpt.piece_visible  (bool)
 ///   sculpt.piece_placement (mat4d)— world from the grid's world: a move that kept the voxels
-///   sculpt.checksum       (string)— as above, for the pieces after the first
+///   sculpt.checksum       (string)— as above, for the pieces after the first (the file's is the first's)
 /// Files from other programs are accepted: the grid named "surface" is edited, else the only
 /// float level set, else the one the user names. Their other grids and metadata are kept and
 /// written back on save; a float grid that is not a narrow band (a dense `phi`) is rebuilt into one.
