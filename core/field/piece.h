@@ -8,17 +8,23 @@
 
 #include <array>
 #include <string>
+#include <utility>
 
 namespace sculpt {
 
-struct Piece {
-    std::string name;  ///< unique in its document; a single-piece document's is "surface"
-    FieldImage field;
+/// What a piece is besides its voxels: what the user calls it, sees of it, and where it stands.
+struct PieceLook {
+    std::string name;                         ///< unique in its document; a single-piece document's is "surface"
     openvdb::Vec3f colour{0.8f, 0.8f, 0.8f};  ///< sRGB, 0..1
     bool visible = true;
     /// World from the field's own world (row vectors, as OpenVDB: p * placement): moving,
     /// turning or scaling a piece edits this, never a voxel.
     openvdb::Mat4d placement = openvdb::Mat4d::identity();
+};
+
+struct Piece : PieceLook {
+    Piece(PieceLook look, FieldImage voxels) : PieceLook(std::move(look)), field(std::move(voxels)) {}
+    FieldImage field;
 };
 
 /// The colour a new piece gets: the i-th of a palette whose neighbours tell apart (a label map's

@@ -251,7 +251,7 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
 Piece pieceOf(FieldImage field)
 {
     const openvdb::FloatGrid& grid = field.grid();
-    Piece piece{grid.getName().empty() ? "surface" : grid.getName(), std::move(field)};
+    Piece piece{{grid.getName().empty() ? "surface" : grid.getName()}, std::move(field)};
     if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) piece.colour = colour->value();
     if (auto visible = grid.getMetadata<openvdb::BoolMetadata>(kMetaPieceVisible)) piece.visible = visible->value();
     if (auto placement = grid.getMetadata<openvdb::Mat4DMetadata>(kMetaPiecePlacement))
@@ -307,9 +307,9 @@ VdbDocument readVdbDocument(const fs::path& path, const std::string& gridName)
     }
 }
 
-VdbPieces readVdbPieces(const fs::path& path)
+VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
 {
-    VdbDocument document = readVdbDocument(path);
+    VdbDocument document = readVdbDocument(path, gridName);
     const std::string units = document.field.units();
     VdbPieces read{{pieceOf(std::move(document.field))},
                    {{}, std::move(document.companions.metadata)},
@@ -328,15 +328,6 @@ VdbPieces readVdbPieces(const fs::path& path)
         }
     }
     return read;
-}
-
-std::vector<Piece> piecesAmong(const VdbCompanions& companions, const std::string& units)
-{
-    std::vector<Piece> pieces;
-    for (const openvdb::GridBase::Ptr& grid : companions.grids)
-        if (const openvdb::FloatGrid::Ptr levelSet = asPieceGrid(grid))
-            pieces.push_back(pieceOf(FieldImage(levelSet, units)));
-    return pieces;
 }
 
 FieldImage readFieldImage(const fs::path& path, const std::string& gridName)

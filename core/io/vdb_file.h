@@ -71,13 +71,10 @@ struct VdbPieces {
     std::vector<std::string> warnings;
 };
 
-/// Reads every piece of a document.
+/// Reads every piece of a document, the first being readVdbDocument's choice (`gridName`, or the
+/// edited grid).
 /// @throws InputError as readVdbDocument, and naming the piece whose voxels do not match its checksum.
-VdbPieces readVdbPieces(const std::filesystem::path& path);
-
-/// The pieces among a document's other grids (those read with its first piece by
-/// readVdbDocument), sharing their grids: what a reader of one surface shows beside it.
-std::vector<Piece> piecesAmong(const VdbCompanions& companions, const std::string& units);
+VdbPieces readVdbPieces(const std::filesystem::path& path, const std::string& gridName = {});
 
 /// Writes pieces (at least one, unique non-empty names, the same units) atomically as above; a
 /// single piece is written as writeFieldImage writes its field.

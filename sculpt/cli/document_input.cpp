@@ -29,7 +29,7 @@ std::vector<Piece> readPieces(const DocumentInput& input)
     if (!input.grid.empty()) {
         VdbDocument document = readDocument(input);
         const std::string name = document.field.grid().getName();
-        return {Piece{name, std::move(document.field)}};
+        return {Piece{{name}, std::move(document.field)}};
     }
     VdbPieces document = readVdbPieces(input.path);
     printWarnings(document.warnings);

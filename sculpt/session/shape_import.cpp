@@ -219,7 +219,7 @@ Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std:
     if (!names.insert(name).second) names.insert(name += " (" + number + ")");
     const openvdb::Vec3f colour =
         look != looks.end() && look->second.colour ? *look->second.colour : paletteColour(index + 1);
-    return {name, std::move(field), colour};
+    return {{name, colour}, std::move(field)};
 }
 
 /// Runs `convert` and returns what it returns, making sure any refusal names the file: a message from deep in the engine

@@ -30,7 +30,9 @@ void SculptApp::handle(const InputEvent& event)
         mRecording.push_back(event);
     }
     if (event.type == EventType::Key) trackModifiers(event);
-    feedImGui(event, mHeldMods);
+    // Tab is pieces mode's key: ImGui would move the focus into a panel's field with it (a field
+    // being edited keeps it, for completion).
+    if (!(event.type == EventType::Key && event.key == GLFW_KEY_TAB && !mItemActive)) feedImGui(event, mHeldMods);
     mLastInput = mWindow.time();
     mLastEventArrival = arrival(event);
     switch (event.type) {
@@ -86,7 +88,9 @@ void SculptApp::pressButton(const InputEvent& event)
         mDrag = Drag::None;  // a click keeps the new size
         return;
     }
-    if (event.button == kLeftButton && !(event.mods & kAlt)) {
+    if (mDrag == Drag::Piece) return endPieceGesture(event.button == kLeftButton);  // right drops it
+    if (mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt) && selectPieceAt(mMouseX, mMouseY)) return;
+    if (!mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt)) {
         if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
             if (mMode && mMode->press(*hit)) {                                 // a primitive placed, say
                 mDrag = Drag::Mode;
@@ -120,7 +124,7 @@ void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
 void SculptApp::releaseButton(const InputEvent& event)
 {
     if (mDrag == Drag::Stroke && event.button == kLeftButton) endStroke();
-    if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
+    if (mDrag != Drag::Radius && mDrag != Drag::Strength && mDrag != Drag::Piece) mDrag = Drag::None;
 }
 
 void SculptApp::endStroke()
@@ -134,6 +138,7 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
 {
     switch (mDrag) {
     case Drag::Stroke: extendStroke(event); break;
+    case Drag::Piece: pointPieceGesture(event.x, event.y); break;
     case Drag::Mode:
         if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;
@@ -188,8 +193,15 @@ void SculptApp::routeKey(const InputEvent& event)
         mDrag = Drag::None;
         return;
     }
+    if (mDrag == Drag::Piece) {
+        if (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER || event.key == GLFW_KEY_ESCAPE)
+            return endPieceGesture(event.key != GLFW_KEY_ESCAPE);
+        return keyPieceGesture(event.key);
+    }
     if (mDrag != Drag::None) return;
-    if (const std::optional<Command> command = commandForKey(event.key, event.mods)) execute(*command);
+    std::optional<Command> command = mPiecesMode ? commandForKey(event.key, event.mods, Scope::Pieces) : std::nullopt;
+    if (!command) command = commandForKey(event.key, event.mods);
+    if (command) execute(*command);
 }
 
 void SculptApp::routeDialogKey(const InputEvent& event)

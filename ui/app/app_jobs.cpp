@@ -70,6 +70,7 @@ void SculptApp::pollJob()
     }
     mLastInput = mWindow.time();  // show the notice
     mOpenPreview.reset();
+    mPiecesShown = ~std::uint64_t(0);  // a push that did not land leaves its piece where it was
     if (outcome.ending != JobRunner::Ending::Finished) mDisplay.dropPreview();
     if (mOpeningAtStart) followStartupOpen(outcome.ending, outcome.error);
 }
@@ -199,17 +200,16 @@ void SculptApp::openInJob(const fs::path& path, const std::string& grid)
 void SculptApp::startExport(const fs::path& path)
 {
     if (busy()) return;
-    meshFormatOf(path);  // refuse an unknown extension before welding
-    // Welded here (the mesher is the UI's), written on the job's thread.
-    auto mesh = std::make_shared<TriangleMesh>(mDocument->session().mesher()->weldedMesh());
-    startJob<std::size_t>(
+    // Welded here (the meshers are the UI's), written on the job's thread.
+    auto meshes = std::make_shared<std::vector<PieceMesh>>(mDocument->meshesToExport(path));
+    startJob<std::vector<std::string>>(
         "export " + path.filename().string(),
-        [mesh, path](const Progress&) {
-            writeMesh(*mesh, path);
-            return mesh->triangles.size();
-        },
-        [this, path](std::size_t triangles) {
-            mDialogs.notice = "exported " + path.string() + " (" + std::to_string(triangles) + " triangles)";
+        [meshes, path](const Progress&) { return writePieceMeshes(*meshes, path); },
+        [this](std::vector<std::string> lines) {
+            mDialogs.notice = lines.size() == 1
+                                  ? lines.front()
+                                  : "exported " + std::to_string(lines.size()) + " pieces: " + lines.front() + ", ...";
+            for (const std::string& line : lines) std::cout << "sculpt-ui: " << line << std::endl;
         });
 }
 

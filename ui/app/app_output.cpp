@@ -90,8 +90,8 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["modified"] = mDocument->modified();
     r["title"] = mDocument->title();
     r["path"] = mDocument->path().string();
-    r["undo"] = session.history().undoCount();
-    r["redo"] = session.history().redoCount();
+    r["undo"] = mDocument->undoLabels().size();
+    r["redo"] = mDocument->redoLabels().size();
     r["recovery_offered"] = mDialogs.recovery.has_value();
     r["asking_unsaved"] = mDialogs.afterUnsaved.has_value();
     r["prompt"] = promptName(mDialogs.prompt);
@@ -105,10 +105,17 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["display_pending_chunks"] = mDisplay.pendingChunks();  // still drawn from a preview
     r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
     r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
-    std::size_t otherTriangles = 0;
-    for (const auto& piece : mOtherPieces) otherTriangles += piece->shown() ? piece->triangleCount() : 0;
-    r["other_pieces"] = mOtherPieces.size();
-    r["other_pieces_triangles"] = otherTriangles;
+    r["other_pieces"] = mPieces.count();
+    r["other_pieces_triangles"] = mPieces.trianglesShown();
+    r["active_piece"] = mDocument->activePiece();
+    r["pieces"] = nlohmann::json::array();
+    for (const DocumentPiece& piece : mDocument->pieces()) {
+        std::vector<double> placement(piece.look.placement.asPointer(), piece.look.placement.asPointer() + 16);
+        r["pieces"].push_back({{"name", piece.look.name},
+                               {"checksum", formatChecksum(gridChecksum(piece.session->field().grid()))},
+                               {"visible", piece.look.visible},
+                               {"placement", placement}});
+    }
     r["target"] = mBrush.target.path.string();
     r["xray"] = mLook.xray();
     r["morph"] = nullptr;  // read by replays whether or not frames are on show

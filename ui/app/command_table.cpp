@@ -87,6 +87,10 @@ const std::vector<CommandRow>& SculptApp::commands()
         return a.mMode ? std::string()
                        : std::string("nothing to apply: Enter applies an import, primitives or a frame");
     };
+    static constexpr auto pieceGesture = +[](const App& a) {
+        if (!a.waitReason().empty()) return a.waitReason();
+        return a.mPiecesMode ? std::string() : std::string("Tab first: G, R and S move pieces in pieces mode");
+    };
     static constexpr auto unsavedOpen = +[](const App& a) {
         return a.mDialogs.afterUnsaved ? std::string() : std::string("no unsaved changes are being asked about");
     };
@@ -175,7 +179,7 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_Z, kControl}},
          [](const App& a) {
              if (!a.waitReason().empty()) return a.waitReason();
-             return a.mDocument->session().history().undoCount() > 0 ? std::string() : std::string("nothing to undo");
+             return a.mDocument->undoLabels().empty() ? std::string("nothing to undo") : std::string();
          },
          [](App& a) { a.mDocument->undo(); }},
         {Command::Redo,
@@ -184,7 +188,7 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_Z, kCtrlShift}, {GLFW_KEY_Y, kControl}},
          [](const App& a) {
              if (!a.waitReason().empty()) return a.waitReason();
-             return a.mDocument->session().history().redoCount() > 0 ? std::string() : std::string("nothing to redo");
+             return a.mDocument->redoLabels().empty() ? std::string("nothing to redo") : std::string();
          },
          [](App& a) { a.mDocument->redo(); }},
         {Command::New,
@@ -435,6 +439,50 @@ const std::vector<CommandRow>& SculptApp::commands()
              if (a.mJobs.running()) a.mJobs.cancel();
              else a.closeMode();
          }},
+        {Command::PiecesMode,
+         "Pieces Mode",
+         "Tab: a click picks the piece to sculpt, G/R/S move, turn and scale it (X/Y/Z: an axis; type a value); "
+         "Tab again: back to sculpting",
+         {{GLFW_KEY_TAB}},
+         nullptr,
+         [](App& a) {
+             a.mPiecesMode = !a.mPiecesMode;
+             a.mDialogs.notice =
+                 a.mPiecesMode ? "pieces mode: click a piece, G move, R rotate, S scale; Tab: sculpt"
+                               : "sculpting '" + a.mDocument->pieces()[a.mDocument->activePiece()].look.name + "'";
+         }},
+        {Command::MovePiece,
+         "Move Piece",
+         "Moves the piece with the pointer; stops at the pieces it meets unless Push is on",
+         {{GLFW_KEY_G}},
+         pieceGesture,
+         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Move); },
+         Scope::Pieces},
+        {Command::RotatePiece,
+         "Rotate Piece",
+         "Turns the piece about its centre, in the view's plane (X/Y/Z: about that axis)",
+         {{GLFW_KEY_R}},
+         pieceGesture,
+         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Rotate); },
+         Scope::Pieces},
+        {Command::ScalePiece,
+         "Scale Piece",
+         "Scales the piece about its centre (its voxels with it: the field is not resampled)",
+         {{GLFW_KEY_S}},
+         pieceGesture,
+         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Scale); },
+         Scope::Pieces},
+        {Command::TogglePush,
+         "Push",
+         "A piece moved into another dents it, keeping its volume, instead of stopping at it",
+         {{GLFW_KEY_P}},
+         nullptr,
+         [](App& a) {
+             toggle(a.mPushPieces);
+             a.mDialogs.notice = a.mPushPieces ? "push: a moved piece dents the pieces it meets"
+                                               : "a moved piece stops at the pieces it meets";
+         },
+         Scope::Pieces},
         {Command::AnswerSave,
          "Save",
          "Unsaved changes: save them, then go on",

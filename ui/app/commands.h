@@ -78,6 +78,11 @@ enum class Command {
     ToggleHelp,
     Confirm,
     Cancel,
+    PiecesMode,
+    MovePiece,
+    RotatePiece,
+    ScalePiece,
+    TogglePush,
     // The dialogs' answers (Scope::Dialog).
     AnswerSave,
     AnswerDiscard,
@@ -98,9 +103,9 @@ enum class Command {
 /// The number of commands: every value below it has one row in the table.
 constexpr int kCommandCount = int(Command::DialogCancel) + 1;
 
-/// Where a command's keys work: in the view, or in the dialog on top of it (which takes every
-/// key while it is open). A chord is bound at most once per scope.
-enum class Scope { View, Dialog };
+/// Where a command's keys work: in the view, in pieces mode (before the view's), or in the dialog
+/// on top of it (which takes every key while it is open). A chord is bound at most once per scope.
+enum class Scope { View, Dialog, Pieces };
 
 /// A key with exactly these modifiers (Shift, Ctrl, Alt).
 struct Chord {

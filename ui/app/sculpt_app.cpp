@@ -40,8 +40,9 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 SculptApp::SculptApp(AppWindow& window, AppOptions options)
     : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
       mDisplay(mViewport.renderer(), mLook, mOptions.chunkBlocks), mScales(mViewport.renderer()),
-      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
-      mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir)
+      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()), mCursor(mViewport.overlay()),
+      mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
+      mRecent(mOptions.stateDir)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     mDialogs.recovery = mAutosave.pending(mOptions.document);
@@ -86,40 +87,48 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
     mTopologyVersion = mMeasuredVersion = ~std::uint64_t(0);
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
     mReportVersion = mDocument->session().mesher()->version();
+    mActiveShown = &mDocument->session();
+    mPiecesShown = ~std::uint64_t(0);
+    showPieces();
     mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
-    showOtherPieces();
     if (frameIt) frameModel();
 }
 
-void SculptApp::showOtherPieces()
+void SculptApp::showPieces()
 {
-    mOtherPieces.clear();
-    mOtherPiecesBox = openvdb::BBoxd();
-    for (const Piece& piece : mDocument->otherPieces()) {
-        openvdb::CoordBBox box;
-        if (piece.field.grid().tree().evalLeafBoundingBox(box)) {
-            const openvdb::BBoxd own = piece.field.grid().transform().indexToWorld(box);
-            for (int corner = 0; corner < 8; ++corner) {
-                const openvdb::Vec3d p((corner & 1 ? own.max() : own.min()).x(),
-                                       (corner & 2 ? own.max() : own.min()).y(),
-                                       (corner & 4 ? own.max() : own.min()).z());
-                mOtherPiecesBox.expand(piece.placement.transform(p));
-            }
-        }
-        const ShapeStyle style{piece.colour[0], piece.colour[1], piece.colour[2], 1.0, 0.0};
-        mOtherPieces.push_back(std::make_unique<ShapeDisplay>(mViewport.renderer(), style));
-        mOtherPieces.back()->set(&piece.field);
-        mOtherPieces.back()->setShown(piece.visible);
-        mOtherPieces.back()->setPlacement(piece.placement);
+    if (mPiecesShown == mDocument->piecesRevision() && mActiveShown == &mDocument->session()) return;
+    mPiecesShown = mDocument->piecesRevision();
+    if (mActiveShown != &mDocument->session()) {  // another piece to sculpt: measures start again
+        mActiveShown = &mDocument->session();
+        mPicker.reset();
+        mStatistics = SurfaceStatistics();
+        mTopologyVersion = mMeasuredVersion = ~std::uint64_t(0);
+        mRemeshedAtSync = mDocument->session().remeshedBlocks();
     }
+    std::vector<DrawnPiece> others;
+    const auto& pieces = mDocument->pieces();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const SculptSession& session = *pieces[i].session;
+        if (i != mDocument->activePiece())
+            others.push_back({&pieces[i].look, session.mesher(), session.field().voxelSize()});
+    }
+    mPieces.sync(others);
+    mDisplay.setPlacement(pieces[mDocument->activePiece()].look.placement);
 }
 
 void SculptApp::frameModel()
 {
-    openvdb::BBoxd world = mOtherPiecesBox;
+    openvdb::BBoxd world = mPieces.worldBox();
     openvdb::CoordBBox box;
     const FieldImage& field = mDocument->session().field();
-    if (field.grid().tree().evalLeafBoundingBox(box)) world.expand(field.grid().transform().indexToWorld(box));
+    const openvdb::Mat4d& placement = mDocument->pieces()[mDocument->activePiece()].look.placement;
+    if (field.grid().tree().evalLeafBoundingBox(box)) {
+        const openvdb::BBoxd own = field.grid().transform().indexToWorld(box);
+        for (int corner = 0; corner < 8; ++corner)
+            world.expand(placement.transform(openvdb::Vec3d((corner & 1 ? own.max() : own.min()).x(),
+                                                            (corner & 2 ? own.max() : own.min()).y(),
+                                                            (corner & 4 ? own.max() : own.min()).z())));
+    }
     if (world.empty()) return;
     mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
                   {world.max().x(), world.max().y(), world.max().z()});
@@ -129,8 +138,19 @@ std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
 {
     if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
     const SculptSession& session = mDocument->session();
-    return mPicker.pick(session.field(), session.mesher()->version(), mViewport.rayThrough(x, y),
-                        session.strokeJournal());
+    // In the piece's own world: its placement moved the drawing, never the voxels.
+    const openvdb::Mat4d fromWorld = mDocument->pieces()[mDocument->activePiece()].look.placement.inverse();
+    return mPicker.pick(session.field(), session.mesher()->version(),
+                        transformedRay(mViewport.rayThrough(x, y), fromWorld), session.strokeJournal());
+}
+
+SurfaceHit SculptApp::inWorld(const SurfaceHit& hit) const
+{
+    const openvdb::Mat4d& placement = mDocument->pieces()[mDocument->activePiece()].look.placement;
+    const openvdb::Vec3d p = placement.transform(openvdb::Vec3d(hit.position.x, hit.position.y, hit.position.z));
+    // Rigid moves and uniform scales: the normal turns as a direction does.
+    const openvdb::Vec3d n = placement.transform3x3(openvdb::Vec3d(hit.normal.x, hit.normal.y, hit.normal.z)).unit();
+    return {{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}};
 }
 
 HoverKey SculptApp::hoverKey() const
@@ -165,14 +185,16 @@ void SculptApp::updateCursor()
         mHover = key.picking ? pickAt(mMouseX, mMouseY) : std::nullopt;
         mHoverKey = key;
     }
-    const bool show = mHover && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
+    const bool show = mHover && !mPiecesMode && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift).
     const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
     else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
     else mCursor.setColour(1.0, 1.0, 1.0);
-    if (show) mCursor.place(true, mHover->position, mHover->normal, mBrush.radius, mBrush.symmetry);
-    else mCursor.place(false, {}, {}, 0.0, {});
+    if (show) {
+        const SurfaceHit shown = inWorld(*mHover);
+        mCursor.place(true, shown.position, shown.normal, mBrush.radius, mBrush.symmetry);
+    } else mCursor.place(false, {}, {}, 0.0, {});
 }
 
 void SculptApp::updateTitle()
@@ -187,6 +209,9 @@ void SculptApp::refreshStatus(bool topology)
     const SculptSession& session = mDocument->session();
     mStatistics.update(*session.mesher());
     mStatus.triangles = mStatistics.triangles();
+    mStatus.pieces = mDocument->pieces().size();
+    mStatus.piece = mDocument->pieces()[mDocument->activePiece()].look.name;
+    mStatus.allTriangles = mStatus.triangles + mPieces.trianglesShown();
     mStatus.volume = mStatistics.volume();
     mStatus.area = mStatistics.area();
     // Whole-tree passes: only after a change, and not per frame of a stroke (at its end).
@@ -234,6 +259,7 @@ void SculptApp::frame()
     showOpenPreview();  // before the job lands: a preview taken after would hide its document
     pollJob();
     mDocument->session().updateMesh();  // once per frame: a stroke's events only stamp
+    showPieces();
 
     const SculptSession& session = mDocument->session();
     const std::size_t remeshed = session.remeshedBlocks();
@@ -245,6 +271,7 @@ void SculptApp::frame()
     mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
+    mPieces.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     if (mOpeningAtStart) followStartupOpen(JobRunner::Ending::Running, {});
     mStatus.blocksUploaded += mDisplay.lastUploads();
     mStatus.blocksRemoved += mDisplay.lastRemovals();
@@ -297,6 +324,7 @@ void SculptApp::drawPanels()
     drawMainMenu(*this);
     drawToolPanel(*this);
     drawHistoryPanel(*this);
+    drawPiecesPanel(*this);
     drawStatusBar(*this);
     drawDialogs(*this);
     drawJobPanel(*this);
@@ -339,7 +367,9 @@ void SculptApp::finishReplay()
 {
     try {
         if (!mOptions.saveAs.empty()) saveTo(mOptions.saveAs);
-        if (!mOptions.exportMesh.empty()) mDocument->exportMesh(mOptions.exportMesh);
+        if (!mOptions.exportMesh.empty())
+            for (const std::string& line : mDocument->exportMesh(mOptions.exportMesh))
+                std::cout << "sculpt-ui: " << line << "\n";
         if (!mOptions.strokeLog.empty()) mDocument->saveStrokes(mOptions.strokeLog);
     } catch (const InputError& e) {
         showError(e.what());

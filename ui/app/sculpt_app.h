@@ -8,6 +8,7 @@
 #include "core/primitives/skeleton.h"
 #include "sculpt/session/model_filter.h"
 #include "ui/app/commands.h"
+#include "ui/app/piece_gesture.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
 #include "ui/document/file_listing.h"
@@ -22,6 +23,7 @@
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
 #include "ui/view/model_display.h"
+#include "ui/view/pieces_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/shape_display.h"
 #include "ui/view/surface_look.h"
@@ -59,6 +61,9 @@ struct AppOptions {
 /// The figures of the status bar.
 struct StatusFigures {
     double frameMs = 0.0;
+    /// The piece sculpted (of several), and the triangles of every piece shown.
+    std::string piece;
+    std::size_t pieces = 1, allTriangles = 0;
     std::size_t triangles = 0, activeVoxels = 0, blocks = 0, memoryBytes = 0, undoBytes = 0;
     /// Where the memory goes: the field's tree, the mesher's block meshes, the display's VTK
     /// geometry (the rest of memoryBytes: the GL driver's copy of it, libraries, the window).
@@ -106,6 +111,10 @@ struct Dialogs {
     std::optional<GridChoice> gridChoice;
     /// True if the open prompt can be confirmed (one asking for a path needs one).
     bool confirmable() const;
+    /// The Pieces panel's name field (of piece pieceNameOf, named pieceNameSeen then) and the
+    /// piece chosen to merge with.
+    std::string pieceName, pieceNameSeen;
+    std::size_t pieceNameOf = ~std::size_t(0), mergeWith = 0;
     std::string error;   ///< shown until dismissed
     std::string notice;  ///< status line (saved, autosaved, ...)
     bool help = false;
@@ -158,6 +167,21 @@ public:
     /// opening the Primitives panel.
     void addPrimitive(SkeletonType type);
 
+    /// Pieces (app_pieces.cpp): the Pieces panel's edits, each one undo step.
+    void selectPiece(std::size_t index);
+    std::vector<PieceLook> pieceLooks() const;
+    void changeLooks(std::vector<PieceLook> looks, const std::string& label);
+    /// Shows only piece `index`; again, shows them all.
+    void soloPiece(std::size_t index);
+    void deletePiece(std::size_t index);
+    void duplicatePiece(std::size_t index);
+    void mergePieces(std::size_t a, std::size_t b);
+    void splitPiece(std::size_t index);
+    /// Pieces mode (Tab): a click picks the piece to sculpt, G, R and S move it.
+    bool piecesMode() const { return mPiecesMode; }
+    bool& pushPieces() { return mPushPieces; }
+    void beginPieceGesture(PieceGesture::Kind kind);
+
     /// Dialog outcomes.
     void confirmPrompt();
     void recover(bool accept);
@@ -208,6 +232,17 @@ private:
     void routeDialogKey(const InputEvent& event);
     void zoomAtPointer(const InputEvent& event);
     void pressButton(const InputEvent& event);
+    /// The pointer or a key during G, R or S; its end (kept or dropped) as one undo step.
+    void pointPieceGesture(double x, double y);
+    void keyPieceGesture(int key);
+    void endPieceGesture(bool keep);
+    /// Lands a move that dents the pieces `pushed` as a job (pushAside keeps their volumes).
+    void startPushJob(std::size_t index, const openvdb::Mat4d& placement, std::vector<std::size_t> pushed,
+                      const std::string& label);
+    /// Makes the piece under the pixel the one sculpted; false if none is there.
+    bool selectPieceAt(double x, double y);
+    /// Runs `make` as a job; the pieces it makes take the place of those at `replaced`.
+    void startPieceEdit(std::string label, std::vector<std::size_t> replaced, std::function<std::vector<Piece>()> make);
     void releaseButton(const InputEvent& event);
     void beginStroke(const InputEvent& event, const SurfaceHit& hit);
     void dragTo(const InputEvent& event, double dx, double dy);
@@ -230,9 +265,13 @@ private:
     void writeReport(const std::filesystem::path& path, const std::string& name);
     void finishReplay();
     void frameModel();
-    /// Draws the document's other pieces (a label map's other labels) in their colours.
-    void showOtherPieces();
+    /// Brings the drawing of the pieces up to date once they changed: the active one in the
+    /// model display at its placement, the others in their colours.
+    void showPieces();
+    /// The active piece's surface under the pixel, in its field's world (where strokes are made).
     std::optional<SurfaceHit> pickAt(double x, double y);
+    /// A hit of pickAt in the world (the active piece's placement applied).
+    SurfaceHit inWorld(const SurfaceHit& hit) const;
     /// What the hover depends on now.
     HoverKey hoverKey() const;
     void replayStrokes();
@@ -286,9 +325,10 @@ private:
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
-    ShapeDisplay mGhost;                                      // the follow target
-    std::vector<std::unique_ptr<ShapeDisplay>> mOtherPieces;  // drawn in their colours, not edited yet
-    openvdb::BBoxd mOtherPiecesBox;                           // theirs, world: framing shows them too
+    ShapeDisplay mGhost;                             // the follow target
+    PiecesDisplay mPieces;                           // the pieces not being sculpted
+    std::uint64_t mPiecesShown = ~std::uint64_t(0);  // the document's piecesRevision drawn
+    const SculptSession* mActiveShown = nullptr;     // the session the model display shows
     BrushCursor mCursor;
     SymmetryPlanes mPlanes;
     CameraControl mCamera;
@@ -320,10 +360,14 @@ private:
     int mHeldMods = 0;    // modifier keys held down
     int mStrokeMods = 0;  // the modifiers the current stroke began with
     std::string mTitle;
-    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode };
+    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode, Piece };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
-    std::optional<SurfaceHit> mHover;  // the surface under the pointer, picked for mHoverKey
+    bool mPiecesMode = false, mPushPieces = false;
+    std::optional<PieceGesture> mGesture;  // G, R or S under way
+    openvdb::Mat4d mGestureShown;          // the placement it shows (stopped at contact)
+    std::vector<std::size_t> mObstacles;   // the pieces it stops at
+    std::optional<SurfaceHit> mHover;      // the surface under the pointer, picked for mHoverKey
     HoverKey mHoverKey;
     bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)

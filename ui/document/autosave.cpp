@@ -54,7 +54,7 @@ bool Autosave::save(const Document& document, std::string& error)
     if (!needsWrite(document)) return false;
     try {
         makePrivateDirectory(mDir / "recovery");
-        writeFieldImage(document.session().field(), recoveryFile(document.path()), document.companions());
+        document.writeCopy(recoveryFile(document.path()));
     } catch (const InputError& e) {
         error = std::string("autosave failed: ") + e.what();
         return false;

@@ -6,8 +6,12 @@
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
+#include "sculpt/session/piece_meshes.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
 namespace sculpt::ui {
 
@@ -24,9 +28,30 @@ std::string strokeLabel(const Stroke& stroke, std::size_t stamps)
 
 }  // namespace
 
+DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing)
+{
+    PieceLook look = piece;
+    return {std::move(look), std::make_shared<SculptSession>(std::move(piece.field), /*liveMesh=*/true,
+                                                             UndoHistory::kDefaultBudgetBytes, meshing)};
+}
+
 Document::Document(FieldImage field, std::filesystem::path path, const Progress& meshing)
-    : mSession(std::move(field), /*liveMesh=*/true, UndoHistory::kDefaultBudgetBytes, meshing), mPath(std::move(path))
+    : Document(std::vector<Piece>{{{field.grid().getName().empty() ? "surface" : field.grid().getName()}, field}},
+               std::move(path), meshing)
 {}
+
+Document::Document(std::vector<Piece> pieces, std::filesystem::path path, const Progress& meshing)
+    : mPath(std::move(path))
+{
+    // Progress in proportion to each piece's voxels: meshing time follows them.
+    double total = 0.0, done = 0.0;
+    for (const Piece& piece : pieces) total += double(piece.field.grid().activeVoxelCount()) + 1.0;
+    for (Piece& piece : pieces) {
+        const double share = (double(piece.field.grid().activeVoxelCount()) + 1.0) / total;
+        mPieces.push_back(makeDocumentPiece(std::move(piece), scaledProgress(meshing, done, done + share)));
+        done += share;
+    }
+}
 
 Document Document::create(const NewShape& shape)
 {
@@ -50,10 +75,10 @@ Document Document::create(const NewShape& shape)
 Document Document::open(const std::filesystem::path& path, const Progress& progress, std::vector<std::string>* warnings,
                         const std::string& grid, const std::function<void(const FieldImage&)>& beforeMeshing)
 {
-    VdbDocument file = readVdbDocument(path, grid);
+    VdbPieces file = readVdbPieces(path, grid);
     report(progress, 0.3);  // reading is quick next to meshing
-    if (beforeMeshing) beforeMeshing(file.field);
-    Document document(std::move(file.field), path, scaledProgress(progress, 0.3, 1.0));
+    if (beforeMeshing) beforeMeshing(file.pieces.front().field);
+    Document document(std::move(file.pieces), path, scaledProgress(progress, 0.3, 1.0));
     document.mCompanions = std::move(file.companions);
     if (warnings) *warnings = std::move(file.warnings);
     return document;
@@ -71,15 +96,38 @@ void Document::save() { saveAs(mPath); }
 
 void Document::saveAs(const std::filesystem::path& path)
 {
-    writeFieldImage(mSession.field(), path, mCompanions);
+    writeCopy(path);
     mPath = path;
     mSavedState = mState;
 }
 
-void Document::exportMesh(const std::filesystem::path& path) const
+void Document::writeCopy(const std::filesystem::path& path) const
+{
+    writeVdbPieces(piecesAsFiled(), path, mCompanions);
+}
+
+std::vector<Piece> Document::piecesAsFiled() const
+{
+    std::vector<Piece> filed;
+    for (const DocumentPiece& piece : mPieces) filed.push_back({piece.look, piece.session->field()});
+    return filed;
+}
+
+std::vector<PieceMesh> Document::meshesToExport(const std::filesystem::path& path) const
 {
     meshFormatOf(path);  // refuse an unknown extension before welding
-    writeMesh(mSession.mesher()->weldedMesh(), path);
+    std::vector<PieceMesh> meshes;
+    for (const DocumentPiece& piece : mPieces)
+        if (piece.look.visible || mPieces.size() == 1)
+            meshes.push_back(
+                {piece.look.name, placedMesh(piece.session->mesher()->weldedMesh(), piece.look.placement)});
+    if (meshes.empty()) throw InputError(path.string() + ": every piece is hidden: nothing to export");
+    return meshes;
+}
+
+std::vector<std::string> Document::exportMesh(const std::filesystem::path& path) const
+{
+    return writePieceMeshes(meshesToExport(path), path);
 }
 
 void Document::saveStrokes(const std::filesystem::path& path) const
@@ -97,48 +145,145 @@ std::string Document::title() const
     return name + (modified() ? " *" : "");
 }
 
+void Document::setActivePiece(std::size_t index)
+{
+    if (index >= mPieces.size() || index == mActive) return;
+    mActive = index;
+    ++mPiecesRevision;
+}
+
+std::string Document::freeName(const std::string& base) const
+{
+    const auto taken = [this](const std::string& name) {
+        return std::any_of(mPieces.begin(), mPieces.end(),
+                           [&](const DocumentPiece& piece) { return piece.look.name == name; });
+    };
+    std::string name = base;
+    for (int n = 2; taken(name); ++n) name = base + " " + std::to_string(n);
+    return name;
+}
+
 void Document::beginStroke(const Stroke& settings, StrokeSources sources)
 {
-    mSession.beginStroke(settings);
+    session().beginStroke(settings);
     mPendingSources = std::move(sources);
 }
 
-SculptSession::StrokeReport Document::extendStroke(const StrokeSample& sample) { return mSession.extendStroke(sample); }
+SculptSession::StrokeReport Document::extendStroke(const StrokeSample& sample)
+{
+    return session().extendStroke(sample);
+}
 
 void Document::endStroke()
 {
-    SculptSession::FinishedStroke done = mSession.endStroke();
+    SculptSession::FinishedStroke done = session().endStroke();
     ++mRevision;
     if (done.report.leavesChanged == 0) return;  // the history ignores a stroke that changed nothing
-    recordStep(strokeLabel(done.stroke, done.report.stamps));
+    recordStep(strokeLabel(done.stroke, done.report.stamps), {{mPieces[mActive].session}, {}, {}});
+    // A stroke script replays into a document's first piece.
+    if (mActive != 0 && mUnscripted.empty()) mUnscripted = "a stroke on piece '" + mPieces[mActive].look.name + "'";
     mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingSources)});
 }
 
 void Document::replaceField(FieldImage result, const std::string& label)
 {
-    mSession.replaceField(std::move(result));
+    session().replaceField(std::move(result));
     ++mRevision;
-    recordStep(label);
+    recordStep(label, {{mPieces[mActive].session}, {}, {}});
     if (mUnscripted.empty()) mUnscripted = label;
 }
 
-void Document::recordStep(const std::string& label)
+void Document::setLooks(std::vector<PieceLook> looks, const std::string& label)
+{
+    if (looks.size() != mPieces.size()) throw std::logic_error("setLooks: one look per piece");
+    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    for (std::size_t i = 0; i < looks.size(); ++i) mPieces[i].look = std::move(looks[i]);
+    scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
+    ++mRevision;
+    ++mPiecesRevision;
+    recordStep(label, std::move(scope));
+}
+
+void Document::movePiece(std::size_t index, const openvdb::Mat4d& placement,
+                         std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label)
+{
+    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    for (auto& [piece, field] : dented) {
+        mPieces.at(piece).session->replaceField(std::move(field));
+        scope.sessions.push_back(mPieces[piece].session);
+    }
+    mPieces.at(index).look.placement = placement;
+    scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
+    ++mRevision;
+    ++mPiecesRevision;
+    recordStep(label, std::move(scope));
+    if (!dented.empty() && mUnscripted.empty()) mUnscripted = label;
+}
+
+void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vector<DocumentPiece> added,
+                             const std::string& label)
+{
+    if (mPieces.size() - replaced.size() + added.size() == 0) throw InputError("a document keeps at least one piece");
+    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    const std::size_t at = replaced.empty() ? mPieces.size() : replaced.front();
+    for (auto i = replaced.rbegin(); i != replaced.rend(); ++i) mPieces.erase(mPieces.begin() + std::ptrdiff_t(*i));
+    const std::size_t addedCount = added.size();
+    mPieces.insert(mPieces.begin() + std::ptrdiff_t(std::min(at, mPieces.size())),
+                   std::make_move_iterator(added.begin()), std::make_move_iterator(added.end()));
+    mActive = std::min(addedCount > 0 ? at : (at > 0 ? at - 1 : 0), mPieces.size() - 1);
+    scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
+    ++mRevision;
+    ++mPiecesRevision;
+    recordStep(label, std::move(scope));
+    if (mUnscripted.empty()) mUnscripted = label;
+}
+
+void Document::recordStep(const std::string& label, StepScope scope)
 {
     mUndoLabels.push_back(label);
+    mUndoScopes.push_back(std::move(scope));
     mRedoLabels.clear();
+    mRedoScopes.clear();
     mRedoStates.clear();
     mUndoStates.push_back(mState);
     mState = mNextState++;
-    const std::size_t kept = mSession.history().undoCount();  // the oldest may be forgotten (budget)
-    while (mUndoLabels.size() > kept) {
+    forgetBeyondJournals();
+}
+
+void Document::forgetBeyondJournals()
+{
+    for (;;) {
+        std::map<const SculptSession*, std::size_t> uses;
+        for (const StepScope& scope : mUndoScopes)
+            for (const auto& session : scope.sessions) ++uses[session.get()];
+        const bool forgotten = std::any_of(
+            uses.begin(), uses.end(), [](const auto& use) { return use.second > use.first->history().undoCount(); });
+        if (!forgotten) return;
         mUndoLabels.erase(mUndoLabels.begin());
+        mUndoScopes.erase(mUndoScopes.begin());
         mUndoStates.erase(mUndoStates.begin());
     }
 }
 
+void Document::restorePieces(const std::vector<DocumentPiece>& pieces, std::shared_ptr<SculptSession> active)
+{
+    if (!active) active = mPieces[mActive].session;
+    mPieces = pieces;
+    const auto found = std::find_if(mPieces.begin(), mPieces.end(),
+                                    [&](const DocumentPiece& piece) { return piece.session == active; });
+    mActive = found != mPieces.end() ? std::size_t(found - mPieces.begin()) : std::min(mActive, mPieces.size() - 1);
+    ++mPiecesRevision;
+}
+
 bool Document::undo()
 {
-    if (!mSession.undo()) return false;
+    if (mUndoScopes.empty()) return false;
+    const StepScope scope = std::move(mUndoScopes.back());
+    mUndoScopes.pop_back();
+    for (auto session = scope.sessions.rbegin(); session != scope.sessions.rend(); ++session) (*session)->undo();
+    if (scope.before) restorePieces(*scope.before);
+    else ++mPiecesRevision;  // an edit of a piece not active, perhaps
+    mRedoScopes.push_back(scope);
     ++mRevision;
     mRedoLabels.insert(mRedoLabels.begin(), mUndoLabels.back());
     mUndoLabels.pop_back();
@@ -151,7 +296,13 @@ bool Document::undo()
 
 bool Document::redo()
 {
-    if (!mSession.redo()) return false;
+    if (mRedoScopes.empty()) return false;
+    const StepScope scope = std::move(mRedoScopes.back());
+    mRedoScopes.pop_back();
+    for (const auto& session : scope.sessions) session->redo();
+    if (scope.after) restorePieces(*scope.after);
+    else ++mPiecesRevision;
+    mUndoScopes.push_back(scope);
     ++mRevision;
     mUndoLabels.push_back(mRedoLabels.front());
     mRedoLabels.erase(mRedoLabels.begin());

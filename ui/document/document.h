@@ -1,14 +1,22 @@
 #pragma once
 /// @file document.h
-/// @brief The open document: the sculpt session (field, live mesh, undo), where it is saved,
-///        whether it has unsaved changes, and the log of its edits as a stroke script.
+/// @brief The open document: its pieces, each a sculpt session (field, live mesh, undo journal)
+///        with its look and placement, the one being edited, where it is saved, whether it has
+///        unsaved changes, and the log of its edits as a stroke script.
+///
+/// One undo history spans the pieces: a step is a journal step of each session it edited (a
+/// stroke: the active piece's; a push: the dented pieces') and, when the pieces themselves
+/// changed (renamed, moved, added, deleted), the list of pieces before and after it. Pieces share
+/// their sessions with the steps that hold them, so a deleted piece comes back whole on undo.
 
 #include "core/io/vdb_file.h"
+#include "sculpt/session/piece_meshes.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -22,11 +30,23 @@ struct NewShape {
 };
 inline constexpr const char* kShapeNames[] = {"sphere", "box", "torus"};
 
+/// A piece of the open document: its look and its session, shared with the undo steps that
+/// hold it.
+struct DocumentPiece {
+    PieceLook look;
+    std::shared_ptr<SculptSession> session;
+};
+
+/// A piece's session, meshed live as the window needs it. `meshing` reports its first mesh.
+DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing = {});
+
 class Document {
 public:
-    /// A document of `field`, saved at `path` (empty: untitled).
+    /// A document of one piece, `field`, saved at `path` (empty: untitled).
     /// `meshing` reports building its mesh (Cancelled if it says stop).
     explicit Document(FieldImage field, std::filesystem::path path = {}, const Progress& meshing = {});
+    /// A document of `pieces` (at least one), the first edited.
+    explicit Document(std::vector<Piece> pieces, std::filesystem::path path = {}, const Progress& meshing = {});
 
     /// @throws InputError naming the setting (sizes not positive, too many voxels).
     static Document create(const NewShape& shape);
@@ -42,23 +62,51 @@ public:
     static Document recover(const std::filesystem::path& recoveryFile, std::filesystem::path documentPath);
 
     /// Writes to path() (atomically), with the other grids and metadata the file held.
-    /// @throws InputError naming the file (see writeFieldImage).
+    /// @throws InputError naming the file (see writeVdbPieces).
     void save();
     void saveAs(const std::filesystem::path& path);
-    /// Writes the welded mesh (.ply, .obj, .stl). @throws InputError naming the file.
-    void exportMesh(const std::filesystem::path& path) const;
+    /// Writes every piece as save() does, to `path`, leaving the document's own path and state
+    /// (a recovery copy).
+    void writeCopy(const std::filesystem::path& path) const;
+    /// Writes the welded mesh (.ply, .obj, .stl) of every piece shown, where it is placed
+    /// (writePieceMeshes: several pieces give a file each, or one OBJ of an object each).
+    /// @return what was written, a line per piece. @throws InputError naming the file.
+    std::vector<std::string> exportMesh(const std::filesystem::path& path) const;
+    /// What exportMesh writes, welded (and checked against `path`'s extension) for a job to write.
+    std::vector<PieceMesh> meshesToExport(const std::filesystem::path& path) const;
     /// Writes every edit since the document was opened as a `sculpt apply` stroke script.
     /// @throws InputError naming the file if a whole-model edit (a filter) happened: a stroke
     ///         script cannot replay it.
     void saveStrokes(const std::filesystem::path& path) const;
 
-    SculptSession& session() { return mSession; }
-    const SculptSession& session() const { return mSession; }
+    /// The active piece's session: what strokes and whole-model edits change.
+    SculptSession& session() { return *mPieces[mActive].session; }
+    const SculptSession& session() const { return *mPieces[mActive].session; }
+    const std::vector<DocumentPiece>& pieces() const { return mPieces; }
     const std::filesystem::path& path() const { return mPath; }
-    /// The opened file's other grids and metadata, written with every save.
-    const VdbCompanions& companions() const { return mCompanions; }
-    /// The document's pieces besides the one edited (a label map's other labels), shown beside it.
-    std::vector<Piece> otherPieces() const { return piecesAmong(mCompanions, mSession.field().units()); }
+    std::size_t activePiece() const { return mActive; }
+    /// Makes piece `index` the one edited (not an undo step: nothing in the document changes).
+    void setActivePiece(std::size_t index);
+    /// Changes on every change of the pieces' list or looks and every edit of a piece but the
+    /// active one: what the window's drawing of them watches.
+    std::uint64_t piecesRevision() const { return mPiecesRevision; }
+    /// The pieces with their fields (sharing the sessions' grids), as a file holds them.
+    std::vector<Piece> piecesAsFiled() const;
+
+    /// Piece edits, each one undo step named `label`.
+    /// The pieces' new looks, one per piece (renamed, recoloured, hidden, moved: no voxel changes).
+    void setLooks(std::vector<PieceLook> looks, const std::string& label);
+    /// Piece `index` moved to `placement`, and the pieces `dented` (index, new field) pushed
+    /// aside by it, as one step.
+    void movePiece(std::size_t index, const openvdb::Mat4d& placement,
+                   std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label);
+    /// The pieces at `replaced` (ascending) give way to `added`, inserted where the first of them
+    /// was (at the end if none): a duplicate, a merge, a split, a delete. The first added (else
+    /// the piece before) becomes active.
+    void replacePieces(const std::vector<std::size_t>& replaced, std::vector<DocumentPiece> added,
+                       const std::string& label);
+    /// A name for a new piece, not taken yet: `base`, else "base 2", "base 3"...
+    std::string freeName(const std::string& base) const;
     /// "face.vdb" or "untitled", with " *" when modified.
     std::string title() const;
     bool modified() const { return mState != mSavedState; }
@@ -82,16 +130,29 @@ public:
     const std::vector<std::string>& redoLabels() const { return mRedoLabels; }
 
 private:
-    /// A new undo step: its label and the modified-state bookkeeping.
-    void recordStep(const std::string& label);
+    /// What one undo step changed: one journal step of each of `sessions`, and, if the pieces
+    /// changed, their list before and after.
+    struct StepScope {
+        std::vector<std::shared_ptr<SculptSession>> sessions;
+        std::shared_ptr<const std::vector<DocumentPiece>> before, after;
+    };
+    /// A new undo step: its label, scope and the modified-state bookkeeping.
+    void recordStep(const std::string& label, StepScope scope);
+    /// Drops the oldest steps once a session has forgotten (its budget) a journal step they need.
+    void forgetBeyondJournals();
+    /// The pieces become `pieces`; the active piece stays active if it is among them.
+    void restorePieces(const std::vector<DocumentPiece>& pieces, std::shared_ptr<SculptSession> active = {});
 
-    SculptSession mSession;
+    std::vector<DocumentPiece> mPieces;
+    std::size_t mActive = 0;
+    std::uint64_t mPiecesRevision = 0;
     std::filesystem::path mPath;
     VdbCompanions mCompanions;  // the opened file's other grids and metadata
     StrokeScript mLog;
     StrokeSources mPendingSources;
     std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold
     std::vector<std::string> mUndoLabels, mRedoLabels;
+    std::vector<StepScope> mUndoScopes, mRedoScopes;
     std::vector<std::uint64_t> mUndoStates, mRedoStates;
     std::uint64_t mState = 0, mSavedState = 0, mNextState = 1, mRevision = 0;
 };

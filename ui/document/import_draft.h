@@ -24,6 +24,9 @@ public:
     const ImportPreview& file() const { return *mFile; }
     ImportOptions options;  ///< as the panel sets them
     Result result = Result::NewDocument;
+    /// A label map imported as a new document of one piece per label (importLabelPieces): the
+    /// default for a label map of two labels or more besides the background.
+    bool labelPieces = false;
 
     /// The iso-value the options give: theirs, else Otsu's (scans).
     double iso();

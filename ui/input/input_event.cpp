@@ -53,6 +53,7 @@ const std::vector<std::pair<int, const char*>>& namedKeys()
             {GLFW_KEY_RIGHT_ALT, "RightAlt"},
             {GLFW_KEY_EQUAL, "Equal"},
             {GLFW_KEY_MINUS, "Minus"},
+            {GLFW_KEY_PERIOD, "Period"},
         };
         static const char* letters[] = {"A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M",
                                         "N", "O", "P", "Q", "R", "S", "T", "U", "V", "W", "X", "Y", "Z"};

@@ -66,6 +66,20 @@ bool ImportMode::accept(ModeHost& host)
     if (!replaces) options.voxelSize = host.document().session().field().voxelSize();  // the document's lattice
     const std::filesystem::path path = mDraft.file().path();
     auto report = std::make_shared<ImportReport>();
+    if (replaces && mDraft.labelPieces) {  // a piece per label, each meshed on the job's thread
+        host.startDocument(
+            "import " + path.filename().string() + " as pieces",
+            [path, options, report](const Progress& p, const ModeHost::FieldReady& ready) {
+                std::vector<Piece> pieces = importLabelPieces(path, options, *report, scaledProgress(p, 0.0, 0.7));
+                ready(pieces.front().field);
+                return std::make_unique<Document>(std::move(pieces), std::filesystem::path(),
+                                                  scaledProgress(p, 0.7, 1.0));
+            },
+            [path, report] {
+                return "import " + path.filename().string() + " done, a piece per label: " + importSummary(*report);
+            });
+        return true;
+    }
     if (replaces) {  // the new document, its mesh too, made on the job's thread
         host.startDocument(
             "import " + path.filename().string(),
@@ -99,6 +113,7 @@ nlohmann::json ImportMode::report()
             {"iso", scan ? draft.iso() : 0.0},
             {"otsu", scan ? draft.file().otsuThreshold(draft.options) : 0.0},
             {"result", importResultName(draft.result)},
+            {"label_pieces", draft.labelPieces},
             {"preview_voxel_size", draft.file().previewVoxelSize()},
             {"preview_ms", draft.previewMs()},
             {"problem", draft.problem()},

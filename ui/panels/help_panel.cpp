@@ -66,6 +66,7 @@ void drawHelpPanel(SculptApp& app)
         ImGui::EndTable();
     }
     keyTable("Keys", Scope::View);
+    keyTable("In pieces mode (Tab)", Scope::Pieces);
     keyTable("In a dialog", Scope::Dialog);
     ImGui::End();
 }

@@ -13,10 +13,14 @@ void drawHistoryPanel(SculptApp& app)
     ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     ImGui::Begin("History", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
     const Document& doc = app.document();
-    const UndoHistory& history = doc.session().history();
-    ImGui::Text("%zu undo, %zu redo, %s", history.undoCount(), history.redoCount(),
-                formatBytes(double(history.memoryBytes())).c_str());
-    if (history.droppedCount() > 0) ImGui::TextDisabled("%zu oldest forgotten (memory budget)", history.droppedCount());
+    std::size_t bytes = 0, forgotten = 0;
+    for (const DocumentPiece& piece : doc.pieces()) {
+        bytes += piece.session->history().memoryBytes();
+        forgotten += piece.session->history().droppedCount();
+    }
+    ImGui::Text("%zu undo, %zu redo, %s", doc.undoLabels().size(), doc.redoLabels().size(),
+                formatBytes(double(bytes)).c_str());
+    if (forgotten > 0) ImGui::TextDisabled("%zu oldest forgotten (memory budget)", forgotten);
     if (ImGui::Button("Undo")) app.execute(Command::Undo);
     commandTooltip(app, Command::Undo);
     ImGui::SameLine();

@@ -58,14 +58,26 @@ void labelControls(ImportDraft& draft)
 {
     const std::vector<int>& labels = draft.file().labels();
     if (labels.size() <= 2) return;  // a mask, or intensities: no labels to choose from
-    const std::string shown = draft.options.label ? std::to_string(*draft.options.label) : "none (iso-value)";
+    constexpr const char* kEvery = "every label, a piece each";
+    const std::string shown = draft.labelPieces     ? kEvery
+                              : draft.options.label ? std::to_string(*draft.options.label)
+                                                    : "none (iso-value)";
     ImGui::SetNextItemWidth(200.f);
     if (ImGui::BeginCombo("label", shown.c_str())) {
-        if (ImGui::Selectable("none (iso-value)", !draft.options.label)) draft.options.label.reset();
+        if (ImGui::Selectable(kEvery, draft.labelPieces)) {
+            draft.labelPieces = true;
+            draft.options.label.reset();
+            draft.result = ImportDraft::Result::NewDocument;
+        }
+        if (ImGui::Selectable("none (iso-value)", !draft.options.label && !draft.labelPieces)) {
+            draft.options.label.reset();
+            draft.labelPieces = false;
+        }
         for (const int label : labels)
             if (ImGui::Selectable(std::to_string(label).c_str(), draft.options.label == label)) {
                 draft.options.label = label;
                 draft.options.iso.reset();
+                draft.labelPieces = false;
             }
         ImGui::EndCombo();
     }
@@ -153,6 +165,7 @@ void resultControls(SculptApp& app, ImportDraft& draft)
     ImGui::SameLine();
     ImGui::RadioButton("difference", &result, 2);
     draft.result = ImportDraft::Result(result);
+    if (draft.result != ImportDraft::Result::NewDocument) draft.labelPieces = false;  // pieces make a document
     const double documentVoxel = app.document().session().field().voxelSize();
     if (draft.result != ImportDraft::Result::NewDocument) {
         ImGui::Text("voxel size %.4g (the document's)", documentVoxel);

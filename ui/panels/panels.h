@@ -18,6 +18,9 @@ class SculptApp;
 void drawMainMenu(SculptApp& app);
 void drawToolPanel(SculptApp& app);
 void drawHistoryPanel(SculptApp& app);
+/// The document's pieces (when it has several, or in pieces mode): pick the one to sculpt, its
+/// name, colour, visibility, solo, duplicate, delete, split and merge, push on contact.
+void drawPiecesPanel(SculptApp& app);
 void drawStatusBar(SculptApp& app);
 void drawDialogs(SculptApp& app);
 void drawHelpPanel(SculptApp& app);

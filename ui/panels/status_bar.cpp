@@ -17,6 +17,11 @@ void drawStatusBar(SculptApp& app)
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
     const StatusFigures& s = app.status();
     const std::string& units = app.document().session().field().units();
+    if (s.pieces > 1) {  // the figures after it are the sculpted piece's
+        ImGui::Text("%s, one of %zu pieces (all shown: %s tris) |", s.piece.c_str(), s.pieces,
+                    formatCount(s.allTriangles).c_str());
+        ImGui::SameLine();
+    }
     ImGui::Text(
         "%.0f ms | %s tris | %s voxels | mem %s | undo %s | volume %s %s3 | area %s %s2 | Euler %lld | shells %zu",
         s.frameMs, formatCount(s.triangles).c_str(), formatCount(s.activeVoxels).c_str(),

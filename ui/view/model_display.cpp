@@ -2,10 +2,12 @@
 
 #include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
+#include "ui/view/placement_matrix.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/twin_builder.h"
 
 #include <vtkActor.h>
+#include <vtkMatrix4x4.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkRenderer.h>
@@ -21,12 +23,14 @@ namespace {
 
 constexpr double kCoarseCellVoxels = 3.0;
 
-vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look)
+/// An actor in the look, placed by `placement` (shared: changing it moves every actor).
+vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look, vtkMatrix4x4* placement)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
     mapper->ScalarVisibilityOff();
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
+    actor->SetUserMatrix(placement);
     look.apply(actor);
     return actor;
 }
@@ -90,7 +94,15 @@ struct ModelDisplay::Preview {
 
 ModelDisplay::ModelDisplay(vtkRenderer* renderer, const SurfaceLook& look, int chunkBlocks)
     : mRenderer(renderer), mLook(look), mFixedChunkBlocks(chunkBlocks), mTwins(std::make_unique<TwinBuilder>())
-{}
+{
+    mPlacement = vtkSmartPointer<vtkMatrix4x4>::New();
+}
+
+void ModelDisplay::setPlacement(const openvdb::Mat4d& placement)
+{
+    setPlacementMatrix(*mPlacement, placement);
+    mPlacement->Modified();  // the actors sharing it see its time
+}
 
 ModelDisplay::~ModelDisplay() { clear(); }
 
@@ -153,7 +165,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
 {
     const BlockMesh mesh = joined(mesher, origin);
     if (!chunk.full) {
-        chunk.full = newActor(mLook);
+        chunk.full = newActor(mLook, mPlacement);
         chunk.full->SetVisibility(!mHidden);
         mRenderer->AddActor(chunk.full);
     }
@@ -179,7 +191,7 @@ void ModelDisplay::collectTwins()
         if (it == mChunks.end() || it->second.generation != twin.generation) continue;  // changed since
         Chunk& chunk = it->second;
         if (!chunk.coarse) {
-            chunk.coarse = newActor(mLook);
+            chunk.coarse = newActor(mLook, mPlacement);
             chunk.coarse->SetVisibility(false);
             mRenderer->AddActor(chunk.coarse);
         }
@@ -304,7 +316,7 @@ void ModelDisplay::showPreview(const TriangleMesh& preview, const openvdb::math:
     mPreview->mesh.normals.assign(preview.normals.begin(), preview.normals.end());
     mPreview->mesh.triangles.assign(preview.triangles.begin(), preview.triangles.end());
     mPreview->xform = xform.copy();
-    mPreview->actor = newActor(mLook);
+    mPreview->actor = newActor(mLook, mPlacement);
     mPreview->actor->SetVisibility(!mHidden);
     setMesh(mPreview->actor, polyDataOf(mPreview->mesh));
     mPreview->replaces = mSourceId;
@@ -337,7 +349,7 @@ void ModelDisplay::cutPreview()
     std::vector<std::uint32_t> scratch(whole.positions.size(), kUnnumbered);
     for (auto& [chunk, triangles] : parts) {
         const BlockMesh part = subMesh(whole, triangles, scratch);
-        chunk->coarse = newActor(mLook);
+        chunk->coarse = newActor(mLook, mPlacement);
         mRenderer->AddActor(chunk->coarse);
         setMesh(chunk->coarse, polyDataOf(part));
         chunk->coarseTriangles = part.triangles.size();

@@ -29,6 +29,7 @@
 #include <memory>
 
 class vtkActor;
+class vtkMatrix4x4;
 class vtkRenderer;
 
 namespace sculpt::ui {
@@ -65,6 +66,8 @@ public:
     void setFillBudget(std::size_t triangles) { mFillBudget = triangles; }
     /// Hides every actor (another view of the model, the scales, is shown instead).
     void setHidden(bool hidden);
+    /// Where the model is drawn: world from its field's world (its piece's placement).
+    void setPlacement(const openvdb::Mat4d& placement);
 
     /// Of the last sync: blocks changed and dropped, chunks re-uploaded, bytes handed to VTK.
     std::size_t lastUploads() const { return mLastUploads; }
@@ -107,6 +110,7 @@ private:
 
     vtkRenderer* mRenderer;
     const SurfaceLook& mLook;
+    vtkSmartPointer<vtkMatrix4x4> mPlacement;  // every actor's
     const int mFixedChunkBlocks;
     std::map<openvdb::Coord, Chunk> mChunks;
     int mBlockVoxels = IncrementalMesher::kDefaultBlockVoxels;

@@ -3,6 +3,7 @@
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
+#include "ui/view/placement_matrix.h"
 
 #include <vtkActor.h>
 #include <vtkMatrix4x4.h>
@@ -25,9 +26,16 @@ void ShapeDisplay::set(const FieldImage* shape)
     if (mActor) mRenderer->RemoveActor(mActor);
     mActor = nullptr;
     mTriangles = 0;
+    mBox = openvdb::BBoxd();
     if (!shape) return;
     IncrementalMesher mesher;
     mesher.rebuild(*shape);
+    set(mesher, shape->voxelSize());
+}
+
+void ShapeDisplay::set(const IncrementalMesher& mesher, double voxelSize)
+{
+    if (mActor) mRenderer->RemoveActor(mActor);
     // Welded first: blocks clustered apart would leave seams that translucency shows.
     const TriangleMesh welded = mesher.weldedMesh();
     BlockMesh whole;
@@ -35,8 +43,10 @@ void ShapeDisplay::set(const FieldImage* shape)
     whole.normals.assign(welded.normals.begin(), welded.normals.end());
     whole.triangles.assign(welded.triangles.begin(), welded.triangles.end());
     const BlockMesh shown =
-        mStyle.clusterVoxels > 0.0 ? clusterBlockMesh(whole, mStyle.clusterVoxels * shape->voxelSize()) : whole;
+        mStyle.clusterVoxels > 0.0 ? clusterBlockMesh(whole, mStyle.clusterVoxels * voxelSize) : whole;
     mTriangles = shown.triangles.size();
+    mBox = openvdb::BBoxd();
+    for (const auto& p : shown.positions) mBox.expand(openvdb::Vec3d(p[0], p[1], p[2]));
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(polyDataOf(shown));
     mapper->ScalarVisibilityOff();
@@ -57,10 +67,29 @@ void ShapeDisplay::setPlacement(const openvdb::Mat4d& placement)
 {
     mPlacement = placement;
     if (!mActor) return;
-    vtkNew<vtkMatrix4x4> matrix;  // VTK's are for column vectors: the transpose
-    for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) matrix->SetElement(i, j, placement(j, i));
+    vtkNew<vtkMatrix4x4> matrix;
+    setPlacementMatrix(*matrix, placement);
     mActor->SetUserMatrix(matrix);
+}
+
+openvdb::BBoxd ShapeDisplay::worldBox() const
+{
+    openvdb::BBoxd world;
+    if (!mActor || mBox.empty()) return world;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d p((corner & 1 ? mBox.max() : mBox.min()).x(), (corner & 2 ? mBox.max() : mBox.min()).y(),
+                               (corner & 4 ? mBox.max() : mBox.min()).z());
+        world.expand(mPlacement.transform(p));
+    }
+    return world;
+}
+
+void ShapeDisplay::setColour(double red, double green, double blue)
+{
+    mStyle.red = red;
+    mStyle.green = green;
+    mStyle.blue = blue;
+    if (mActor) mActor->GetProperty()->SetColor(red, green, blue);
 }
 
 void ShapeDisplay::setShown(bool shown)

@@ -12,6 +12,10 @@
 #include <vtkSmartPointer.h>
 
 class vtkActor;
+
+namespace sculpt {
+class IncrementalMesher;
+}
 class vtkRenderer;
 
 namespace sculpt::ui {
@@ -32,11 +36,17 @@ public:
 
     /// Meshes `shape` and shows it (if shown); null removes it.
     void set(const FieldImage* shape);
+    /// Shows what `mesher` holds now (a piece's live mesh), in a field of `voxelSize`.
+    void set(const IncrementalMesher& mesher, double voxelSize);
+    /// The look's colour.
+    void setColour(double red, double green, double blue);
     void setShown(bool shown);
     /// Where the shape is drawn: world from its field's world (a piece's placement, row vectors).
     void setPlacement(const openvdb::Mat4d& placement);
     bool shown() const { return mShown; }
     std::size_t triangleCount() const { return mTriangles; }
+    /// Where the shape is drawn, world (its placement applied); empty if nothing is set.
+    openvdb::BBoxd worldBox() const;
 
 private:
     vtkRenderer* mRenderer;
@@ -44,6 +54,7 @@ private:
     vtkSmartPointer<vtkActor> mActor;
     bool mShown = true;
     std::size_t mTriangles = 0;
+    openvdb::BBoxd mBox;  // the mesh's, in its field's world
     openvdb::Mat4d mPlacement = openvdb::Mat4d::identity();
 };
 

@@ -11,6 +11,13 @@
 
 namespace sculpt::ui {
 
+Ray transformedRay(const Ray& ray, const openvdb::Mat4d& m)
+{
+    const openvdb::Vec3d o = m.transform(openvdb::Vec3d(ray.origin.x, ray.origin.y, ray.origin.z));
+    const openvdb::Vec3d d = m.transform3x3(openvdb::Vec3d(ray.direction.x, ray.direction.y, ray.direction.z)).unit();
+    return {{o.x(), o.y(), o.z()}, {d.x(), d.y(), d.z()}};
+}
+
 namespace {
 
 /// The window's context is GLFW's, always current on the UI thread: tell VTK so when it asks.

@@ -4,6 +4,7 @@
 ///        camera, and the maths between window pixels and world space (GLM).
 
 #include <glm/glm.hpp>
+#include <openvdb/Types.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
@@ -17,6 +18,10 @@ struct Ray {
     glm::dvec3 origin{0.0};
     glm::dvec3 direction{0.0, 0.0, -1.0};  ///< unit
 };
+
+/// `ray` carried by `m` (row vectors, as OpenVDB's placements), its direction kept unit: a world
+/// ray in a piece's own world, with the inverse of its placement.
+Ray transformedRay(const Ray& ray, const openvdb::Mat4d& m);
 
 class Viewport {
 public:

@@ -341,9 +341,9 @@ openvdb::Mat4d turnedAndRaised()
 /// Three pieces, each with its own look (the second moved) and the third its own voxel size.
 std::vector<Piece> threePieces()
 {
-    return {{"head", makeSphere(6.0, 0.5), {0.9f, 0.6f, 0.5f}, true},
-            {"hat", makeBox(3.0, 0.5), {0.2f, 0.2f, 0.8f}, false, turnedAndRaised()},
-            {"eye", makeSphere(1.5, 0.25), {1.0f, 1.0f, 1.0f}, true}};
+    return {{{"head", {0.9f, 0.6f, 0.5f}, true}, makeSphere(6.0, 0.5)},
+            {{"hat", {0.2f, 0.2f, 0.8f}, false, turnedAndRaised()}, makeBox(3.0, 0.5)},
+            {{"eye", {1.0f, 1.0f, 1.0f}, true}, makeSphere(1.5, 0.25)}};
 }
 
 void expectSamePieces(const std::vector<Piece>& read, const std::vector<Piece>& written)

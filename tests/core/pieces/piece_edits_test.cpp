@@ -15,7 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 Piece sphereAt(const std::string& name, double radius, double voxelSize, const openvdb::Vec3d& centre)
 {
-    Piece piece{name, makeSphere(radius, voxelSize)};
+    Piece piece{{name}, makeSphere(radius, voxelSize)};
     piece.placement.setTranslation(centre);
     return piece;
 }

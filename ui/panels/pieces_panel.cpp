@@ -1,0 +1,117 @@
+#include "ui/app/sculpt_app.h"
+#include "ui/panels/panels.h"
+
+#include <imgui.h>
+
+namespace sculpt::ui {
+
+namespace {
+
+constexpr std::size_t kSwatches = 8;
+
+ImVec4 colourOf(const openvdb::Vec3f& c) { return ImVec4(c[0], c[1], c[2], 1.f); }
+
+/// One row per piece: its colour, an eye (shown or hidden) and its name, selected if sculpted.
+void pieceList(SculptApp& app)
+{
+    const Document& doc = app.document();
+    for (std::size_t i = 0; i < doc.pieces().size(); ++i) {
+        const PieceLook& look = doc.pieces()[i].look;
+        ImGui::PushID(int(i));
+        ImGui::ColorButton("##colour", colourOf(look.colour), ImGuiColorEditFlags_NoTooltip, ImVec2(14, 14));
+        ImGui::SameLine();
+        bool visible = look.visible;
+        if (ImGui::Checkbox("##shown", &visible)) {
+            std::vector<PieceLook> looks = app.pieceLooks();
+            looks[i].visible = visible;
+            app.changeLooks(std::move(looks), (visible ? "show '" : "hide '") + look.name + "'");
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("shown (hidden pieces are neither drawn nor in the way)");
+        ImGui::SameLine();
+        if (ImGui::Selectable(look.name.c_str(), i == doc.activePiece())) app.selectPiece(i);
+        ImGui::PopID();
+    }
+}
+
+/// The sculpted piece's name, colour and edits.
+void activePiece(SculptApp& app, Dialogs& d)
+{
+    const Document& doc = app.document();
+    const std::size_t index = doc.activePiece();
+    const PieceLook& look = doc.pieces()[index].look;
+    if (d.pieceNameOf != index || d.pieceNameSeen != look.name) {  // another piece, or renamed (undo)
+        d.pieceName = look.name;
+        d.pieceNameOf = index;
+        d.pieceNameSeen = look.name;
+    }
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, "%s", d.pieceName.c_str());
+    ImGui::SetNextItemWidth(150);
+    if (ImGui::InputText("name", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue) && buffer[0] &&
+        look.name != buffer) {
+        if (doc.freeName(buffer) != buffer) {
+            app.dialogs().notice = std::string("a piece is named '") + buffer + "' already";
+        } else {
+            std::vector<PieceLook> looks = app.pieceLooks();
+            looks[index].name = buffer;
+            app.changeLooks(std::move(looks), "rename '" + look.name + "' to '" + buffer + "'");
+        }
+    }
+    d.pieceName = buffer;
+    for (std::size_t k = 0; k < kSwatches; ++k) {
+        ImGui::PushID(int(k));
+        if (ImGui::ColorButton("##swatch", colourOf(paletteColour(k)), 0, ImVec2(20, 20))) {
+            std::vector<PieceLook> looks = app.pieceLooks();
+            looks[index].colour = paletteColour(k);
+            app.changeLooks(std::move(looks), "colour '" + look.name + "'");
+        }
+        ImGui::PopID();
+        if (k + 1 < kSwatches) ImGui::SameLine();
+    }
+    if (ImGui::Button("Solo")) app.soloPiece(index);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("show this piece alone; again: show them all");
+    ImGui::SameLine();
+    if (ImGui::Button("Duplicate")) app.duplicatePiece(index);
+    ImGui::SameLine();
+    if (ImGui::Button("Delete")) app.deletePiece(index);
+    if (ImGui::Button("Split shells")) app.splitPiece(index);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("a piece per closed shell of this one");
+    if (doc.pieces().size() > 1) {
+        std::size_t& with = d.mergeWith;
+        if (with >= doc.pieces().size() || with == index) with = index == 0 ? 1 : 0;
+        ImGui::SetNextItemWidth(110);
+        if (ImGui::BeginCombo("##with", doc.pieces()[with].look.name.c_str())) {
+            for (std::size_t i = 0; i < doc.pieces().size(); ++i)
+                if (i != index && ImGui::Selectable(doc.pieces()[i].look.name.c_str(), i == with)) with = i;
+            ImGui::EndCombo();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Merge")) app.mergePieces(index, with);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("one piece of the two (CSG union)");
+    }
+}
+
+}  // namespace
+
+void drawPiecesPanel(SculptApp& app)
+{
+    if (app.document().pieces().size() < 2 && !app.piecesMode()) return;
+    const ImVec2 size(236, 0);
+    ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - size.x - 8, 296), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(size, ImGuiCond_Always);
+    ImGui::Begin("Pieces", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    pieceList(app);
+    ImGui::Separator();
+    activePiece(app, app.dialogs());
+    ImGui::Separator();
+    bool modeOn = app.piecesMode();
+    if (ImGui::Checkbox("pieces mode", &modeOn)) app.execute(Command::PiecesMode);
+    commandTooltip(app, Command::PiecesMode);
+    ImGui::SameLine();
+    ImGui::Checkbox("push", &app.pushPieces());
+    commandTooltip(app, Command::TogglePush);
+    if (app.piecesMode()) ImGui::TextDisabled("click: pick; G move, R rotate, S scale");
+    ImGui::End();
+}
+
+}  // namespace sculpt::ui
