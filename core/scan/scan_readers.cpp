@@ -10,6 +10,7 @@
 #include "core/scan/dicom_series.h"
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
+#include "core/scan/inrimage_file.h"
 #include "core/scan/scan_transfer.h"
 #include "core/scan/vtk_image_scan.h"
 
@@ -103,7 +104,7 @@ constexpr EnumNames<int, 8> kSampleTypes{{{VTK_UNSIGNED_CHAR, "uint8"},
 /// VTK's scalar type for a raw layout's sample type name.
 int vtkTypeOf(const std::string& type) { return enumFromName(kSampleTypes, type, "sample type"); }
 
-enum class ScanFormat { Dicom, Nifti, Nrrd, MetaImage };
+enum class ScanFormat { Dicom, Nifti, Nrrd, MetaImage, Inrimage };
 
 ScanFormat formatOf(const fs::path& path)
 {
@@ -112,11 +113,12 @@ ScanFormat formatOf(const fs::path& path)
     if (ext == ".nii" || ext == ".nii.gz") return ScanFormat::Nifti;
     if (ext == ".nrrd" || ext == ".nhdr") return ScanFormat::Nrrd;
     if (ext == ".mha" || ext == ".mhd") return ScanFormat::MetaImage;
-    throw InputError(
-        path.string() + ": unknown scan format '" + ext +
-            "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, a DICOM file or a DICOM directory); raw samples "
-            "need their layout given",
-        Remedy::DescribeRawLayout);
+    if (ext == ".inr" || ext == ".inr.gz") return ScanFormat::Inrimage;
+    throw InputError(path.string() + ": unknown scan format '" + ext +
+                         "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, .inr, .inr.gz, a DICOM file or a DICOM "
+                         "directory); raw samples "
+                         "need their layout given",
+                     Remedy::DescribeRawLayout);
 }
 
 /// Our checks of the header against the file, in this process: they are bounded, and so a
@@ -128,6 +130,7 @@ void checkHeader(const fs::path& path, ScanFormat format)
     case ScanFormat::Nifti: return checkNiftiHeader(path);
     case ScanFormat::Nrrd: return checkNrrdHeader(path);
     case ScanFormat::MetaImage: return checkMetaImageHeader(path);
+    case ScanFormat::Inrimage: return checkInrimageHeader(path);
     }
 }
 
@@ -139,6 +142,7 @@ ScanVolume decodeScan(const fs::path& path, ScanFormat format)
     case ScanFormat::Nifti: return readNifti(path);
     case ScanFormat::Nrrd: return readWithDirection<vtkNrrdReader>(path);
     case ScanFormat::MetaImage: return readWithDirection<vtkMetaImageReader>(path);
+    case ScanFormat::Inrimage: return readInrimage(path);
     }
     throw std::logic_error("unknown scan format");
 }
@@ -151,6 +155,7 @@ std::string readerOf(ScanFormat format)
     case ScanFormat::Nifti: return "the NIfTI reader";
     case ScanFormat::Nrrd: return "the NRRD reader";
     case ScanFormat::MetaImage: return "the MetaImage reader";
+    case ScanFormat::Inrimage: return "the INRIMAGE reader";
     }
     return "the scan reader";
 }
@@ -239,7 +244,8 @@ ScanVolume decodeRawScan(const fs::path& path, const RawLayout& layout)
 
 bool isScanPath(const fs::path& path)
 {
-    static const std::array<const char*, 6> known{".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd"};
+    static const std::array<const char*, 8> known{".nii", ".nii.gz", ".nrrd", ".nhdr",
+                                                  ".mha", ".mhd",    ".inr",  ".inr.gz"};
     const std::string ext = lowerExtension(path);
     return fs::is_directory(path) || isDicomFile(path) || std::find(known.begin(), known.end(), ext) != known.end() ||
            hasDicomMarker(path);

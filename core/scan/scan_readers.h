@@ -3,7 +3,7 @@
 /// @brief Reading a scan from its file(s) into a ScanVolume.
 ///
 /// Readers are VTK's for NIfTI (.nii, .nii.gz, with its sform or else qform), NRRD (.nrrd, .nhdr)
-/// and MetaImage (.mha, .mhd), GDCM's for DICOM (a directory of slices, one slice of a series,
+/// and MetaImage (.mha, .mhd), ours for INRIMAGE (.inr, .inr.gz: inrimage_file.h), GDCM's for DICOM (a directory of slices, one slice of a series,
 /// or a multi-frame file: dicom_series.h), and ours for raw samples with a layout given by the
 /// user. Every reader checks what the header claims against
 /// sane limits and the memory available before the samples are allocated (header_checks.h,
@@ -28,7 +28,8 @@ struct RawLayout {
     std::size_t headerBytes = 0;  ///< bytes to skip at the start of the file
 };
 
-/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd; .dcm, .dicom, .ima)
+/// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, .inr, .inr.gz; .dcm,
+/// .dicom, .ima)
 /// or, for a directory, as a DICOM series.
 /// @throws InputError naming the file and the problem: unknown format, unreadable, truncated
 ///         or corrupt, absurd dimensions (refused before allocating), a DICOM directory with

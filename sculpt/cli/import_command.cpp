@@ -122,11 +122,11 @@ void addImportCommand(CLI::App& app)
     auto o = std::make_shared<ImportCommandOptions>();
     CLI::App* cmd = app.add_subcommand(
         "import", "Turn a medical scan or a mesh into an editable document.\n"
-                  "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), DICOM (a\n"
-                  "directory of slices, one slice file to pick its series, or a multi-frame file;\n"
-                  "compressed too), or raw samples (--raw-dims ...). The surface is where\n"
-                  "the samples cross the iso-value (inside: above it); spacing, origin and orientation\n"
-                  "are kept, so the surface sits where the scan says.\n"
+                  "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), INRIMAGE\n"
+                  "(.inr, .inr.gz), DICOM (a directory of slices, one slice file to pick its series,\n"
+                  "or a multi-frame file; compressed too), or raw samples (--raw-dims ...). The\n"
+                  "surface is where the samples cross the iso-value (inside: above it); spacing,\n"
+                  "origin and orientation are kept, so the surface sits where the scan says.\n"
                   "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
     cmd->add_option("input", o->input, "the scan file, DICOM directory or slice, or mesh file")->required();
     o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");

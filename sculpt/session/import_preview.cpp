@@ -20,6 +20,7 @@ ImportPreview::ImportPreview(const std::filesystem::path& path) : mPath(path)
     mScan = readScan(path);
     mTwoValued = mScan->twoValued();
     mLabels = mScan->labels();
+    mLabelMap = mLabels.size() > 2 && mScan->sameNeighbourFraction() >= kLeastLabelMapAgreement;
     mDefaultVoxelSize = nativeVoxelSize(*mScan);
     mPreviewVoxelSize = std::max(mDefaultVoxelSize, mScan->worldExtent() / kPreviewVoxelsAcross);
 }

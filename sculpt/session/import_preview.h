@@ -36,6 +36,9 @@ public:
     bool twoValued() const { return mTwoValued; }
     /// Scans only: a label map's labels (ScanVolume::labels), empty for intensities.
     const std::vector<int>& labels() const { return mLabels; }
+    /// Scans only: a segmentation of two labels or more besides the background (not an
+    /// intensity scan of few values: kLeastLabelMapAgreement).
+    bool labelMap() const { return mLabelMap; }
     /// Meshes only: its triangles and open or non-manifold edges.
     const MeshImportReport& meshReport() const { return mMeshReport; }
     /// What importShape uses without a voxel size: the scan's smallest spacing, or the mesh's
@@ -66,6 +69,7 @@ private:
     double mDefaultVoxelSize = 0.0, mPreviewVoxelSize = 0.0;
     bool mTwoValued = false;
     std::vector<int> mLabels;
+    bool mLabelMap = false;
     // The scan as the last options prepared it.
     struct Prepared {
         std::optional<openvdb::CoordBBox> crop;

@@ -204,9 +204,6 @@ FieldImage labelSurface(const ScanVolume& scan, const openvdb::CoordBBox& box, c
     return field;
 }
 
-/// Below this sameNeighbourFraction() a scan is taken for intensities (ScanVolume's figures).
-constexpr double kLeastLabelMapAgreement = 0.5;
-
 /// A label's piece: named and coloured as the files beside the scan say, else "label N" in the
 /// palette's colours from its second (the first is the clay's grey); a name taken already gets
 /// the label's number.

@@ -60,6 +60,9 @@ FieldImage importShape(const std::filesystem::path& input, const ImportOptions& 
 
 /// The label every segmentation tool gives the samples outside all structures.
 constexpr int kBackgroundLabel = 0;
+/// Below this ScanVolume::sameNeighbourFraction() a scan of few integer values is taken for
+/// intensities, not labels (ScanVolume's figures).
+constexpr double kLeastLabelMapAgreement = 0.5;
 
 /// Imports a label map (a segmentation: integer samples, one value per structure) as one piece
 /// per label but the background, named "label N": each label's surface as `label` imports it,

@@ -7,9 +7,11 @@
 //                  B = 1: overlap() through the local boxes, B = 0: every vertex of each sampled in
 //                  the other's field (the brute force; both parallel). Counters: vertices sampled,
 //                  vertices found inside.
-// BM_LabelImport/A : mricron-data's JHU white-matter atlas at 1 mm (182 x 218 x 182, 48 labels):
-//                  A = 1 every label as a piece (importLabelPieces), A = 0 one label
-//                  (importShape --label 3, read and converted from the whole map).
+// BM_LabelImport/M/A : M = 0 mricron-data's JHU white-matter atlas at 1 mm (182 x 218 x 182, 48
+//                  labels), M = 1 CGAL's liver segmentation (liver.inr.gz, 438 x 353 x 165, 4
+//                  labels): A = 1 every label as a piece (importLabelPieces), A = 0 one label (the
+//                  atlas's 3, the liver's 255: importShape --label, read and converted from the
+//                  whole map).
 
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
@@ -102,19 +104,26 @@ BENCHMARK(BM_Contact)
 
 void BM_LabelImport(benchmark::State& state)
 {
-    const std::filesystem::path atlas = "/usr/share/mricron/templates/JHU-WhiteMatter-labels-1mm.nii.gz";
-    if (!std::filesystem::exists(atlas)) return state.SkipWithError("install mricron-data");
+    const bool liver = state.range(0) == 1;
+    const std::filesystem::path map = liver ? test::cgalData("images/liver.inr.gz")
+                                            : "/usr/share/mricron/templates/JHU-WhiteMatter-labels-1mm.nii.gz";
+    if (map.empty() || !std::filesystem::exists(map)) return state.SkipWithError("install mricron-data, libcgal-demo");
     for (auto _ : state) {
         ImportReport report;
-        if (state.range(0) == 1) {
-            benchmark::DoNotOptimize(importLabelPieces(atlas, {}, report).size());
+        if (state.range(1) == 1) {
+            benchmark::DoNotOptimize(importLabelPieces(map, {}, report).size());
         } else {
             ImportOptions one;
-            one.label = 3;
-            benchmark::DoNotOptimize(importShape(atlas, one, report).voxelSize());
+            one.label = liver ? 255 : 3;
+            benchmark::DoNotOptimize(importShape(map, one, report).voxelSize());
         }
     }
 }
-BENCHMARK(BM_LabelImport)->Arg(0)->Arg(1)->ArgName("all")->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_LabelImport)
+    ->ArgsProduct({{0, 1}, {0, 1}})
+    ->ArgNames({"liver", "all"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 }  // namespace

@@ -21,10 +21,10 @@ const TempDir& extractionDir()
 
 }  // namespace
 
-fs::path cgalMesh(const std::string& name)
+fs::path cgalData(const std::string& name)
 {
     if (!fs::exists(kArchive)) return {};
-    const fs::path member = fs::path("data") / "meshes" / name;
+    const fs::path member = fs::path("data") / name;
     const fs::path extracted = extractionDir() / member.string();
     if (!fs::exists(extracted)) {
         const std::string command = std::string("tar -xzf ") + kArchive + " -C '" + extractionDir().path().string() +

@@ -8,8 +8,11 @@
 
 namespace sculpt::test {
 
-/// The path of CGAL's data/meshes/`name` (e.g. "camel.off"), extracted into a directory removed
-/// at exit; empty if the archive is missing (install libcgal-demo).
-std::filesystem::path cgalMesh(const std::string& name);
+/// The path of CGAL's data/`member` (e.g. "images/liver.inr.gz"), extracted into a directory
+/// removed at exit; empty if the archive is missing (install libcgal-demo).
+std::filesystem::path cgalData(const std::string& member);
+
+/// cgalData of data/meshes/`name` (e.g. "camel.off").
+inline std::filesystem::path cgalMesh(const std::string& name) { return cgalData("meshes/" + name); }
 
 }  // namespace sculpt::test

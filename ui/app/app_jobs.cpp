@@ -41,6 +41,7 @@ ImportDraft readForImport(const fs::path& path)
 std::string SculptApp::waitReason() const
 {
     if (mJobs.running()) return "wait for " + mJobs.job()->label() + " to finish, or press Esc to cancel it";
+    if (mGesture) return "the piece is moving: a click or Enter keeps it, Esc drops it";
     return mMode ? mMode->waitNotice() : std::string();
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/base/errors.h"
 #include "core/pieces/contact.h"
+#include "core/pieces/lattice_transfer.h"
 #include "core/pieces/piece_edits.h"
 #include "core/pieces/push.h"
 #include "ui/app/sculpt_app.h"
@@ -65,7 +66,8 @@ void SculptApp::soloPiece(std::size_t index)
     const bool soloAlready = std::all_of(
         looks.begin(), looks.end(), [&](const PieceLook& look) { return look.visible == (&look == &looks[index]); });
     for (PieceLook& look : looks) look.visible = soloAlready || &look == &looks[index];
-    changeLooks(std::move(looks), (soloAlready ? "show all, was solo '" : "solo '") + looks[index].name + "'");
+    const std::string label = (soloAlready ? "show all, was solo '" : "solo '") + looks[index].name + "'";
+    changeLooks(std::move(looks), label);
 }
 
 void SculptApp::deletePiece(std::size_t index)
@@ -123,12 +125,33 @@ void SculptApp::splitPiece(std::size_t index)
     startPieceEdit("split '" + piece.name + "'", {index}, [piece]() { return sculpt::splitPiece(piece); });
 }
 
+void SculptApp::applyPlacement(std::size_t index)
+{
+    if (busy()) return;
+    const Piece piece = asPiece(mDocument->pieces()[index]);
+    if (piece.placement == openvdb::Mat4d::identity()) return;
+    const std::string label = "apply the placement of '" + piece.name + "'";
+    startJob<FieldImage>(
+        label,
+        [piece](const Progress&) {
+            // Resampled into its own lattice where it stands now: its placement becomes the identity.
+            return onLatticeOf(piece.field, piece.placement, piece.field, openvdb::Mat4d::identity(),
+                               piece.field.halfWidthVoxels());
+        },
+        [this, index, label](FieldImage placed) {
+            std::vector<std::pair<std::size_t, FieldImage>> resampled;
+            resampled.emplace_back(index, std::move(placed));
+            mDocument->movePiece(index, openvdb::Mat4d::identity(), std::move(resampled), label);
+            mDialogs.notice = label + ": its voxels resampled where it stands (Ctrl+Z undoes it)";
+        });
+}
+
 // ---------------------------------------------------------------------------------------------
 // G, R, S
 
 void SculptApp::beginPieceGesture(PieceGesture::Kind kind)
 {
-    if (busy() || mDrag != Drag::None) return;
+    if (mDrag != Drag::None || busy()) return;
     const DocumentPiece& moved = mDocument->pieces()[mDocument->activePiece()];
     const glm::dvec3 view = glm::normalize(mCamera.focalPoint() - mCamera.eye());
     mGesture.emplace(kind, moved.look.placement, centreOf(moved), mViewport, view, mMouseX, mMouseY);

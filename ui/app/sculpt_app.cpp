@@ -223,7 +223,8 @@ void SculptApp::refreshStatus(bool topology)
         mMeasuredVersion = session.mesher()->version();
     }
     mStatus.blocks = mDisplay.blockCount();
-    mStatus.undoBytes = session.history().memoryBytes();
+    mStatus.undoBytes = 0;  // every piece's: the history spans them
+    for (const DocumentPiece& piece : mDocument->pieces()) mStatus.undoBytes += piece.session->history().memoryBytes();
     if (mFramesDrawn % 30 == 0) mStatus.memoryBytes = residentBytes();
     mStatus.displayBytes = mDisplay.heldBytes();
     if (topology && mTopologyVersion != session.mesher()->version()) {

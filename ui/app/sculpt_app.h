@@ -177,6 +177,8 @@ public:
     void duplicatePiece(std::size_t index);
     void mergePieces(std::size_t a, std::size_t b);
     void splitPiece(std::size_t index);
+    /// Resamples the piece where its placement puts it, as a job; its placement becomes the identity.
+    void applyPlacement(std::size_t index);
     /// Pieces mode (Tab): a click picks the piece to sculpt, G, R and S move it.
     bool piecesMode() const { return mPiecesMode; }
     bool& pushPieces() { return mPushPieces; }

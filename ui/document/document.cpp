@@ -226,14 +226,17 @@ void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vect
     if (mPieces.size() - replaced.size() + added.size() == 0) throw InputError("a document keeps at least one piece");
     StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
     const std::size_t at = replaced.empty() ? mPieces.size() : replaced.front();
-    for (auto i = replaced.rbegin(); i != replaced.rend(); ++i) mPieces.erase(mPieces.begin() + std::ptrdiff_t(*i));
-    const std::size_t addedCount = added.size();
-    mPieces.insert(mPieces.begin() + std::ptrdiff_t(std::min(at, mPieces.size())),
-                   std::make_move_iterator(added.begin()), std::make_move_iterator(added.end()));
-    mActive = std::min(addedCount > 0 ? at : (at > 0 ? at - 1 : 0), mPieces.size() - 1);
+    const bool activeGoes = std::find(replaced.begin(), replaced.end(), mActive) != replaced.end();
+    std::vector<DocumentPiece> pieces = mPieces;
+    for (auto i = replaced.rbegin(); i != replaced.rend(); ++i) pieces.erase(pieces.begin() + std::ptrdiff_t(*i));
+    const std::shared_ptr<SculptSession> first = !added.empty() ? added.front().session
+                                                 : at > 0       ? mPieces[at - 1].session
+                                                                : pieces.front().session;
+    pieces.insert(pieces.begin() + std::ptrdiff_t(std::min(at, pieces.size())), std::make_move_iterator(added.begin()),
+                  std::make_move_iterator(added.end()));
+    restorePieces(pieces, activeGoes || !added.empty() ? first : nullptr);
     scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
     ++mRevision;
-    ++mPiecesRevision;
     recordStep(label, std::move(scope));
     if (mUnscripted.empty()) mUnscripted = label;
 }

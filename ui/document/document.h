@@ -101,8 +101,8 @@ public:
     void movePiece(std::size_t index, const openvdb::Mat4d& placement,
                    std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label);
     /// The pieces at `replaced` (ascending) give way to `added`, inserted where the first of them
-    /// was (at the end if none): a duplicate, a merge, a split, a delete. The first added (else
-    /// the piece before) becomes active.
+    /// was (at the end if none): a duplicate, a merge, a split, a delete. The first added becomes
+    /// active; else the active piece stays, or if it went, the piece before it.
     void replacePieces(const std::vector<std::size_t>& replaced, std::vector<DocumentPiece> added,
                        const std::string& label);
     /// A name for a new piece, not taken yet: `base`, else "base 2", "base 3"...

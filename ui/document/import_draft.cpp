@@ -19,7 +19,7 @@ bool sameOptions(const ImportOptions& a, const ImportOptions& b)
 ImportDraft::ImportDraft(std::shared_ptr<ImportPreview> file, FieldImage first, double firstMs, ImportOptions defaults)
     : options(defaults), mFile(std::move(file)), mPreview(std::move(first)), mPreviewed(defaults), mPreviewMs(firstMs)
 {
-    labelPieces = mFile->isScan() && mFile->labels().size() > 2;  // a segmentation: its structures apart
+    labelPieces = mFile->isScan() && mFile->labelMap();  // a segmentation: its structures apart
 }
 
 double ImportDraft::iso()

@@ -41,7 +41,8 @@ bool answerButton(SculptApp& app, Command command, const char* label = nullptr)
 FileKinds kindsOf(Dialogs::Prompt prompt)
 {
     using P = Dialogs::Prompt;
-    const std::vector<std::string> scans = {".nii", ".nii.gz", ".nrrd", ".nhdr", ".mha", ".mhd", ".dcm"};
+    const std::vector<std::string> scans = {".nii", ".nii.gz", ".nrrd",   ".nhdr", ".mha",
+                                            ".mhd", ".inr",    ".inr.gz", ".dcm"};
     const std::vector<std::string> meshes = {".obj", ".ply", ".stl", ".off"};
     const auto join = [](std::vector<std::string> a, const std::vector<std::string>& b) {
         a.insert(a.end(), b.begin(), b.end());

@@ -76,6 +76,13 @@ void activePiece(SculptApp& app, Dialogs& d)
     if (ImGui::Button("Delete")) app.deletePiece(index);
     if (ImGui::Button("Split shells")) app.splitPiece(index);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a piece per closed shell of this one");
+    ImGui::SameLine();
+    const bool placed = look.placement != openvdb::Mat4d::identity();
+    if (!placed) ImGui::BeginDisabled();
+    if (ImGui::Button("Apply move")) app.applyPlacement(index);
+    if (!placed) ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("resample the voxels where the piece stands (a job); a move alone never touches them");
     if (doc.pieces().size() > 1) {
         std::size_t& with = d.mergeWith;
         if (with >= doc.pieces().size() || with == index) with = index == 0 ? 1 : 0;
@@ -110,7 +117,7 @@ void drawPiecesPanel(SculptApp& app)
     ImGui::SameLine();
     ImGui::Checkbox("push", &app.pushPieces());
     commandTooltip(app, Command::TogglePush);
-    if (app.piecesMode()) ImGui::TextDisabled("click: pick; G move, R rotate, S scale");
+    if (app.piecesMode()) ImGui::TextDisabled("click picks; G/R/S move, turn, scale");
     ImGui::End();
 }
 

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <zlib.h>
 
 namespace sculpt {
 namespace {
@@ -226,4 +227,75 @@ TEST(HeaderChecks, NrrdPlacementFieldsMustBeFinite)
 }
 
 }  // namespace
+}  // namespace sculpt
+
+namespace sculpt {
+namespace {
+
+/// An INRIMAGE-4 file of int16 samples i + 10 j + 100 k, `cpu`'s byte order, header `extra`
+/// lines added, gzipped if `gzip`; `keep` of its sample bytes (all: -1).
+void writeInrimage(const fs::path& path, const std::string& cpu, bool gzip, const std::string& extra = "",
+                   long keep = -1)
+{
+    std::string header = "#INRIMAGE-4#{\nXDIM=5\nYDIM=4\nZDIM=3\nVDIM=1\nTYPE=signed fixed\nPIXSIZE=16 bits\n"
+                         "SCALE=2**0\nCPU=" +
+                         cpu + "\nVX=0.5\nVY=0.25\nVZ=2\n" + extra;
+    header.resize(256 - 4, '\n');
+    header += "##}\n";
+    std::string samples;
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 4; ++j)
+            for (int i = 0; i < 5; ++i) {
+                const std::int16_t v = std::int16_t(i + 10 * j + 100 * k - 50);
+                const char lo = char(v & 0xff), hi = char((v >> 8) & 0xff);
+                samples += cpu == "sun" ? std::string{hi, lo} : std::string{lo, hi};
+            }
+    if (keep >= 0) samples.resize(std::size_t(keep));
+    const std::string bytes = header + samples;
+    if (!gzip) return writeFileBytes(path, bytes);
+    gzFile out = gzopen(path.string().c_str(), "wb");
+    gzwrite(out, bytes.data(), unsigned(bytes.size()));
+    gzclose(out);
+}
+
+}  // namespace
+
+// CGAL's format: samples in either byte order, plain or gzipped, placed by VX, VY, VZ.
+TEST(Inrimage, SamplesInEitherByteOrderPlainOrGzipped)
+{
+    TempDir dir;
+    writeInrimage(dir / "little.inr", "decm", false);
+    writeInrimage(dir / "big.inr.gz", "sun", true);
+    for (const char* name : {"little.inr", "big.inr.gz"}) {
+        const ScanVolume scan = readScan(dir / name);
+        EXPECT_EQ(scan.dims(), openvdb::Coord(5, 4, 3)) << name;
+        EXPECT_DOUBLE_EQ(scan.spacing(0), 0.5);
+        EXPECT_DOUBLE_EQ(scan.spacing(2), 2.0);
+        std::vector<float> slice(20);
+        scan.readSlice(2, slice.data());
+        EXPECT_EQ(slice[3 + 5 * 2], 3 + 10 * 2 + 200 - 50) << name;
+        EXPECT_EQ(scan.range(), std::make_pair(-50.0, 4.0 + 30.0 + 200.0 - 50.0)) << name;
+    }
+}
+
+// Every field that sizes or types the samples is checked, and every declared sample must be there.
+TEST(Inrimage, BadHeadersAndMissingSamplesAreRefusedInOneLine)
+{
+    TempDir dir;
+    writeFileBytes(dir / "none.inr", std::string("#INRIMAGE-4#{\nXDIM=5\n") + std::string(600, '\n'));
+    EXPECT_NE(refusal(dir / "none.inr").find("the header never ends"), std::string::npos);
+    writeFileBytes(dir / "other.inr", std::string(512, 'x'));
+    EXPECT_NE(refusal(dir / "other.inr").find("not an INRIMAGE-4 file"), std::string::npos);
+    writeInrimage(dir / "vector.inr", "decm", false, "VDIM=3\n");
+    EXPECT_NE(refusal(dir / "vector.inr").find("VDIM"), std::string::npos);
+    writeInrimage(dir / "huge.inr", "decm", false, "XDIM=100000000\nYDIM=100000000\n");
+    EXPECT_NE(refusal(dir / "huge.inr").find("XDIM"), std::string::npos);
+    writeInrimage(dir / "nan.inr", "decm", false, "VX=nan\n");
+    EXPECT_NE(refusal(dir / "nan.inr").find("VX"), std::string::npos);
+    writeInrimage(dir / "cpu.inr", "vax", false);
+    EXPECT_NE(refusal(dir / "cpu.inr").find("CPU"), std::string::npos);
+    writeInrimage(dir / "short.inr.gz", "decm", true, "", 101);
+    EXPECT_NE(refusal(dir / "short.inr.gz").find("truncated"), std::string::npos);
+}
+
 }  // namespace sculpt

@@ -10,6 +10,7 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
+#include "core/scan/scan_readers.h"
 #include "sculpt/session/import_preview.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/shape_import.h"
@@ -763,6 +764,30 @@ TEST(LabelImport, SlicerSegmentNamesAndColoursFromTheHeader)
     EXPECT_EQ(pieces[2].name, "Portal vein");
     EXPECT_EQ(pieces[0].colour, openvdb::Vec3f(0.9f, 0.3f, 0.2f));
     EXPECT_EQ(pieces[2].colour, openvdb::Vec3f(0.2f, 0.4f, 0.9f));
+}
+
+// CGAL's liver segmentation (INRIMAGE-4, gzipped; liver, vessels, a lesion) imports as a piece per
+// label, each of its samples' volume within 1% (a label of a few samples, within a few of them).
+TEST(LabelImport, CgalsLiverSegmentationAPiecePerLabel)
+{
+    const std::filesystem::path liver = test::cgalData("images/liver.inr.gz");
+    if (liver.empty()) GTEST_SKIP() << "apt-get install libcgal-demo";
+    const ScanVolume scan = readScan(liver);
+    const double sampleVolume = scan.spacing(0) * scan.spacing(1) * scan.spacing(2);
+    std::map<int, std::size_t> counts;
+    for (const auto& [label, extent] : scan.labelExtents())
+        if (label != kBackgroundLabel) counts[label] = extent.samples;
+    ImportReport report;
+    const std::vector<Piece> pieces = importLabelPieces(liver, ImportOptions{}, report);
+    ASSERT_EQ(pieces.size(), counts.size());
+    auto count = counts.begin();
+    for (const Piece& piece : pieces) {
+        EXPECT_EQ(piece.name, "label " + std::to_string(count->first));
+        const double expected = double(count->second) * sampleVolume, volume = measureField(piece.field).volume;
+        const double tolerance = std::max(0.01 * expected, 3.0 * sampleVolume);
+        EXPECT_NEAR(volume, expected, tolerance) << piece.name;
+        ++count;
+    }
 }
 
 // MRIcron's atlases name their labels in a .txt and colour them in a .lut beside the volume;
