@@ -2,6 +2,7 @@
 
 #include "core/pieces/lattice_transfer.h"
 
+#include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 #include <openvdb/tools/ValueTransformer.h>
@@ -71,9 +72,12 @@ PushReport pushAside(FieldImage& pushed, const openvdb::Mat4d& pushedPlacement, 
     const FieldImage wideP = onLatticeOf(pusher, pusherPlacement, pushed, pushedPlacement, band);
     const openvdb::FloatGrid::Ptr wide =
         openvdb::tools::levelSetRebuild(pushed.grid(), 0.0f, float(band), float(band), &pushed.grid().transform());
-    const auto missing = [&](double swell) {
-        return volumeOf(*dented(*wide, wideP.grid(), swell, reach)) - report.volumeBefore;
+    // The result as it will be kept (its band rebuilt), so that its volume is the one solved for.
+    const auto settled = [&](double swell) {
+        return openvdb::tools::levelSetRebuild(*dented(*wide, wideP.grid(), swell, reach), 0.0f,
+                                               float(pushed.halfWidthVoxels()), float(pushed.halfWidthVoxels()));
     };
+    const auto missing = [&](double swell) { return volumeOf(*settled(swell)) - report.volumeBefore; };
     // Secant from no swell (the bare cut) and a swell of the dent's depth.
     double s0 = 0.0, f0 = missing(0.0), s1 = depth, f1 = missing(depth);
     report.dent = -f0;
@@ -82,15 +86,48 @@ PushReport pushAside(FieldImage& pushed, const openvdb::Mat4d& pushedPlacement, 
         s0 = s1, f0 = f1, s1 = std::max(0.0, s2), f1 = missing(s1);
         ++report.iterations;
     }
-    openvdb::FloatGrid::Ptr result =
-        openvdb::tools::levelSetRebuild(*dented(*wide, wideP.grid(), s1, reach), 0.0f, float(pushed.halfWidthVoxels()),
-                                        float(pushed.halfWidthVoxels()));
+    openvdb::FloatGrid::Ptr result = settled(s1);
     result->setName(pushed.grid().getName());
     result->setTransform(pushed.grid().transform().copy());
     pushed.swapGrid(result);
     report.swell = s1;
     report.volumeAfter = volumeOf(pushed.grid());
     return report;
+}
+
+DirtyRegion keepOut(FieldImage& field, const DirtyRegion& leaves, const KeepOut& other)
+{
+    DirtyRegion changed;
+    openvdb::CoordBBox otherBox;
+    if (!other.field.grid().tree().evalActiveVoxelBoundingBox(otherBox)) return changed;
+    const openvdb::math::Transform& xform = field.grid().transform();
+    const openvdb::math::Transform& otherXform = other.field.grid().transform();
+    const openvdb::BBoxd otherWorld = otherXform.indexToWorld(otherBox);
+    openvdb::FloatGrid& grid = field.mutableGrid();
+    const openvdb::tools::GridSampler<openvdb::FloatGrid::ConstAccessor, openvdb::tools::BoxSampler> phiOther(
+        other.field.grid().getConstAccessor(), otherXform);
+    for (const openvdb::Coord& origin : leaves.leafOrigins()) {
+        // The leaf's box where the other stands: skipped if it misses the other's band.
+        const openvdb::BBoxd own = xform.indexToWorld(openvdb::CoordBBox::createCube(origin, 8));
+        openvdb::BBoxd there;
+        for (int c = 0; c < 8; ++c)
+            there.expand(other.toOther.transform(openvdb::Vec3d((c & 1 ? own.max() : own.min()).x(),
+                                                                (c & 2 ? own.max() : own.min()).y(),
+                                                                (c & 4 ? own.max() : own.min()).z())));
+        if (!there.hasOverlap(otherWorld)) continue;
+        openvdb::FloatTree::LeafNodeType* leaf = grid.tree().probeLeaf(origin);
+        if (!leaf) continue;
+        for (auto v = leaf->beginValueOn(); v; ++v) {
+            const openvdb::Vec3d q = other.toOther.transform(xform.indexToWorld(v.getCoord()));
+            const float cut = -phiOther.wsSample(q);
+            if (cut > *v) {
+                v.setValue(cut);
+                changed.addVoxel(v.getCoord());
+            }
+        }
+    }
+    field.markDirty(changed);
+    return changed;
 }
 
 }  // namespace sculpt

@@ -9,6 +9,7 @@
 /// volume (OpenVDB's levelSetVolume) comes back to its value before. The cut is applied last, so
 /// no voxel inside the pusher is inside the pushed piece afterwards. Its band is rebuilt.
 
+#include "core/field/dirty_region.h"
 #include "core/field/field_image.h"
 
 namespace sculpt {
@@ -25,5 +26,18 @@ struct PushReport {
 /// Nothing changes where the two do not overlap.
 PushReport pushAside(FieldImage& pushed, const openvdb::Mat4d& pushedPlacement, const FieldImage& pusher,
                      const openvdb::Mat4d& pusherPlacement, double tolerance = 1e-3);
+
+/// A piece kept out of: its field and where it stands relative to the piece being edited (the
+/// edited field's world to its own: edited placement * its placement^-1, row vectors).
+struct KeepOut {
+    FieldImage field;  ///< shares the other piece's grid: read only
+    openvdb::Mat4d toOther = openvdb::Mat4d::identity();
+};
+
+/// The cut alone, where an edit just changed `field`: in `leaves`, phi = max(phi, -phi_other)
+/// (trilinear), so nothing of `field` lies inside `other` there (an add stroke that stops at the
+/// other pieces). Leaves whose box misses the other's are not visited.
+/// @return the leaves it changed (a subset of `leaves`), marked dirty in `field`.
+DirtyRegion keepOut(FieldImage& field, const DirtyRegion& leaves, const KeepOut& other);
 
 }  // namespace sculpt

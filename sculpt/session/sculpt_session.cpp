@@ -84,6 +84,7 @@ struct SculptSession::LiveStroke {
     /// The model's world box at the stroke's start, grown by each stamp's reach: a superset of
     /// the band's leaves kept per stamp, so no sample walks the whole tree.
     openvdb::BBoxd reach;
+    std::vector<KeepOut> keepOuts;  // pieces its stamps stop at
 };
 
 SculptSession::SculptSession(FieldImage field, bool liveMesh, std::size_t undoBudgetBytes, const Progress& meshing)
@@ -151,7 +152,7 @@ SculptSession::StrokeReport SculptSession::applyStroke(const Stroke& stroke)
     }
 }
 
-void SculptSession::beginStroke(const Stroke& settings)
+void SculptSession::beginStroke(const Stroke& settings, std::vector<KeepOut> keepOutOf)
 {
     if (mLive) throw std::logic_error("beginStroke: a stroke is already active");
     validateSettings(settings);
@@ -159,12 +160,14 @@ void SculptSession::beginStroke(const Stroke& settings)
     checkRadius(settings.brush, sizeOf(box));
     mLive = std::make_unique<LiveStroke>(settings,
                                          box.empty() ? openvdb::BBoxd() : mField.grid().transform().indexToWorld(box));
+    mLive->keepOuts = std::move(keepOutOf);
 }
 
 void SculptSession::stamp(const std::vector<BrushStamp>& stamps, StrokeReport& report)
 {
     for (const BrushStamp& s : stamps) {
-        applyStamp(mField, mLive->stroke.brush, s, &mLive->journal);
+        const DirtyRegion stamped = applyStamp(mField, mLive->stroke.brush, s, &mLive->journal);
+        for (const KeepOut& other : mLive->keepOuts) keepOut(mField, stamped, other);
         const openvdb::Vec3d reach(mLive->stroke.brush.radiusWorld + mField.halfWidthVoxels() * mField.voxelSize());
         for (const openvdb::Vec3d& c : {s.centreWorld, s.previousWorld})
             mLive->reach.expand(openvdb::BBoxd(c - reach, c + reach));

@@ -8,6 +8,7 @@
 
 #include "core/field/field_image.h"
 #include "core/mesh/incremental_mesher.h"
+#include "core/pieces/push.h"
 #include "sculpt/session/stroke.h"
 #include "sculpt/session/undo_history.h"
 
@@ -40,7 +41,9 @@ public:
     /// A stroke drawn live: begin, then each sample stamps what is due at once, then end records
     /// it as one undo step. The samples kept are the stroke's, so `sculpt apply` replays it bit
     /// for bit. @throws InputError (settings, a brush larger than the model) before any change.
-    void beginStroke(const Stroke& settings);
+    /// With `keepOutOf`, every stamp is cut by those pieces where it reaches into them (keepOut:
+    /// an add stroke that stops at the other pieces).
+    void beginStroke(const Stroke& settings, std::vector<KeepOut> keepOutOf = {});
     /// @throws InputError if a sample is not finite or its pressure not in (0, 1]; nothing changes.
     StrokeReport extendStroke(const StrokeSample& sample);
     struct FinishedStroke {

@@ -7,6 +7,10 @@
 //                  B = 1: overlap() through the local boxes, B = 0: every vertex of each sampled in
 //                  the other's field (the brute force; both parallel). Counters: vertices sampled,
 //                  vertices found inside.
+// BM_RigidMove/R : one step of a move in the window: the contact bisection against a piece apart
+//                  (freeFraction; their boxes do not meet) and the move as a document's undo
+//                  step (Document::movePiece), for a moved ball of R voxels radius (0.5 mm voxels).
+//                  Counter: the moved ball's active voxels. Should not grow with R.
 // BM_LabelImport/M/A : M = 0 mricron-data's JHU white-matter atlas at 1 mm (182 x 218 x 182, 48
 //                  labels), M = 1 CGAL's liver segmentation (liver.inr.gz, 438 x 353 x 165, 4
 //                  labels): A = 1 every label as a piece (importLabelPieces), A = 0 one label (the
@@ -16,8 +20,10 @@
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/contact.h"
+#include "core/primitives/analytic_shapes.h"
 #include "sculpt/session/shape_import.h"
 #include "tests/support/cgal_data.h"
+#include "ui/document/document.h"
 
 #include <benchmark/benchmark.h>
 #include <openvdb/tools/Interpolation.h>
@@ -101,6 +107,31 @@ BENCHMARK(BM_Contact)
     ->ArgNames({"overlap%", "boxes"})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+void BM_RigidMove(benchmark::State& state)
+{
+    const double radius = 0.5 * double(state.range(0));
+    std::vector<Piece> pieces{{{"moved"}, makeSphere(radius, 0.5)}, {{"apart"}, makeSphere(8.0, 0.5)}};
+    pieces[1].placement.setTranslation(Vec3d(radius + 40.0, 0.0, 0.0));
+    ui::Document document(std::move(pieces));
+    const ui::DocumentPiece &moved = document.pieces()[0], &apart = document.pieces()[1];
+    const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement};
+    double x = 0.0;
+    for (auto _ : state) {
+        const Mat4d from = document.pieces()[0].look.placement;
+        Mat4d to = from;
+        to.setTranslation(Vec3d(x += 0.01, 0.0, 0.0));
+        const auto along = [&](double t) {
+            Mat4d m = from;
+            m.setTranslation(from.getTranslation() * (1.0 - t) + to.getTranslation() * t);
+            return m;
+        };
+        const double free = freeFraction({moved.session->field(), *moved.session->mesher(), from}, other, along);
+        document.movePiece(0, along(free), {}, "move");
+    }
+    state.counters["voxels"] = double(document.pieces()[0].session->field().grid().activeVoxelCount());
+}
+BENCHMARK(BM_RigidMove)->Arg(16)->Arg(64)->Arg(256)->ArgName("radius")->Unit(benchmark::kMicrosecond);
 
 void BM_LabelImport(benchmark::State& state)
 {

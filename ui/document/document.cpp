@@ -163,9 +163,16 @@ std::string Document::freeName(const std::string& base) const
     return name;
 }
 
-void Document::beginStroke(const Stroke& settings, StrokeSources sources)
+void Document::beginStroke(const Stroke& settings, StrokeSources sources, bool stopAtOthers)
 {
-    session().beginStroke(settings);
+    std::vector<KeepOut> others;
+    const openvdb::Mat4d& placement = mPieces[mActive].look.placement;
+    for (std::size_t i = 0; i < mPieces.size() && stopAtOthers; ++i)
+        if (i != mActive && mPieces[i].look.visible)
+            others.push_back({mPieces[i].session->field(), placement * mPieces[i].look.placement.inverse()});
+    session().beginStroke(settings, others);
+    // A stroke script replays strokes alone, without the pieces they stopped at.
+    if (!others.empty() && mUnscripted.empty()) mUnscripted = "a stroke that stopped at other pieces";
     mPendingSources = std::move(sources);
 }
 

@@ -117,7 +117,8 @@ public:
 
     /// Live strokes (see SculptSession); `sources` is what the stroke log writes of its primitive
     /// scene or follow target.
-    void beginStroke(const Stroke& settings, StrokeSources sources = {});
+    /// `stopAtOthers`: the stroke keeps out of the other pieces shown (SculptSession::beginStroke).
+    void beginStroke(const Stroke& settings, StrokeSources sources = {}, bool stopAtOthers = false);
     SculptSession::StrokeReport extendStroke(const StrokeSample& sample);
     void endStroke();
     bool undo();

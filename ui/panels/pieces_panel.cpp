@@ -117,6 +117,9 @@ void drawPiecesPanel(SculptApp& app)
     ImGui::SameLine();
     ImGui::Checkbox("push", &app.pushPieces());
     commandTooltip(app, Command::TogglePush);
+    ImGui::Checkbox("strokes stop at other pieces", &app.brush().stopAtPieces);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("clay added to this piece stops where another piece is (the others are never edited)");
     if (app.piecesMode()) ImGui::TextDisabled("click picks; G/R/S move, turn, scale");
     ImGui::End();
 }

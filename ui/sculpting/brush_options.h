@@ -26,6 +26,7 @@ struct BrushOptions {
     bool keepVolume = false;        ///< smooth
     bool pressureFromSpeed = true;  ///< a mouse has no pressure: faster strokes press lighter
     FollowTarget target;            ///< follow
+    bool stopAtPieces = false;      ///< strokes keep out of the document's other pieces
 };
 
 /// The tool a stroke uses: Shift smooths while held; Ctrl inverts add/carve, inflate/deflate

@@ -36,7 +36,7 @@ void StrokeController::begin(Document& document, const BrushOptions& options, in
                              const Ray& ray, double time, double x, double y)
 {
     const Stroke settings = strokeSettings(options, mods);
-    document.beginStroke(settings, strokeSources(options, mods));
+    document.beginStroke(settings, strokeSources(options, mods), options.stopAtPieces);
     mActive = true;
     mGrab = settings.brush.tool == BrushTool::Grab;
     mFromSpeed = options.pressureFromSpeed;

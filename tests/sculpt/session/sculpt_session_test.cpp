@@ -19,6 +19,7 @@
 #include "tests/support/temp_dir.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/tools/Interpolation.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
@@ -150,6 +151,43 @@ TEST(SculptSession, ALiveStrokeEqualsTheSameStrokeAppliedWholeAndUndoesBitForBit
     EXPECT_GT(live.remeshedBlocks(), 0u);
     ASSERT_TRUE(live.undo());
     EXPECT_EQ(checksumOf(live), before);
+}
+
+// An add stroke told to keep out of another piece (a wall placed beside the ball) builds up to it
+// and not into it: no voxel of the ball is inside the wall afterwards, where the same stroke
+// without it reaches in; the wall is read, never edited; undo restores the ball bit for bit.
+TEST(SculptSession, AnAddStrokeStopsAtAnotherPiece)
+{
+    const FieldImage wall = makeBox(6.0, 0.5);  // placed at x = 14: its face at x = 8
+    openvdb::Mat4d wallPlacement = openvdb::Mat4d::identity();
+    wallPlacement.setTranslation(Vec3d(14.0, 0.0, 0.0));
+    const std::uint64_t wallBefore = gridChecksum(wall.grid());
+    const Stroke stroke = strokeOf(BrushTool::Add, 4.0, {Vec3d(5, -2, 0), Vec3d(7, 0, 0), Vec3d(9, 2, 0)}, 1.0);
+    const auto voxelsInWall = [&](const SculptSession& session) {
+        const auto inWall = wall.grid().getConstAccessor();
+        std::size_t inside = 0;
+        for (auto v = session.field().grid().cbeginValueOn(); v; ++v) {
+            const Vec3d world = session.field().grid().indexToWorld(v.getCoord()) - Vec3d(14.0, 0.0, 0.0);
+            inside += *v < 0.0f && openvdb::tools::BoxSampler::sample(inWall, wall.grid().worldToIndex(world)) < 0.0;
+        }
+        return inside;
+    };
+    SculptSession free(makeSphere(6.0, 0.5));
+    free.applyStroke(stroke);
+    EXPECT_GT(voxelsInWall(free), 50u) << "the stroke reaches into the wall's place";
+
+    SculptSession kept(makeSphere(6.0, 0.5));
+    const std::uint64_t before = checksumOf(kept);
+    Stroke settings = stroke;
+    settings.samples.clear();
+    kept.beginStroke(settings, {KeepOut{wall, wallPlacement.inverse()}});
+    for (const StrokeSample& sample : stroke.samples) kept.extendStroke(sample);
+    kept.endStroke();
+    EXPECT_EQ(voxelsInWall(kept), 0u);
+    EXPECT_GT(measureField(kept.field()).volume, measureField(makeSphere(6.0, 0.5)).volume * 1.02) << "clay was added";
+    EXPECT_EQ(gridChecksum(wall.grid()), wallBefore);
+    ASSERT_TRUE(kept.undo());
+    EXPECT_EQ(checksumOf(kept), before);
 }
 
 TEST(SculptSession, ACancelledLiveStrokeLeavesTheDocumentAsItWas)
