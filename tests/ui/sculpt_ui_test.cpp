@@ -929,8 +929,8 @@ double placedX(const nlohmann::json& piece) { return piece["placement"][12].get<
 // In pieces mode (Tab) G moves the sculpted piece by a typed value along X: moved and moved
 // back, no voxel changed and the placement is where it was; a move into the other piece stops
 // at contact; with push on (P) the other is dented as a job, keeping its volume, and the move and
-// the dent are one undo step; smoothing the moved piece leaves the other bit for bit; the export
-// writes a file per piece, each where it is placed.
+// the dent are one undo step; smoothing the moved piece leaves the other bit for bit; applying
+// the move resamples it where it stands; the export writes a file per piece, each where it is.
 TEST(SculptUi, PiecesMoveStopAtContactPushAsOneUndoStepAndExportEach)
 {
     TempDir dir;
@@ -955,6 +955,7 @@ TEST(SculptUi, PiecesMoveStopAtContactPushAsOneUndoStepAndExportEach)
     events.untilJobEnds().report(r, "pushed").screenshot(dir / "pushed.png");
     events.key("Z", {"ctrl"}).report(r, "undone").key("Z", {"ctrl", "shift"}).report(r, "redone");
     events.key("Tab").key("S", {"alt"}).text("4").key("Enter").untilJobEnds().report(r, "smoothed");
+    events.key("Tab").key("A", {"ctrl"}).untilJobEnds().report(r, "applied");
     const CommandResult run =
         play(dir, events, (dir / "two.vdb").string(),
              "--save-as " + shellQuoted(dir / "saved.vdb") + " --export " + shellQuoted(dir / "out.ply"));
@@ -988,12 +989,12 @@ TEST(SculptUi, PiecesMoveStopAtContactPushAsOneUndoStepAndExportEach)
     const double before = openvdb::tools::levelSetVolume(pieces[1].field.grid()),
                  after = openvdb::tools::levelSetVolume(saved.pieces[1].field.grid());
     EXPECT_NEAR(after, before, 0.005 * before) << "the dented ball keeps its volume";
-    EXPECT_EQ(
-        saved.pieces[0].placement, pieces[0].placement * [&] {
-            openvdb::Mat4d m = openvdb::Mat4d::identity();
-            m.setTranslation(openvdb::Vec3d(stopped + 2.0, 0.0, 0.0));
-            return m;
-        }());
+    // Apply Move (Ctrl+A) resampled the body where it stood: no placement left, the same surface.
+    EXPECT_EQ(saved.pieces[0].placement, openvdb::Mat4d::identity());
+    EXPECT_EQ(reports["applied"]["undo"].get<int>(), reports["smoothed"]["undo"].get<int>() + 1);
+    EXPECT_NEAR(reports["applied"]["volume"].get<double>(), reports["smoothed"]["volume"].get<double>(),
+                0.01 * reports["smoothed"]["volume"].get<double>());
+    EXPECT_EQ(piece("applied", 1)["checksum"], piece("smoothed", 1)["checksum"]);
     // A file per piece, where each is placed: the ball's mesh starts beyond the body's.
     ASSERT_TRUE(fs::exists(dir / "out-body.ply")) << run.out << run.err;
     const TriangleMesh bodyMesh = readMesh(dir / "out-body.ply"), ballMesh = readMesh(dir / "out-ball.ply");

@@ -483,6 +483,13 @@ const std::vector<CommandRow>& SculptApp::commands()
                                                : "a moved piece stops at the pieces it meets";
          },
          Scope::Pieces},
+        {Command::ApplyPlacement,
+         "Apply Move",
+         "Resamples the piece's voxels where it stands (a job): its placement becomes the identity",
+         {{GLFW_KEY_A, kControl}},
+         pieceGesture,
+         [](App& a) { a.applyPlacement(a.mDocument->activePiece()); },
+         Scope::Pieces},
         {Command::AnswerSave,
          "Save",
          "Unsaved changes: save them, then go on",

@@ -83,6 +83,7 @@ enum class Command {
     RotatePiece,
     ScalePiece,
     TogglePush,
+    ApplyPlacement,
     // The dialogs' answers (Scope::Dialog).
     AnswerSave,
     AnswerDiscard,

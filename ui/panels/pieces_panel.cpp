@@ -81,8 +81,7 @@ void activePiece(SculptApp& app, Dialogs& d)
     if (!placed) ImGui::BeginDisabled();
     if (ImGui::Button("Apply move")) app.applyPlacement(index);
     if (!placed) ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("resample the voxels where the piece stands (a job); a move alone never touches them");
+    commandTooltip(app, Command::ApplyPlacement);
     if (doc.pieces().size() > 1) {
         std::size_t& with = d.mergeWith;
         if (with >= doc.pieces().size() || with == index) with = index == 0 ? 1 : 0;
@@ -120,7 +119,7 @@ void drawPiecesPanel(SculptApp& app)
     ImGui::Checkbox("strokes stop at other pieces", &app.brush().stopAtPieces);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("clay added to this piece stops where another piece is (the others are never edited)");
-    if (app.piecesMode()) ImGui::TextDisabled("click picks; G/R/S move, turn, scale");
+    if (app.piecesMode()) ImGui::TextDisabled("click picks; G R S move it");
     ImGui::End();
 }
 
