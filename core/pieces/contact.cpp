@@ -109,6 +109,28 @@ void blockAgainst(const Coord& origin, const BlockMesh& mesh, const ContactBody&
     out.deepest = std::max(out.deepest, probe.deepest);
 }
 
+/// A body's box in its field's world: the one it carries, else its leaves'.
+openvdb::BBoxd boxOf(const ContactBody& body)
+{
+    if (!body.box.empty()) return body.box;
+    openvdb::CoordBBox leaves;
+    if (!body.field.grid().tree().evalLeafBoundingBox(leaves)) return {};
+    return body.field.grid().transform().indexToWorld(leaves);
+}
+
+/// Whether the global boxes of the two meet where they are placed.
+bool boxesMeet(const ContactBody& moving, const ContactBody& other)
+{
+    const openvdb::BBoxd own = boxOf(moving), theirs = boxOf(other);
+    if (own.empty() || theirs.empty()) return false;
+    const Mat4d toOther = moving.placement * other.placement.inverse();
+    openvdb::BBoxd there;
+    for (int c = 0; c < 8; ++c)
+        there.expand(toOther.transform(Vec3d((c & 1 ? own.max() : own.min()).x(), (c & 2 ? own.max() : own.min()).y(),
+                                             (c & 4 ? own.max() : own.min()).z())));
+    return there.hasOverlap(theirs);
+}
+
 Penetration combined(Penetration a, const Penetration& b)
 {
     a.sampledVertices += b.sampledVertices;
@@ -121,6 +143,7 @@ Penetration combined(Penetration a, const Penetration& b)
 
 Penetration penetration(const ContactBody& moving, const ContactBody& other)
 {
+    if (!boxesMeet(moving, other)) return {};  // apart: no block of either is looked at
     const BlockSet otherBlocks(other.mesher);
     if (otherBlocks.origins.empty()) return {};
     const ToOther toOther(moving, other);
@@ -147,7 +170,7 @@ double freeFraction(const ContactBody& moving, const ContactBody& other, const s
                     int bisections)
 {
     const auto overlapsAt = [&](double t) {
-        return overlap(ContactBody{moving.field, moving.mesher, along(t)}, other).any();
+        return overlap(ContactBody{moving.field, moving.mesher, along(t), moving.box}, other).any();
     };
     if (!overlapsAt(1.0)) return 1.0;
     if (overlapsAt(0.0)) return 0.0;

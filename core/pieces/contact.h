@@ -29,6 +29,9 @@ struct ContactBody {
     /// World from the field's own world (row vectors, as OpenVDB: p * placement): a rigid move
     /// (or a uniform scale) that never touches a voxel.
     openvdb::Mat4d placement = openvdb::Mat4d::identity();
+    /// Its surface's box in its field's world if the caller keeps it (a move: once per gesture);
+    /// empty: found from the field's leaves.
+    openvdb::BBoxd box = openvdb::BBoxd();
 };
 
 struct Penetration {
@@ -38,8 +41,8 @@ struct Penetration {
     bool any() const { return penetratingVertices > 0; }
 };
 
-/// The vertices of `moving` inside `other`. Cost: the blocks of `moving` within `other`'s global
-/// box, and the vertices of those that meet `other`'s blocks.
+/// The vertices of `moving` inside `other`. Cost: nothing more when their global boxes do not
+/// meet; else the blocks of both, and the vertices of those of `moving` that meet `other`'s.
 Penetration penetration(const ContactBody& moving, const ContactBody& other);
 
 /// Both ways: `a`'s vertices inside `b` and `b`'s inside `a` (a sharp tip of either is seen).

@@ -8,8 +8,9 @@
 //                  the other's field (the brute force; both parallel). Counters: vertices sampled,
 //                  vertices found inside.
 // BM_RigidMove/R : one step of a move in the window: the contact bisection against a piece apart
-//                  (freeFraction; their boxes do not meet) and the move as a document's undo
-//                  step (Document::movePiece), for a moved ball of R voxels radius (0.5 mm voxels).
+//                  (freeFraction with the boxes found at the move's start; they do not meet) and
+//                  the move as a document's undo step (Document::movePiece), for a moved ball of R
+//                  voxels radius (0.5 mm voxels).
 //                  Counter: the moved ball's active voxels. Should not grow with R.
 // BM_LabelImport/M/A : M = 0 mricron-data's JHU white-matter atlas at 1 mm (182 x 218 x 182, 48
 //                  labels), M = 1 CGAL's liver segmentation (liver.inr.gz, 438 x 353 x 165, 4
@@ -115,18 +116,26 @@ void BM_RigidMove(benchmark::State& state)
     pieces[1].placement.setTranslation(Vec3d(radius + 40.0, 0.0, 0.0));
     ui::Document document(std::move(pieces));
     const ui::DocumentPiece &moved = document.pieces()[0], &apart = document.pieces()[1];
-    const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement};
-    double x = 0.0;
+    // The boxes a move in the window finds once, at its start.
+    const auto boxOf = [](const ui::DocumentPiece& piece) {
+        openvdb::CoordBBox leaves;
+        piece.session->field().grid().tree().evalLeafBoundingBox(leaves);
+        return piece.session->field().grid().transform().indexToWorld(leaves);
+    };
+    const openvdb::BBoxd movedBox = boxOf(moved);
+    const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement, boxOf(apart)};
+    bool there = false;
     for (auto _ : state) {
         const Mat4d from = document.pieces()[0].look.placement;
         Mat4d to = from;
-        to.setTranslation(Vec3d(x += 0.01, 0.0, 0.0));
+        to.setTranslation(Vec3d((there = !there) ? 1.0 : 0.0, 0.0, 0.0));  // to and fro: never nearer
         const auto along = [&](double t) {
             Mat4d m = from;
             m.setTranslation(from.getTranslation() * (1.0 - t) + to.getTranslation() * t);
             return m;
         };
-        const double free = freeFraction({moved.session->field(), *moved.session->mesher(), from}, other, along);
+        const double free =
+            freeFraction({moved.session->field(), *moved.session->mesher(), from, movedBox}, other, along);
         document.movePiece(0, along(free), {}, "move");
     }
     state.counters["voxels"] = double(document.pieces()[0].session->field().grid().activeVoxelCount());

@@ -22,18 +22,27 @@ using Pieces = std::vector<DocumentPiece>;
 
 Piece asPiece(const DocumentPiece& piece) { return {piece.look, piece.session->field()}; }
 
-ContactBody bodyOf(const DocumentPiece& piece, const openvdb::Mat4d& placement)
+/// A piece as contact sees it; `box` its surfaceBox if known (a gesture keeps them).
+ContactBody bodyOf(const DocumentPiece& piece, const openvdb::Mat4d& placement, const openvdb::BBoxd& box = {})
 {
-    return {piece.session->field(), *piece.session->mesher(), placement};
+    return {piece.session->field(), *piece.session->mesher(), placement, box};
+}
+
+/// A piece's surface box in its field's world (its leaves'; empty if it has none).
+openvdb::BBoxd surfaceBox(const DocumentPiece& piece)
+{
+    openvdb::CoordBBox leaves;
+    const FieldImage& field = piece.session->field();
+    if (!field.grid().tree().evalLeafBoundingBox(leaves)) return {};
+    return field.grid().transform().indexToWorld(leaves);
 }
 
 /// The world centre of a piece's surface: what it turns and scales about.
 glm::dvec3 centreOf(const DocumentPiece& piece)
 {
-    openvdb::CoordBBox box;
-    const FieldImage& field = piece.session->field();
-    if (!field.grid().tree().evalLeafBoundingBox(box)) return glm::dvec3(0.0);
-    const openvdb::Vec3d c = piece.look.placement.transform(field.grid().transform().indexToWorld(box).getCenter());
+    const openvdb::BBoxd box = surfaceBox(piece);
+    if (box.empty()) return glm::dvec3(0.0);
+    const openvdb::Vec3d c = piece.look.placement.transform(box.getCenter());
     return {c.x(), c.y(), c.z()};
 }
 
@@ -156,12 +165,16 @@ void SculptApp::beginPieceGesture(PieceGesture::Kind kind)
     const glm::dvec3 view = glm::normalize(mCamera.focalPoint() - mCamera.eye());
     mGesture.emplace(kind, moved.look.placement, centreOf(moved), mViewport, view, mMouseX, mMouseY);
     mGestureShown = moved.look.placement;
-    // Pieces it touches already (a label map's neighbours) are not in its way.
+    // Pieces it touches already (a label map's neighbours) are not in its way. Their boxes are
+    // found once: a pointer event's contact test then costs nothing for the pieces far away.
     mObstacles.clear();
     const auto& pieces = mDocument->pieces();
+    mGestureBoxes.clear();
+    for (const DocumentPiece& piece : pieces) mGestureBoxes.push_back(surfaceBox(piece));
+    const ContactBody start = bodyOf(moved, moved.look.placement, mGestureBoxes[mDocument->activePiece()]);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         if (i != mDocument->activePiece() && pieces[i].look.visible &&
-            !overlap(bodyOf(moved, moved.look.placement), bodyOf(pieces[i], pieces[i].look.placement)).any())
+            !overlap(start, bodyOf(pieces[i], pieces[i].look.placement, mGestureBoxes[i])).any())
             mObstacles.push_back(i);
     }
     mDrag = Drag::Piece;
@@ -175,10 +188,10 @@ void SculptApp::pointPieceGesture(double x, double y)
     double free = 1.0;
     if (!mPushPieces) {  // stop at the first contact along the gesture
         const auto along = [this](double t) { return mGesture->placementAt(t); };
+        const ContactBody start = bodyOf(moved, moved.look.placement, mGestureBoxes[mDocument->activePiece()]);
         for (std::size_t i : mObstacles) {
             const DocumentPiece& other = mDocument->pieces()[i];
-            free = std::min(
-                free, freeFraction(bodyOf(moved, moved.look.placement), bodyOf(other, other.look.placement), along));
+            free = std::min(free, freeFraction(start, bodyOf(other, other.look.placement, mGestureBoxes[i]), along));
         }
     }
     mGestureShown = mGesture->placementAt(free);

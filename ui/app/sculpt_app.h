@@ -366,10 +366,11 @@ private:
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     bool mPiecesMode = false, mPushPieces = false;
-    std::optional<PieceGesture> mGesture;  // G, R or S under way
-    openvdb::Mat4d mGestureShown;          // the placement it shows (stopped at contact)
-    std::vector<std::size_t> mObstacles;   // the pieces it stops at
-    std::optional<SurfaceHit> mHover;      // the surface under the pointer, picked for mHoverKey
+    std::optional<PieceGesture> mGesture;       // G, R or S under way
+    openvdb::Mat4d mGestureShown;               // the placement it shows (stopped at contact)
+    std::vector<std::size_t> mObstacles;        // the pieces it stops at
+    std::vector<openvdb::BBoxd> mGestureBoxes;  // every piece's surface box (field world), at its start
+    std::optional<SurfaceHit> mHover;           // the surface under the pointer, picked for mHoverKey
     HoverKey mHoverKey;
     bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)

@@ -251,24 +251,36 @@ void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vect
 void Document::recordStep(const std::string& label, StepScope scope)
 {
     mUndoLabels.push_back(label);
+    countJournalUses(scope, true);
     mUndoScopes.push_back(std::move(scope));
     mRedoLabels.clear();
     mRedoScopes.clear();
     mRedoStates.clear();
     mUndoStates.push_back(mState);
     mState = mNextState++;
-    forgetBeyondJournals();
+    forgetBeyondJournals(mUndoScopes.back().sessions);
 }
 
-void Document::forgetBeyondJournals()
+void Document::countJournalUses(const StepScope& scope, bool add)
 {
-    for (;;) {
-        std::map<const SculptSession*, std::size_t> uses;
-        for (const StepScope& scope : mUndoScopes)
-            for (const auto& session : scope.sessions) ++uses[session.get()];
-        const bool forgotten = std::any_of(
-            uses.begin(), uses.end(), [](const auto& use) { return use.second > use.first->history().undoCount(); });
-        if (!forgotten) return;
+    for (const auto& session : scope.sessions) {
+        std::size_t& uses = mJournalUses[session.get()];
+        if (add) ++uses;
+        else if (--uses == 0) mJournalUses.erase(session.get());
+    }
+}
+
+void Document::forgetBeyondJournals(std::vector<std::shared_ptr<SculptSession>> edited)
+{
+    // Only the sessions just edited can have forgotten a step (a history forgets as it grows).
+    const auto forgotten = [&] {
+        return std::any_of(edited.begin(), edited.end(), [&](const auto& session) {
+            const auto uses = mJournalUses.find(session.get());
+            return uses != mJournalUses.end() && uses->second > session->history().undoCount();
+        });
+    };
+    while (!mUndoScopes.empty() && forgotten()) {
+        countJournalUses(mUndoScopes.front(), false);
         mUndoLabels.erase(mUndoLabels.begin());
         mUndoScopes.erase(mUndoScopes.begin());
         mUndoStates.erase(mUndoStates.begin());
@@ -290,6 +302,7 @@ bool Document::undo()
     if (mUndoScopes.empty()) return false;
     const StepScope scope = std::move(mUndoScopes.back());
     mUndoScopes.pop_back();
+    countJournalUses(scope, false);
     for (auto session = scope.sessions.rbegin(); session != scope.sessions.rend(); ++session) (*session)->undo();
     if (scope.before) restorePieces(*scope.before);
     else ++mPiecesRevision;  // an edit of a piece not active, perhaps
@@ -312,6 +325,7 @@ bool Document::redo()
     for (const auto& session : scope.sessions) session->redo();
     if (scope.after) restorePieces(*scope.after);
     else ++mPiecesRevision;
+    countJournalUses(scope, true);
     mUndoScopes.push_back(scope);
     ++mRevision;
     mUndoLabels.push_back(mRedoLabels.front());

@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -139,8 +140,11 @@ private:
     };
     /// A new undo step: its label, scope and the modified-state bookkeeping.
     void recordStep(const std::string& label, StepScope scope);
-    /// Drops the oldest steps once a session has forgotten (its budget) a journal step they need.
-    void forgetBeyondJournals();
+    /// Drops the oldest steps once a session `edited` has forgotten (its budget) a journal step
+    /// they need.
+    void forgetBeyondJournals(std::vector<std::shared_ptr<SculptSession>> edited);
+    /// Counts (or uncounts) the journal steps `scope` holds in mJournalUses.
+    void countJournalUses(const StepScope& scope, bool add);
     /// The pieces become `pieces`; the active piece stays active if it is among them.
     void restorePieces(const std::vector<DocumentPiece>& pieces, std::shared_ptr<SculptSession> active = {});
 
@@ -154,6 +158,7 @@ private:
     std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold
     std::vector<std::string> mUndoLabels, mRedoLabels;
     std::vector<StepScope> mUndoScopes, mRedoScopes;
+    std::map<const SculptSession*, std::size_t> mJournalUses;  // the undo steps holding a step of each
     std::vector<std::uint64_t> mUndoStates, mRedoStates;
     std::uint64_t mState = 0, mSavedState = 0, mNextState = 1, mRevision = 0;
 };
