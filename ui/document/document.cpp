@@ -133,8 +133,8 @@ std::vector<std::string> Document::exportMesh(const std::filesystem::path& path)
 void Document::saveStrokes(const std::filesystem::path& path) const
 {
     if (!mUnscripted.empty()) {
-        throw InputError(path.string() + ": the history holds a whole-model edit (" + mUnscripted +
-                         "), which a stroke script cannot replay; save the document instead");
+        throw InputError(path.string() + ": the history holds an edit a stroke script cannot replay (" + mUnscripted +
+                         "); save the document instead");
     }
     writeFileAtomically(path, writeStrokeScript(mLog));
 }

@@ -76,8 +76,8 @@ public:
     /// What exportMesh writes, welded (and checked against `path`'s extension) for a job to write.
     std::vector<PieceMesh> meshesToExport(const std::filesystem::path& path) const;
     /// Writes every edit since the document was opened as a `sculpt apply` stroke script.
-    /// @throws InputError naming the file if a whole-model edit (a filter) happened: a stroke
-    ///         script cannot replay it.
+    /// @throws InputError naming the file if an edit a stroke script cannot replay happened (a
+    ///         filter, a piece edit, a stroke on a piece but the first or stopping at others).
     void saveStrokes(const std::filesystem::path& path) const;
 
     /// The active piece's session: what strokes and whole-model edits change.
