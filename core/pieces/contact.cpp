@@ -1,5 +1,6 @@
 #include "core/pieces/contact.h"
 
+#include "core/field/placed_box.h"
 #include "core/mesh/block_mesh.h"
 
 #include <openvdb/tools/Interpolation.h>
@@ -110,25 +111,14 @@ void blockAgainst(const Coord& origin, const BlockMesh& mesh, const ContactBody&
 }
 
 /// A body's box in its field's world: the one it carries, else its leaves'.
-openvdb::BBoxd boxOf(const ContactBody& body)
-{
-    if (!body.box.empty()) return body.box;
-    openvdb::CoordBBox leaves;
-    if (!body.field.grid().tree().evalLeafBoundingBox(leaves)) return {};
-    return body.field.grid().transform().indexToWorld(leaves);
-}
+openvdb::BBoxd boxOf(const ContactBody& body) { return body.box.empty() ? leafWorldBox(body.field) : body.box; }
 
 /// Whether the global boxes of the two meet where they are placed.
 bool boxesMeet(const ContactBody& moving, const ContactBody& other)
 {
     const openvdb::BBoxd own = boxOf(moving), theirs = boxOf(other);
     if (own.empty() || theirs.empty()) return false;
-    const Mat4d toOther = moving.placement * other.placement.inverse();
-    openvdb::BBoxd there;
-    for (int c = 0; c < 8; ++c)
-        there.expand(toOther.transform(Vec3d((c & 1 ? own.max() : own.min()).x(), (c & 2 ? own.max() : own.min()).y(),
-                                             (c & 4 ? own.max() : own.min()).z())));
-    return there.hasOverlap(theirs);
+    return placedBox(own, moving.placement * other.placement.inverse()).hasOverlap(theirs);
 }
 
 Penetration combined(Penetration a, const Penetration& b)

@@ -1,5 +1,6 @@
 #include "core/pieces/push.h"
 
+#include "core/field/placed_box.h"
 #include "core/pieces/lattice_transfer.h"
 
 #include <openvdb/tools/Interpolation.h>
@@ -109,12 +110,7 @@ DirtyRegion keepOut(FieldImage& field, const DirtyRegion& leaves, const KeepOut&
     for (const openvdb::Coord& origin : leaves.leafOrigins()) {
         // The leaf's box where the other stands: skipped if it misses the other's band.
         const openvdb::BBoxd own = xform.indexToWorld(openvdb::CoordBBox::createCube(origin, 8));
-        openvdb::BBoxd there;
-        for (int c = 0; c < 8; ++c)
-            there.expand(other.toOther.transform(openvdb::Vec3d((c & 1 ? own.max() : own.min()).x(),
-                                                                (c & 2 ? own.max() : own.min()).y(),
-                                                                (c & 4 ? own.max() : own.min()).z())));
-        if (!there.hasOverlap(otherWorld)) continue;
+        if (!placedBox(own, other.toOther).hasOverlap(otherWorld)) continue;
         openvdb::FloatTree::LeafNodeType* leaf = grid.tree().probeLeaf(origin);
         if (!leaf) continue;
         for (auto v = leaf->beginValueOn(); v; ++v) {

@@ -18,6 +18,7 @@
 //                  atlas's 3, the liver's 255: importShape --label, read and converted from the
 //                  whole map).
 
+#include "core/field/placed_box.h"
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/contact.h"
@@ -117,13 +118,9 @@ void BM_RigidMove(benchmark::State& state)
     ui::Document document(std::move(pieces));
     const ui::DocumentPiece &moved = document.pieces()[0], &apart = document.pieces()[1];
     // The boxes a move in the window finds once, at its start.
-    const auto boxOf = [](const ui::DocumentPiece& piece) {
-        openvdb::CoordBBox leaves;
-        piece.session->field().grid().tree().evalLeafBoundingBox(leaves);
-        return piece.session->field().grid().transform().indexToWorld(leaves);
-    };
-    const openvdb::BBoxd movedBox = boxOf(moved);
-    const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement, boxOf(apart)};
+    const openvdb::BBoxd movedBox = leafWorldBox(moved.session->field());
+    const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement,
+                            leafWorldBox(apart.session->field())};
     bool there = false;
     for (auto _ : state) {
         const Mat4d from = document.pieces()[0].look.placement;

@@ -3,6 +3,7 @@
 // stopping at contact or pushing the others aside.
 
 #include "core/base/errors.h"
+#include "core/field/placed_box.h"
 #include "core/pieces/contact.h"
 #include "core/pieces/lattice_transfer.h"
 #include "core/pieces/piece_edits.h"
@@ -22,25 +23,16 @@ using Pieces = std::vector<DocumentPiece>;
 
 Piece asPiece(const DocumentPiece& piece) { return {piece.look, piece.session->field()}; }
 
-/// A piece as contact sees it; `box` its surfaceBox if known (a gesture keeps them).
+/// A piece as contact sees it; `box` its leafWorldBox if known (a gesture keeps them).
 ContactBody bodyOf(const DocumentPiece& piece, const openvdb::Mat4d& placement, const openvdb::BBoxd& box = {})
 {
     return {piece.session->field(), *piece.session->mesher(), placement, box};
 }
 
-/// A piece's surface box in its field's world (its leaves'; empty if it has none).
-openvdb::BBoxd surfaceBox(const DocumentPiece& piece)
-{
-    openvdb::CoordBBox leaves;
-    const FieldImage& field = piece.session->field();
-    if (!field.grid().tree().evalLeafBoundingBox(leaves)) return {};
-    return field.grid().transform().indexToWorld(leaves);
-}
-
 /// The world centre of a piece's surface: what it turns and scales about.
 glm::dvec3 centreOf(const DocumentPiece& piece)
 {
-    const openvdb::BBoxd box = surfaceBox(piece);
+    const openvdb::BBoxd box = leafWorldBox(piece.session->field());
     if (box.empty()) return glm::dvec3(0.0);
     const openvdb::Vec3d c = piece.look.placement.transform(box.getCenter());
     return {c.x(), c.y(), c.z()};
@@ -170,7 +162,7 @@ void SculptApp::beginPieceGesture(PieceGesture::Kind kind)
     mObstacles.clear();
     const auto& pieces = mDocument->pieces();
     mGestureBoxes.clear();
-    for (const DocumentPiece& piece : pieces) mGestureBoxes.push_back(surfaceBox(piece));
+    for (const DocumentPiece& piece : pieces) mGestureBoxes.push_back(leafWorldBox(piece.session->field()));
     const ContactBody start = bodyOf(moved, moved.look.placement, mGestureBoxes[mDocument->activePiece()]);
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         if (i != mDocument->activePiece() && pieces[i].look.visible &&

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/field/placed_box.h"
 #include "ui/app/process_memory.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
@@ -119,16 +120,8 @@ void SculptApp::showPieces()
 void SculptApp::frameModel()
 {
     openvdb::BBoxd world = mPieces.worldBox();
-    openvdb::CoordBBox box;
-    const FieldImage& field = mDocument->session().field();
-    const openvdb::Mat4d& placement = mDocument->pieces()[mDocument->activePiece()].look.placement;
-    if (field.grid().tree().evalLeafBoundingBox(box)) {
-        const openvdb::BBoxd own = field.grid().transform().indexToWorld(box);
-        for (int corner = 0; corner < 8; ++corner)
-            world.expand(placement.transform(openvdb::Vec3d((corner & 1 ? own.max() : own.min()).x(),
-                                                            (corner & 2 ? own.max() : own.min()).y(),
-                                                            (corner & 4 ? own.max() : own.min()).z())));
-    }
+    world.expand(placedBox(leafWorldBox(mDocument->session().field()),
+                           mDocument->pieces()[mDocument->activePiece()].look.placement));
     if (world.empty()) return;
     mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
                   {world.max().x(), world.max().y(), world.max().z()});

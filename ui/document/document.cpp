@@ -203,27 +203,21 @@ void Document::replaceField(FieldImage result, const std::string& label)
 void Document::setLooks(std::vector<PieceLook> looks, const std::string& label)
 {
     if (looks.size() != mPieces.size()) throw std::logic_error("setLooks: one look per piece");
-    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    StepScope scope = piecesStep();
     for (std::size_t i = 0; i < looks.size(); ++i) mPieces[i].look = std::move(looks[i]);
-    scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
-    ++mRevision;
-    ++mPiecesRevision;
-    recordStep(label, std::move(scope));
+    recordPiecesStep(label, std::move(scope));
 }
 
 void Document::movePiece(std::size_t index, const openvdb::Mat4d& placement,
                          std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label)
 {
-    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    StepScope scope = piecesStep();
     for (auto& [piece, field] : dented) {
         mPieces.at(piece).session->replaceField(std::move(field));
         scope.sessions.push_back(mPieces[piece].session);
     }
     mPieces.at(index).look.placement = placement;
-    scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
-    ++mRevision;
-    ++mPiecesRevision;
-    recordStep(label, std::move(scope));
+    recordPiecesStep(label, std::move(scope));
     if (!dented.empty() && mUnscripted.empty()) mUnscripted = label;
 }
 
@@ -231,7 +225,7 @@ void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vect
                              const std::string& label)
 {
     if (mPieces.size() - replaced.size() + added.size() == 0) throw InputError("a document keeps at least one piece");
-    StepScope scope{{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+    StepScope scope = piecesStep();
     const std::size_t at = replaced.empty() ? mPieces.size() : replaced.front();
     const bool activeGoes = std::find(replaced.begin(), replaced.end(), mActive) != replaced.end();
     std::vector<DocumentPiece> pieces = mPieces;
@@ -242,10 +236,21 @@ void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vect
     pieces.insert(pieces.begin() + std::ptrdiff_t(std::min(at, pieces.size())), std::make_move_iterator(added.begin()),
                   std::make_move_iterator(added.end()));
     restorePieces(pieces, activeGoes || !added.empty() ? first : nullptr);
+    recordPiecesStep(label, std::move(scope));
+    if (mUnscripted.empty()) mUnscripted = label;
+}
+
+Document::StepScope Document::piecesStep() const
+{
+    return {{}, std::make_shared<const std::vector<DocumentPiece>>(mPieces), {}};
+}
+
+void Document::recordPiecesStep(const std::string& label, StepScope scope)
+{
     scope.after = std::make_shared<const std::vector<DocumentPiece>>(mPieces);
     ++mRevision;
+    ++mPiecesRevision;
     recordStep(label, std::move(scope));
-    if (mUnscripted.empty()) mUnscripted = label;
 }
 
 void Document::recordStep(const std::string& label, StepScope scope)

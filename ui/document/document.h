@@ -140,6 +140,9 @@ private:
     };
     /// A new undo step: its label, scope and the modified-state bookkeeping.
     void recordStep(const std::string& label, StepScope scope);
+    /// A step changing the pieces: begun with their list as it is, recorded with it as it became.
+    StepScope piecesStep() const;
+    void recordPiecesStep(const std::string& label, StepScope scope);
     /// Drops the oldest steps once a session `edited` has forgotten (its budget) a journal step
     /// they need.
     void forgetBeyondJournals(std::vector<std::shared_ptr<SculptSession>> edited);

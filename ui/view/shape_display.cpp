@@ -1,5 +1,6 @@
 #include "ui/view/shape_display.h"
 
+#include "core/field/placed_box.h"
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/block_cluster.h"
 #include "ui/view/block_polydata.h"
@@ -72,17 +73,7 @@ void ShapeDisplay::setPlacement(const openvdb::Mat4d& placement)
     mActor->SetUserMatrix(matrix);
 }
 
-openvdb::BBoxd ShapeDisplay::worldBox() const
-{
-    openvdb::BBoxd world;
-    if (!mActor || mBox.empty()) return world;
-    for (int corner = 0; corner < 8; ++corner) {
-        const openvdb::Vec3d p((corner & 1 ? mBox.max() : mBox.min()).x(), (corner & 2 ? mBox.max() : mBox.min()).y(),
-                               (corner & 4 ? mBox.max() : mBox.min()).z());
-        world.expand(mPlacement.transform(p));
-    }
-    return world;
-}
+openvdb::BBoxd ShapeDisplay::worldBox() const { return mActor ? placedBox(mBox, mPlacement) : openvdb::BBoxd(); }
 
 void ShapeDisplay::setColour(double red, double green, double blue)
 {
