@@ -4,6 +4,7 @@
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/brushes/brush_tools.h"
+#include "core/masks/mask_paint.h"
 
 #include <cmath>
 
@@ -11,7 +12,7 @@ namespace sculpt {
 
 namespace {
 
-constexpr EnumNames<BrushTool, 10> kToolNames{{{BrushTool::Add, "add"},
+constexpr EnumNames<BrushTool, 12> kToolNames{{{BrushTool::Add, "add"},
                                                {BrushTool::Carve, "carve"},
                                                {BrushTool::Inflate, "inflate"},
                                                {BrushTool::Deflate, "deflate"},
@@ -20,7 +21,9 @@ constexpr EnumNames<BrushTool, 10> kToolNames{{{BrushTool::Add, "add"},
                                                {BrushTool::Grab, "grab"},
                                                {BrushTool::Pinch, "pinch"},
                                                {BrushTool::Follow, "follow"},
-                                               {BrushTool::Primitive, "primitive"}}};
+                                               {BrushTool::Primitive, "primitive"},
+                                               {BrushTool::Mask, "mask"},
+                                               {BrushTool::Unmask, "unmask"}}};
 
 }  // namespace
 
@@ -60,6 +63,11 @@ DirtyRegion applyStamp(FieldImage& field, const BrushSettings& brush, const Brus
     case BrushTool::Pinch: return pinch(field, brush, stamp, journal);
     case BrushTool::Follow: return follow(field, brush, stamp, journal);
     case BrushTool::Primitive: return stampPrimitives(field, *brush.primitive, stamp, journal);
+    case BrushTool::Mask:
+    case BrushTool::Unmask: {
+        const double amount = brush.strength * stamp.pressure * (brush.tool == BrushTool::Mask ? 1.0 : -1.0);
+        return paintMask(field, {stamp.centreWorld, brush.radiusWorld, brush.falloff}, amount, journal);
+    }
     }
     return {};
 }

@@ -21,7 +21,10 @@
 ///   follow        the surface moves a fraction s p w of its signed distance to a target surface,
 ///                 read at its closest point: the target term of the level-set motion, only
 ///                 where the brush goes (a rough import snaps to a clean template under it);
-///   primitive     the primitive set, moved to the stamp, combined by its own operation.
+///   primitive     the primitive set, moved to the stamp, combined by its own operation;
+///   mask / unmask paints the mask (FieldImage::mask) towards 1 / 0 by s p w of the way: the
+///                 surface does not move.
+/// Every tool but the mask's holds the share of its change the mask holds (surface_mask.h).
 /// Motions larger than a voxel are split into sub-steps of at most one voxel, each redistanced,
 /// so the band stays a distance field. Everything is deterministic, whatever the thread count.
 
@@ -38,9 +41,9 @@ namespace sculpt {
 class LeafJournal;
 enum class CsgOperation;
 
-enum class BrushTool { Add, Carve, Inflate, Deflate, Smooth, Flatten, Grab, Pinch, Follow, Primitive };
+enum class BrushTool { Add, Carve, Inflate, Deflate, Smooth, Flatten, Grab, Pinch, Follow, Primitive, Mask, Unmask };
 
-/// "add", "carve", ... "follow", "primitive". @throws InputError for other names, listing the valid ones.
+/// "add", "carve", ... "follow", "primitive", "mask", "unmask". @throws InputError for other names, listing the valid ones.
 BrushTool brushToolFromName(const std::string& name);
 const char* brushToolName(BrushTool tool);
 

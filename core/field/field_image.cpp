@@ -70,6 +70,35 @@ FieldImage::FieldImage(openvdb::FloatGrid::Ptr grid, std::string units)
     }
 }
 
+FieldImage FieldImage::deepCopy() const
+{
+    FieldImage copy(mGrid->deepCopy(), mUnits);
+    if (mask()) copy.mMask = mMask->deepCopy();
+    return copy;
+}
+
+openvdb::FloatGrid::Ptr makeMaskGrid(const openvdb::math::Transform& xform)
+{
+    auto mask = openvdb::FloatGrid::create(0.0f);
+    mask->setTransform(xform.copy());
+    mask->setGridClass(openvdb::GRID_FOG_VOLUME);
+    mask->setName("mask");
+    return mask;
+}
+
+openvdb::FloatGrid& FieldImage::mutableMask()
+{
+    if (!mMask) mMask = makeMaskGrid(mGrid->transform());
+    return *mMask;
+}
+
+void FieldImage::setMask(openvdb::FloatGrid::Ptr mask)
+{
+    if (mask && mask->transform() != mGrid->transform())
+        throw InputError("the mask '" + mask->getName() + "' is not on the surface's voxels (another transform)");
+    mMask = std::move(mask);
+}
+
 void FieldImage::swapGrid(openvdb::FloatGrid::Ptr& other)
 {
     if (!other || other->getGridClass() != openvdb::GRID_LEVEL_SET || other->transform() != mGrid->transform()) {

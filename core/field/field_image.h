@@ -24,6 +24,9 @@ openvdb::FloatGrid::Ptr makeLevelSetGrid(const openvdb::math::Transform& xform, 
 /// The same on the lattice of voxel size h at the origin, background halfWidthVoxels x h.
 openvdb::FloatGrid::Ptr makeLevelSetGrid(double voxelSize, double halfWidthVoxels);
 
+/// An empty mask (a fog grid of background 0 named "mask") on a copy of `xform`.
+openvdb::FloatGrid::Ptr makeMaskGrid(const openvdb::math::Transform& xform);
+
 /// Largest |index coordinate| a model may reach: the mesher's edge keys hold 20 bits a
 /// coordinate (2^19 either side), less a block's margin.
 constexpr int kMaxIndexCoordinate = (1 << 19) - 128;
@@ -44,8 +47,8 @@ public:
     ///         non-linear transform, or a background narrower than one voxel.
     explicit FieldImage(openvdb::FloatGrid::Ptr grid, std::string units = kDefaultUnits);
 
-    /// A field of its own: the grid copied (a FieldImage copied shares its grid), the same units.
-    FieldImage deepCopy() const { return FieldImage(mGrid->deepCopy(), mUnits); }
+    /// A field of its own: the grid and the mask copied (a FieldImage copied shares them), the same units.
+    FieldImage deepCopy() const;
 
     /// Edge length of a voxel, in world units.
     double voxelSize() const { return mVoxelSize; }
@@ -61,6 +64,18 @@ public:
     openvdb::FloatGrid::ConstPtr gridPtr() const { return mGrid; }
     /// The grid's shared pointer with write access, to hand the whole grid on (an undo record).
     openvdb::FloatGrid::Ptr mutableGridPtr() { return mGrid; }
+
+    /// The mask, or null when nothing is masked: a fog grid (0 free ... 1 held, background 0) on
+    /// the field's transform, read at each voxel's closest surface point (surface_mask.h). Every
+    /// edit keeps the share of the surface its mask holds.
+    const openvdb::FloatGrid* mask() const { return mMask && !mMask->tree().empty() ? mMask.get() : nullptr; }
+    /// Write access to the mask, an empty one made on first use; the editor marks what it changed.
+    openvdb::FloatGrid& mutableMask();
+    /// The mask's shared pointer (null when there is none), to hand it to a copy of the field.
+    openvdb::FloatGrid::Ptr maskPtr() const { return mask() ? mMask : nullptr; }
+    /// Replaces the mask (null: none). @throws InputError unless it is on the field's transform.
+    void setMask(openvdb::FloatGrid::Ptr mask);
+
     /// Never the same for two field images of this process, a copy's or an assigned one's
     /// included: with a version, what a cache of it (a picker) is keyed on.
     std::uint64_t id() const { return mId.value(); }
@@ -73,7 +88,7 @@ public:
     /// Every leaf of the grid, for edits that change the whole field.
     DirtyRegion allLeaves() const;
     /// Exchanges the grid with `other` (a whole-model edit and its undo); every leaf of both is
-    /// marked dirty. @throws InputError unless `other` is a level set on the same transform.
+    /// marked dirty; the mask stays. @throws InputError unless `other` is a level set on the same transform.
     void swapGrid(openvdb::FloatGrid::Ptr& other);
 
     /// Whether anything is inside: a voxel or tile of negative distance (an edit that removed
@@ -83,6 +98,7 @@ public:
 private:
     UniqueId mId;
     openvdb::FloatGrid::Ptr mGrid;
+    openvdb::FloatGrid::Ptr mMask;
     std::string mUnits;
     double mVoxelSize = 0.0;
     DirtyRegion mDirty;

@@ -60,6 +60,14 @@ void LeafJournal::save(const openvdb::FloatTree& tree, const openvdb::Coord& lea
     mEntries.emplace(leafOrigin, std::move(saved));
 }
 
+void LeafJournal::saveMask(const openvdb::FloatTree& maskTree, const openvdb::Coord& leafOrigin)
+{
+    if (mMaskEntries.count(leafOrigin)) return;
+    Saved saved = capture(maskTree, leafOrigin);
+    mBytes += saved.memoryBytes();
+    mMaskEntries.emplace(leafOrigin, std::move(saved));
+}
+
 void LeafJournal::restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin, const Saved& saved)
 {
     if (saved.leaf) {
@@ -93,12 +101,18 @@ void LeafJournal::swap(FieldImage& field)
         mBytes = mWholeGrid->memUsage();
         return;
     }
-    openvdb::FloatTree& tree = field.mutableGrid().tree();
-    // Capture everything first: restoring a coarse tile wipes the leaves below it.
-    std::map<openvdb::Coord, Saved> current;
-    std::size_t currentBytes = 0;
     DirtyRegion touched;
-    for (const auto& [origin, saved] : mEntries) {
+    mBytes = swapEntries(field.mutableGrid().tree(), mEntries, touched);
+    if (!mMaskEntries.empty()) mBytes += swapEntries(field.mutableMask().tree(), mMaskEntries, touched);
+    field.markDirty(touched);
+}
+
+std::size_t LeafJournal::swapEntries(openvdb::FloatTree& tree, Entries& entries, DirtyRegion& touched)
+{
+    // Capture everything first: restoring a coarse tile wipes the leaves below it.
+    Entries current;
+    std::size_t currentBytes = 0;
+    for (const auto& [origin, saved] : entries) {
         Saved now = capture(tree, origin);
         currentBytes += now.memoryBytes();
         current.emplace(origin, std::move(now));
@@ -107,16 +121,15 @@ void LeafJournal::swap(FieldImage& field)
     // Coarsest first, leaves last: a saved state never nests inside another's region, except
     // the tiles one split produced, which all agree.
     std::vector<std::pair<int, openvdb::Coord>> order;
-    for (const auto& [origin, saved] : mEntries)
+    for (const auto& [origin, saved] : entries)
         order.emplace_back(saved.leaf ? 0 : saved.level < 0 ? 99 : saved.level, origin);
     std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
         return a.first > b.first || (a.first == b.first && a.second < b.second);
     });
-    for (const auto& [rank, origin] : order) restore(tree, origin, mEntries.at(origin));
+    for (const auto& [rank, origin] : order) restore(tree, origin, entries.at(origin));
     tree.clearAllAccessors();
-    mEntries = std::move(current);
-    mBytes = currentBytes;
-    field.markDirty(touched);
+    entries = std::move(current);
+    return currentBytes;
 }
 
 }  // namespace sculpt

@@ -35,6 +35,9 @@ public:
     /// Keeps the tree's state at this leaf position, unless this journal already holds it.
     void save(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
     bool contains(const openvdb::Coord& leafOrigin) const;
+    /// The same for a leaf position of the field's mask (FieldImage::mask): an edit of the mask is
+    /// journalled with the surface's, and swap() restores both.
+    void saveMask(const openvdb::FloatTree& maskTree, const openvdb::Coord& leafOrigin);
 
     /// What the tree held at a saved leaf position: that leaf (its values), or, where there was
     /// none, the value of the tile or background that covered it.
@@ -48,8 +51,8 @@ public:
     /// Restores every saved position and keeps what it replaced; marks them dirty in `field`.
     void swap(FieldImage& field);
 
-    bool empty() const { return mEntries.empty() && !mWholeGrid; }
-    std::size_t leafCount() const { return mEntries.size(); }
+    bool empty() const { return mEntries.empty() && mMaskEntries.empty() && !mWholeGrid; }
+    std::size_t leafCount() const { return mEntries.size() + mMaskEntries.size(); }
     /// Heap bytes held (leaf copies and bookkeeping).
     std::size_t memoryBytes() const { return mBytes; }
 
@@ -57,8 +60,13 @@ private:
     struct Saved;
     static Saved capture(const openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin);
     static void restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOrigin, const Saved& saved);
+    using Entries = std::map<openvdb::Coord, Saved>;
+    /// Restores `entries` into `tree`, keeping what they replaced in their place; adds the leaf
+    /// positions to `touched` and returns the bytes now held.
+    static std::size_t swapEntries(openvdb::FloatTree& tree, Entries& entries, DirtyRegion& touched);
 
-    std::map<openvdb::Coord, Saved> mEntries;
+    Entries mEntries;
+    Entries mMaskEntries;
     openvdb::FloatGrid::Ptr mWholeGrid;
     std::size_t mBytes = 0;
 };

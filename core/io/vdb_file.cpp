@@ -14,6 +14,7 @@
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -33,6 +34,7 @@ constexpr const char* kMetaChecksum = "sculpt.checksum";
 constexpr const char* kMetaPieceColour = "sculpt.piece_colour";
 constexpr const char* kMetaPieceVisible = "sculpt.piece_visible";
 constexpr const char* kMetaPiecePlacement = "sculpt.piece_placement";
+constexpr const char* kMetaMaskOf = "sculpt.mask_of";
 
 /// The grid to edit: the one named, else the default one.
 const VdbGridEntry& chooseGrid(const VdbLayout& layout, const std::string& requested)
@@ -202,6 +204,39 @@ void checkPieceChecksum(openvdb::FloatGrid& grid)
     }
 }
 
+/// The grid a surface's mask is written as (null when nothing is masked): its tree shared, named
+/// after the surface, marked as its mask, with its own checksum.
+openvdb::GridBase::Ptr maskGridOf(const FieldImage& field, const std::string& surfaceName)
+{
+    if (!field.mask()) return nullptr;
+    openvdb::FloatGrid::Ptr grid = field.maskPtr()->copy();
+    grid->setName(surfaceName + ".mask");
+    grid->insertMeta(kMetaMaskOf, openvdb::StringMetadata(surfaceName));
+    grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
+    return grid;
+}
+
+/// Takes the mask of the surface named `surfaceName` out of `grids` (if there is one) and gives
+/// it to `field`, its checksum and lattice checked.
+void attachMask(FieldImage& field, const std::string& surfaceName, openvdb::GridPtrVec& grids)
+{
+    const auto isMask = [&](const openvdb::GridBase::Ptr& grid) {
+        const auto of = grid->getMetadata<openvdb::StringMetadata>(kMetaMaskOf);
+        return of && of->value() == surfaceName && openvdb::gridPtrCast<openvdb::FloatGrid>(grid);
+    };
+    const auto found = std::find_if(grids.begin(), grids.end(), isMask);
+    if (found == grids.end()) return;
+    const openvdb::FloatGrid::Ptr mask = openvdb::gridPtrCast<openvdb::FloatGrid>(*found);
+    if (auto sum = mask->getMetadata<openvdb::StringMetadata>(kMetaChecksum)) {
+        if (sum->value() != formatChecksum(gridChecksum(*mask)))
+            throw InputError("corrupt (the mask of '" + surfaceName + "' does not match its checksum)");
+    }
+    for (const char* ours : {kMetaMaskOf, kMetaChecksum}) mask->removeMeta(ours);
+    mask->setName("mask");
+    field.setMask(mask);
+    grids.erase(found);
+}
+
 /// The file's version, and, for the grid it records as edited (`edited`), its voxel size and checksum.
 void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field, const fs::path& path, bool edited)
 {
@@ -241,6 +276,7 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     checkPieceChecksum(*grid);
     FieldImage field(asNarrowBand(grid, path, warnings), units);
     checkDocumentMetadata(meta, field, path, layout.editedGrid.empty() || layout.editedGrid == chosen.name);
+    attachMask(field, chosen.name, companions.grids);
     for (const char* ours : {kMetaVersion, kMetaUnits, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
         meta.removeMeta(ours);
     }
@@ -322,7 +358,9 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
         }
         try {
             checkPieceChecksum(*levelSet);
-            read.pieces.push_back(pieceOf(FieldImage(levelSet, units)));
+            FieldImage field(levelSet, units);
+            attachMask(field, levelSet->getName(), document.companions.grids);
+            read.pieces.push_back(pieceOf(std::move(field)));
         } catch (const InputError& e) {
             throw InputError(path.string() + ": " + e.what());
         }
@@ -353,6 +391,7 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
         grids.front() = named;
     }
     meta.insertMeta(kVdbEditedGridKey, openvdb::StringMetadata(grids.front()->getName()));
+    if (auto mask = maskGridOf(field, grids.front()->getName())) grids.push_back(mask);
     grids.insert(grids.end(), companions.grids.begin(), companions.grids.end());
     try {
         openvdb::io::File file(out.temporaryPath().string());
@@ -368,9 +407,14 @@ void writeVdbPieces(const std::vector<Piece>& pieces, const fs::path& path, cons
 {
     checkPieceNames(pieces, path);
     VdbCompanions others{{}, companions.metadata};
-    for (std::size_t i = 1; i < pieces.size(); ++i) others.grids.push_back(pieceGrid(pieces[i], true));
+    for (std::size_t i = 1; i < pieces.size(); ++i) {
+        others.grids.push_back(pieceGrid(pieces[i], true));
+        if (auto mask = maskGridOf(pieces[i].field, pieces[i].name)) others.grids.push_back(mask);
+    }
     others.grids.insert(others.grids.end(), companions.grids.begin(), companions.grids.end());
-    writeFieldImage(FieldImage(pieceGrid(pieces.front(), false), pieces.front().field.units()), path, others);
+    FieldImage first(pieceGrid(pieces.front(), false), pieces.front().field.units());
+    first.setMask(pieces.front().field.maskPtr());
+    writeFieldImage(first, path, others);
 }
 
 }  // namespace sculpt

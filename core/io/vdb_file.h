@@ -15,6 +15,10 @@
 ///   sculpt.piece_visible  (bool)
 ///   sculpt.piece_placement (mat4d)— world from the grid's world: a move that kept the voxels
 ///   sculpt.checksum       (string)— as above, for the pieces after the first (the file's is the first's)
+/// A surface's mask (FieldImage::mask), when anything is masked, is a fog grid named after it
+/// ("surface.mask"), written after it, carrying
+///   sculpt.mask_of        (string)— the name of its surface
+///   sculpt.checksum       (string)— as above, for the mask's voxels
 /// Files from other programs are accepted: the grid named "surface" is edited, else the only
 /// float level set, else the one the user names. Their other grids and metadata are kept and
 /// written back on save; a float grid that is not a narrow band (a dense `phi`) is rebuilt into one.

@@ -3,11 +3,13 @@
 #include "core/field/band_rule.h"
 #include "core/field/central_difference.h"
 #include "core/field/leaf_journal.h"
+#include "core/field/surface_mask.h"
 #include "core/local/band_redistance.h"
 #include "core/local/speck_removal.h"
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace sculpt {
 
@@ -114,36 +116,37 @@ DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal)
     openvdb::FloatGrid& grid = target.mutableGrid();
     const Capsule region = mRegion.inIndexSpace(grid.transform());
     removeSpecks(mField.mutableGrid(), region, mInnerLeaves);
-    auto acc = grid.getAccessor();
-    auto patchAcc = mField.grid().getConstAccessor();
-    DirtyRegion touched;
-    std::vector<openvdb::Coord> changed;
+    const float background = grid.background();
+    // Every change is found before any is written: the mask is read on the surface as it was.
+    std::optional<MaskReader> mask;
+    if (target.mask()) mask.emplace(grid, *target.mask());
+    struct Change {
+        openvdb::Coord ijk;
+        BandValue value;
+    };
+    std::vector<std::pair<openvdb::Coord, std::vector<Change>>> edits;
+    const auto acc = grid.getConstAccessor();
+    const auto patchAcc = mField.grid().getConstAccessor();
     for (const auto& origin : mInnerLeaves) {
-        const LeafT* from = patchAcc.probeConstLeaf(origin);
-        const LeafT* to = acc.probeConstLeaf(origin);
-        if (!from && !to && patchAcc.getValue(origin) == acc.getValue(origin)) continue;  // equal tiles
-        changed.clear();
+        if (!patchAcc.probeConstLeaf(origin) && !acc.probeConstLeaf(origin) &&
+            patchAcc.getValue(origin) == acc.getValue(origin))
+            continue;  // equal tiles
+        std::vector<Change> changes;
         for (auto ijk = openvdb::CoordBBox::createCube(origin, LeafT::DIM).begin(); ijk; ++ijk) {
             if (!region.contains((*ijk).asVec3d())) continue;
-            const openvdb::Index k = LeafT::coordToOffset(*ijk);
-            const float value = from ? from->getValue(k) : patchAcc.getValue(*ijk);
-            const bool active = from ? from->isValueOn(k) : patchAcc.isValueOn(*ijk);
-            if (to ? value != to->getValue(k) || active != to->isValueOn(k)
-                   : value != acc.getValue(*ijk) || active != acc.isValueOn(*ijk)) {
-                changed.push_back(*ijk);
-            }
+            const float old = acc.getValue(*ijk);
+            BandValue next{patchAcc.getValue(*ijk), patchAcc.isValueOn(*ijk)};
+            if (mask && next.value != old) next = maskedValue(old, next.value, mask->at(*ijk), background);
+            if (next.value != old || next.active != acc.isValueOn(*ijk)) changes.push_back({*ijk, next});
         }
-        if (changed.empty()) continue;
+        if (!changes.empty()) edits.emplace_back(origin, std::move(changes));
+    }
+    auto write = grid.getAccessor();
+    DirtyRegion touched;
+    for (const auto& [origin, changes] : edits) {
         if (journal) journal->save(grid.tree(), origin);
-        LeafT* leaf = acc.touchLeaf(origin);
-        for (const auto& ijk : changed) {
-            const float value = patchAcc.getValue(ijk);
-            if (patchAcc.isValueOn(ijk)) {
-                leaf->setValueOn(ijk, value);
-            } else {
-                leaf->setValueOff(ijk, value);
-            }
-        }
+        LeafT* leaf = write.touchLeaf(origin);
+        for (const Change& change : changes) setBandValue(*leaf, change.ijk, change.value);
         touched.addVoxel(origin);
     }
     target.markDirty(touched);

@@ -4,6 +4,7 @@
 #include "core/base/text_format.h"
 #include "core/field/central_difference.h"
 #include "core/field/dense_gather.h"
+#include "core/field/surface_mask.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/volume_estimate.h"
 
@@ -302,11 +303,22 @@ double LevelSetEvolution::step(double maxDt)
 {
     const double dt = std::min(maxDt, stableTimeStep());
     if (!std::isfinite(dt) || dt <= 0.0) return 0.0;  // no term moves anything
-    applyStep(dt);
+    heldByMask([&] {
+        applyStep(dt);
+        if (mTerms.volume) correctVolume();
+    });
     mTime += dt;
     ++mSteps;
-    if (mTerms.volume) correctVolume();
     return dt;
+}
+
+template <typename Edit>
+void LevelSetEvolution::heldByMask(const Edit& edit)
+{
+    if (!mField.mask()) return edit();
+    const openvdb::FloatGrid::ConstPtr before = mField.grid().deepCopy();
+    edit();
+    keepMasked(mField, *before);
 }
 
 void LevelSetEvolution::calibrateVolume()
@@ -333,7 +345,7 @@ void LevelSetEvolution::settleVolume()
         const MeshVolumeArea now = meshVolumeArea(mField);
         const double error = mTerms.volume->targetVolume - now.volume;
         if (!(now.area > 0.0) || std::abs(error) <= 1e-4 * std::abs(mTerms.volume->targetVolume)) break;
-        offsetValues(std::clamp(error / now.area, -mField.voxelSize(), mField.voxelSize()));
+        heldByMask([&] { offsetValues(std::clamp(error / now.area, -mField.voxelSize(), mField.voxelSize())); });
     }
     mCalibratedAt = -1;
 }
@@ -405,7 +417,7 @@ void LevelSetEvolution::updateTargetReach(double fastest)
 
 void LevelSetEvolution::redistance()
 {
-    redistanceGrid(mField.mutableGrid(), mOptions);
+    heldByMask([&] { redistanceGrid(mField.mutableGrid(), mOptions); });
     mMovedSinceRedistance = 0.0;
     mDiffusedSinceRedistance = 0.0;
     mField.markDirty(mField.allLeaves());

@@ -13,6 +13,9 @@
 /// a voxel (beta t >= h^2 / 2), the band is rebuilt and redistanced with
 /// openvdb::tools::LevelSetTracker.
 ///
+/// A masked field (FieldImage::mask) keeps, after every step, the share of it the mask holds at
+/// each voxel's closest surface point: the speed times (1 - mask); held voxels stay bit for bit.
+///
 /// A step visits every leaf (OpenVDB's tracker does too): a local motion runs on a LocalPatch's
 /// copy of the leaves around it, as the smoothing brush does.
 
@@ -60,6 +63,9 @@ public:
 
 private:
     struct Work;
+    /// Runs an edit of the whole field, then holds the share of it the field's mask holds.
+    template <typename Edit>
+    void heldByMask(const Edit& edit);
     void applyStep(double dt);
     /// Volume control by operator splitting: after the other terms' step, a uniform offset
     /// brings the volume back to its target.

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/field/surface_mask.h"
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/level_set_evolution.h"
@@ -54,7 +55,22 @@ FieldImage resampleInto(const FieldImage& source, const FieldImage& target, cons
     auto out = makeLevelSetGrid(target.grid().transform(), target.grid().background());
     out->setName(source.grid().getName());
     openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(*moved, *out);
-    return FieldImage(out, source.units());
+    FieldImage resampled(out, source.units());
+    if (source.mask()) {
+        auto mask = source.mask()->deepCopy();
+        mask->transform().postTranslate(shift);
+        openvdb::tools::resampleToMatch<openvdb::tools::BoxSampler>(*mask, resampled.mutableMask());
+    }
+    return resampled;
+}
+
+/// A frame as the mask lets it be: the share of the way from `start` the mask holds kept back.
+FieldImage heldByMask(const FieldImage& frame, const FieldImage& start)
+{
+    FieldImage held = frame.deepCopy();
+    held.setMask(start.maskPtr());
+    keepMasked(held, start.grid());
+    return held;
 }
 
 }  // namespace
@@ -276,9 +292,12 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
         }
         if (evolution->terms().volume) evolution->settleVolume();  // on the straight line
         if (index > 0) stepped(field);
-        const double volume = meshVolumeArea(field).volume;
+        std::optional<FieldImage> held;
+        if (start.mask()) held.emplace(heldByMask(field, start));
+        const FieldImage& shown = held ? *held : field;
+        const double volume = meshVolumeArea(shown).volume;
         summary.frameVolumes.push_back(volume);
-        onFrame(MorphFrame{index, now(), volume, field});
+        onFrame(MorphFrame{index, now(), volume, shown});
     };
     emit(0);
     for (int frame = 1; frame < o.frames; ++frame) {

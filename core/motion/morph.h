@@ -55,7 +55,9 @@ struct MorphSummary {
     std::vector<double> frameVolumes;
 };
 
-/// Morphs `source` into `target`. The source is first resampled into the target's voxels. A first
+/// Morphs `source` into `target`. The source is first resampled into the target's voxels, its mask
+/// too: a masked source's frames keep the share of the way from the source its mask holds (held
+/// voxels bit for bit the source's; the summary's distances are the free motion's). A first
 /// pass finds the time T the morph needs to converge; the second records frames at i T/(N-1),
 /// continuing past T if it has not converged yet (the last frame is the final state). Without
 /// volume control the second pass starts each frame from the first pass's latest kept state

@@ -51,6 +51,7 @@ void addApplyCommand(CLI::App& app)
                  "and data/strokes/) on a document. Replays are deterministic: the same input and\n"
                  "script give the same output bit for bit, whatever the thread count.");
     addDocumentInput(*cmd, options->input, "the .vdb document to sculpt");
+    addMaskInput(*cmd, options->input);
     cmd->add_option("script", options->script, "the stroke script (.json)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");

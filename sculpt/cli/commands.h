@@ -29,6 +29,10 @@ void addApplyCommand(CLI::App& app);
 /// `sculpt import`: a scan or a mesh as a new document.
 void addImportCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
+/// `sculpt hollow`: a shell of a wall thickness, with drain holes.
+void addHollowCommand(CLI::App& app);
+/// `sculpt islands`: remove the small disjoint solids.
+void addIslandsCommand(CLI::App& app);
 /// `sculpt pieces`: add, rename, colour, hide, merge, split and delete a document's pieces.
 void addPiecesCommand(CLI::App& app);
 

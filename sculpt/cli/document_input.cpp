@@ -1,7 +1,10 @@
 #include "sculpt/cli/document_input.h"
 
+#include "core/base/errors.h"
+
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <iostream>
 
 namespace sculpt::cli {
@@ -15,7 +18,37 @@ void addDocumentInput(CLI::App& cmd, DocumentInput& input, const std::string& wh
                    "The others are kept.");
 }
 
+void addMaskInput(CLI::App& cmd, DocumentInput& input)
+{
+    cmd.add_option("--mask", input.mask,
+                   "FILE[:GRID]: the mask the edit keeps to (1 holds the surface, 0 frees it), taken from\n"
+                   "another document: GRID is 'mask' (its first piece's, the default) or 'PIECE.mask'.\n"
+                   "'none' edits the whole surface. Default: the document's own mask, if it has one.");
+}
+
 namespace {
+
+/// The mask `spec` names ("FILE", "FILE:mask", "FILE:PIECE.mask").
+openvdb::FloatGrid::Ptr readMask(const std::string& spec)
+{
+    std::string path = spec, grid;
+    const std::size_t colon = spec.rfind(':');
+    std::error_code ec;
+    if (colon != std::string::npos && !std::filesystem::exists(spec, ec)) {
+        path = spec.substr(0, colon);
+        grid = spec.substr(colon + 1);
+    }
+    VdbPieces document = readVdbPieces(path);
+    std::string masks;
+    for (const Piece& piece : document.pieces) {
+        const std::string name = piece.name + ".mask";
+        const bool named = grid == name || ((grid.empty() || grid == "mask") && &piece == &document.pieces.front());
+        if (named && piece.field.mask()) return piece.field.maskPtr();
+        if (piece.field.mask()) masks += (masks.empty() ? "" : ", ") + name;
+    }
+    throw InputError(path + ": holds no mask" + (grid.empty() ? "" : " named '" + grid + "'") +
+                     (masks.empty() ? " (nothing of it is masked)" : "; its masks: " + masks));
+}
 
 void printWarnings(const std::vector<std::string>& warnings)
 {
@@ -40,6 +73,15 @@ VdbDocument readDocument(const DocumentInput& input)
 {
     VdbDocument document = readVdbDocument(input.path, input.grid);
     printWarnings(document.warnings);
+    if (input.mask == "none") {
+        document.field.setMask(nullptr);
+    } else if (!input.mask.empty()) {
+        const openvdb::FloatGrid::Ptr mask = readMask(input.mask);
+        if (mask->transform() != document.field.grid().transform())
+            throw InputError(input.mask + ": the mask is on other voxels than " + input.path +
+                             "'s surface (another voxel size or origin)");
+        document.field.setMask(mask);
+    }
     return document;
 }
 

@@ -17,7 +17,11 @@ namespace sculpt::cli {
 struct DocumentInput {
     std::string path;
     std::string grid;  ///< a piece's or grid's name; empty: the edited one, "surface" or the only level set
+    std::string mask;  ///< `--mask FILE[:GRID]` or "none"; empty: the document's own mask
 };
+
+/// Adds `--mask` to an editing command: the mask its edit keeps to, instead of the document's own.
+void addMaskInput(CLI::App& cmd, DocumentInput& input);
 
 /// Adds the positional `input` (described by `what`) and `--grid` to `cmd`.
 void addDocumentInput(CLI::App& cmd, DocumentInput& input, const std::string& what);
@@ -25,7 +29,9 @@ void addDocumentInput(CLI::App& cmd, DocumentInput& input, const std::string& wh
 /// Every piece of the document, or the one `grid` names, printing its warnings on stderr.
 std::vector<Piece> readPieces(const DocumentInput& input);
 
-/// Reads the document, printing its warnings (a grid left out, a band rebuilt) on stderr.
+/// Reads the document, printing its warnings (a grid left out, a band rebuilt) on stderr, with the
+/// mask `--mask` names in place of its own.
+/// @throws InputError naming the mask's file if it holds no such mask or one on other voxels.
 VdbDocument readDocument(const DocumentInput& input);
 
 }  // namespace sculpt::cli

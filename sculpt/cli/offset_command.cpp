@@ -35,6 +35,7 @@ void addOffsetCommand(CLI::App& app)
         app.add_subcommand("offset", "Move the whole surface along its normal by a distance: positive grows\n"
                                      "(thickens), negative shrinks (thins). Cost grows with |distance| / voxel size.");
     addDocumentInput(*cmd, options->input, "the .vdb document");
+    addMaskInput(*cmd, options->input);
     cmd->add_option("--distance", options->distance, "offset in world units (> 0 grows)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
     cmd->callback([options] { runOffset(*options); });

@@ -40,6 +40,7 @@ void addSmoothCommand(CLI::App& app)
         app.add_subcommand("smooth", "Smooth the whole surface by mean-curvature flow: bumps and creases relax,\n"
                                      "small features vanish first. One iteration is one stable step (dt = h^2/6).");
     addDocumentInput(*cmd, options->input, "the .vdb document to smooth");
+    addMaskInput(*cmd, options->input);
     cmd->add_option("--iterations", options->iterations, "number of smoothing steps")
         ->check(nonNegativeNumber())
         ->capture_default_str();

@@ -4,6 +4,7 @@
 #include "core/base/text_format.h"
 #include "core/motion/surface_flows.h"
 #include "core/motion/volume_estimate.h"
+#include "core/solids/islands.h"
 
 #include <cmath>
 
@@ -11,8 +12,13 @@ namespace sculpt {
 
 std::string filterLabel(const ModelFilter& filter)
 {
-    if (filter.kind == ModelFilter::Kind::Offset) {
+    switch (filter.kind) {
+    case ModelFilter::Kind::Offset:
         return "offset " + std::string(filter.distanceWorld > 0.0 ? "+" : "") + formatNumber(filter.distanceWorld);
+    case ModelFilter::Kind::Hollow:
+        return "hollow " + formatNumber(filter.hollow.thicknessWorld) + (filter.drain ? " (drained)" : "");
+    case ModelFilter::Kind::RemoveIslands: return "remove islands under " + formatNumber(filter.minIslandVolume);
+    case ModelFilter::Kind::Smooth: break;
     }
     return "smooth " + std::to_string(filter.iterations) + (filter.keepVolume ? " (keep volume)" : "");
 }
@@ -45,6 +51,18 @@ void refuseUnboundedWork(const FieldImage& field, const ModelFilter& filter, con
     }
 }
 
+/// The shell hollow() makes, drained as asked, keeping the field's mask.
+FieldImage hollowed(const FieldImage& field, const ModelFilter& filter, const Progress& progress)
+{
+    HollowResult shell = hollow(field, filter.hollow, filter.up, progress);
+    if (filter.drain) {
+        cutDrainHoles(shell.field, drainHolesUnder(shell.cavityBottoms, filter.up, filter.hollow.thicknessWorld,
+                                                   filter.drainRadiusWorld));
+    }
+    shell.field.setMask(field.maskPtr());
+    return std::move(shell.field);
+}
+
 }  // namespace
 
 FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::string& source, const Progress& progress)
@@ -53,10 +71,11 @@ FieldImage applyFilter(FieldImage field, const ModelFilter& filter, const std::s
         throw InputError("offset distance must be finite");
     }
     refuseUnboundedWork(field, filter, source);
-    if (filter.kind == ModelFilter::Kind::Smooth) {
-        smooth(field, filter.iterations, filter.keepVolume, progress);
-    } else {
-        offset(field, filter.distanceWorld, progress);
+    switch (filter.kind) {
+    case ModelFilter::Kind::Smooth: smooth(field, filter.iterations, filter.keepVolume, progress); break;
+    case ModelFilter::Kind::Offset: offset(field, filter.distanceWorld, progress); break;
+    case ModelFilter::Kind::Hollow: field = hollowed(field, filter, progress); break;
+    case ModelFilter::Kind::RemoveIslands: removeIslandsUnder(field, filter.minIslandVolume); break;
     }
     refuseEmptyResult(field, source, filterLabel(filter));
     return field;

@@ -218,6 +218,17 @@ void SculptSession::replaceField(FieldImage result)
     updateMesh();
 }
 
+bool SculptSession::editMask(MaskOperation operation, int times)
+{
+    if (mLive) throw std::logic_error("editMask during a live stroke");
+    LeafJournal journal;
+    applyMaskOperation(mField, operation, times, &journal);
+    const bool changed = !journal.empty();
+    mHistory.push(std::move(journal));
+    updateMesh();
+    return changed;
+}
+
 bool SculptSession::undo()
 {
     const bool done = mHistory.undo(mField);

@@ -7,6 +7,7 @@
 /// those), then recorded as one undo step.
 
 #include "core/field/field_image.h"
+#include "core/masks/mask_operations.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/push.h"
 #include "sculpt/session/stroke.h"
@@ -61,6 +62,10 @@ public:
     /// one undo step that keeps the whole previous grid. Not during a live stroke.
     /// @throws InputError unless `result` has the field's transform; nothing changes then.
     void replaceField(FieldImage result);
+    /// Applies a mask operation (invert, clear, blur, ...) `times` times to the whole mask, as one
+    /// undo step; false if it changed nothing (no step then). Not during a live stroke.
+    /// @throws InputError if times < 1; nothing changes then.
+    bool editMask(MaskOperation operation, int times = 1);
     bool undo();
     bool redo();
 

@@ -6,6 +6,7 @@
 #include "core/primitives/scene_file.h"
 #include "sculpt/session/shape_import.h"
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -135,15 +136,33 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
     return stroke;
 }
 
+ScriptEvent parseMaskEvent(const json& j, const std::string& where)
+{
+    onlyFields(j, {"action", "operation", "times"}, where);
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::Mask;
+    try {
+        event.maskOperation = maskOperationFromName(textOr(j, "operation", "", where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+    const double times = numberOr(j, "times", 1.0, where);
+    if (!(times >= 1.0 && times <= 1000.0) || times != std::floor(times))
+        throw InputError(where + ": field 'times' must be a whole number from 1 to 1000 (got " + j["times"].dump() + ")");
+    event.maskTimes = int(times);
+    return event;
+}
+
 ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& context)
 {
     if (!j.is_object()) throw InputError(where + " must be an object");
     if (j.contains("action")) {
-        onlyFields(j, {"action"}, where);
         const std::string action = textOr(j, "action", "", where);
+        if (action == "mask") return parseMaskEvent(j, where);
+        onlyFields(j, {"action"}, where);
         if (action == "undo") return {ScriptEvent::Kind::Undo, {}, {}};
         if (action == "redo") return {ScriptEvent::Kind::Redo, {}, {}};
-        throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\" or \"redo\")");
+        throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\", \"redo\" or \"mask\")");
     }
     field(j, "tool", where);
     ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, context), {}};
@@ -189,6 +208,10 @@ std::string writeStrokeScript(const StrokeScript& script)
         case ScriptEvent::Kind::Stroke: events.push_back(strokeJson(event)); break;
         case ScriptEvent::Kind::Undo: events.push_back({{"action", "undo"}}); break;
         case ScriptEvent::Kind::Redo: events.push_back({{"action", "redo"}}); break;
+        case ScriptEvent::Kind::Mask:
+            events.push_back(
+                {{"action", "mask"}, {"operation", maskOperationName(event.maskOperation)}, {"times", event.maskTimes}});
+            break;
         }
     }
     return json{{"format", kFormat}, {"version", kVersion}, {"events", std::move(events)}}.dump(1) + "\n";
@@ -248,6 +271,10 @@ ReplayReport replayScript(SculptSession& session, const StrokeScript& script, co
         case ScriptEvent::Kind::Redo:
             if (!session.redo()) throw InputError(where + ": redo with nothing to redo");
             ++done.redos;
+            break;
+        case ScriptEvent::Kind::Mask:
+            session.editMask(event.maskOperation, event.maskTimes);
+            ++done.maskOperations;
             break;
         }
         report(progress, double(i + 1) / double(script.events.size()));

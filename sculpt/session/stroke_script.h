@@ -8,7 +8,11 @@
 ///         "symmetry": ["x"], "samples": [{"position": [1, 2, 3], "pressure": 0.8,
 ///                                        "view": [0, 0, -1]}, [4, 5, 6]]},
 ///        {"tool": "follow", "radius": 4, "target": "template.vdb", "samples": [[1, 2, 3]]},
+///        {"tool": "mask", "radius": 4, "samples": [[1, 2, 3]]},
+///        {"action": "mask", "operation": "invert", "times": 1},
 ///        {"action": "undo"}, {"action": "redo"}]}
+/// A "mask" stroke paints the mask, "unmask" erases it; a "mask" action runs a mask operation
+/// (mask_operations.h) over the whole mask.
 /// A sample is an object or just its position. A follow stroke's target is a document, scan or
 /// mesh (relative to the script), read at its own resolution (loadShape with no voxel size), as
 /// the window reads it. Schema: data/strokes.schema.json; format: README.
@@ -29,10 +33,12 @@ struct StrokeSources {
 };
 
 struct ScriptEvent {
-    enum class Kind { Stroke, Undo, Redo };
+    enum class Kind { Stroke, Undo, Redo, Mask };
     Kind kind = Kind::Stroke;
     Stroke stroke;  ///< Kind::Stroke only
     StrokeSources sources;
+    MaskOperation maskOperation = MaskOperation::Invert;  ///< Kind::Mask only
+    int maskTimes = 1;                                    ///< Kind::Mask only
 };
 
 struct StrokeScript {
@@ -52,7 +58,7 @@ std::string writeStrokeScript(const StrokeScript& script);
 
 /// What a replay did.
 struct ReplayReport {
-    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0;
+    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0;
 };
 
 /// Applies the events in order, reporting progress per event.

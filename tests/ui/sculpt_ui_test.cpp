@@ -2,6 +2,7 @@
 // through the same code as live input and reads what the program reported and drew.
 
 #include "core/field/grid_checksum.h"
+#include "core/field/surface_mask.h"
 #include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
 #include "core/io/vdb_layout.h"
@@ -487,6 +488,65 @@ TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothin
     EXPECT_EQ(reports["cancelled"]["checksum"], original);
     EXPECT_EQ(reports["cancelled"]["undo"], 0);
     EXPECT_FALSE(reports["cancelled"]["modified"].get<bool>());
+}
+
+/// Of the voxels of `before`'s leaves: those whose closest surface point reads mask 1, those of
+/// them that differ in `after`, and the others that differ.
+struct MaskedChanges {
+    std::size_t held = 0, heldChanged = 0, freeChanged = 0;
+};
+
+MaskedChanges maskedChanges(const FieldImage& before, const FieldImage& after)
+{
+    const MaskReader reader(before.grid(), *before.mask());
+    const auto was = before.grid().getConstAccessor(), now = after.grid().getConstAccessor();
+    MaskedChanges changes;
+    for (auto leaf = before.grid().tree().cbeginLeaf(); leaf; ++leaf)
+        for (auto it = leaf->beginValueAll(); it; ++it) {
+            const openvdb::Coord ijk = it.getCoord();
+            const bool same = was.getValue(ijk) == now.getValue(ijk) && was.isValueOn(ijk) == now.isValueOn(ijk);
+            const bool held = reader.at(ijk) >= 1.0;
+            changes.held += held;
+            (held ? changes.heldChanged : changes.freeChanged) += !same;
+        }
+    return changes;
+}
+
+TEST(SculptUi, AMaskPaintedInTheWindowHoldsItsClayThroughASmoothAndUndoesAsOneStep)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r, "start").key("M");
+    for (int i = 0; i < 8; ++i) events.key("RightBracket");  // a brush a third of the ball across
+    events.drag(kCentreX - 120, kCentreY - 220, kCentreX - 120, kCentreY + 220, 40).move(1150, 600);
+    events.report(r, "masked").screenshot(dir / "masked.png");
+    events.key("S", {"ctrl"}).text((dir / "masked.vdb").string()).key("Enter");
+    events.key("S", {"alt"}).text("10").key("Enter").untilJobEnds().report(r, "smoothed");
+    events.key("Z", {"ctrl"}).report(r, "undo-smooth").key("Z", {"ctrl"}).report(r, "undo-mask");
+    events.key("Z", {"ctrl", "shift"}).key("Z", {"ctrl", "shift"}).report(r, "redone");
+    const CommandResult run = play(dir, events, "", "--save-as " + shellQuoted(dir / "smoothed.vdb"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    EXPECT_EQ(reports["start"]["mask_checksum"], "");
+    EXPECT_NE(reports["masked"]["mask_checksum"], "");
+    EXPECT_EQ(reports["masked"]["checksum"], reports["start"]["checksum"]) << "painting the mask moves no clay";
+    EXPECT_EQ(reports["masked"]["undo"], 1);
+    EXPECT_EQ(reports["smoothed"]["undo"], 2);
+    EXPECT_EQ(reports["undo-smooth"]["checksum"], reports["masked"]["checksum"]);
+    EXPECT_EQ(reports["undo-smooth"]["mask_checksum"], reports["masked"]["mask_checksum"]);
+    EXPECT_EQ(reports["undo-mask"]["mask_checksum"], "");
+    EXPECT_EQ(reports["redone"]["checksum"], reports["smoothed"]["checksum"]);
+    EXPECT_EQ(reports["redone"]["mask_checksum"], reports["masked"]["mask_checksum"]);
+
+    const FieldImage masked = readFieldImage(dir / "masked.vdb"), smoothed = readFieldImage(dir / "smoothed.vdb");
+    ASSERT_NE(masked.mask(), nullptr) << "the mask is saved with the document";
+    ASSERT_NE(smoothed.mask(), nullptr);
+    EXPECT_EQ(gridChecksum(*smoothed.mask()), gridChecksum(*masked.mask()));
+    const MaskedChanges changes = maskedChanges(masked, smoothed);
+    EXPECT_GT(changes.held, 1000u) << "the stroke masked some clay fully";
+    EXPECT_EQ(changes.heldChanged, 0u) << "the masked clay is bit for bit as it was";
+    EXPECT_GT(changes.freeChanged, 1000u) << "the rest was smoothed";
 }
 
 TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)

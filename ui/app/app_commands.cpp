@@ -177,4 +177,12 @@ void SculptApp::recover(bool accept)
     }
 }
 
+void SculptApp::editMask(MaskOperation operation)
+{
+    if (busy()) return;
+    if (mDocument->editMask(operation)) return;
+    notify(mDocument->session().field().mask() ? "the mask did not change"
+                                                : "nothing is masked: paint a mask first (M), or invert to mask everything");
+}
+
 }  // namespace sculpt::ui

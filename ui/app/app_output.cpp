@@ -66,6 +66,8 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     if (!name.empty()) r["name"] = name;
     r["frame"] = mFramesDrawn;
     r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
+    const openvdb::FloatGrid* mask = session.field().mask();
+    r["mask_checksum"] = mask ? formatChecksum(gridChecksum(*mask)) : std::string();
     r["volume"] = mStatus.volume;
     r["area"] = mStatus.area;
     r["triangles"] = mStatus.triangles;

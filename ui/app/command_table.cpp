@@ -29,6 +29,13 @@ CommandRow toolRow(Command command, const char* label, const char* help, int key
     return {command, label, help, {{key}}, nullptr, [](SculptApp& a) { a.brush().tool = tool; }};
 }
 
+template <MaskOperation operation>
+CommandRow maskRow(Command command, const char* label, const char* help, std::vector<Chord> chords,
+                   std::string (*blocked)(const SculptApp&))
+{
+    return {command, label, help, std::move(chords), blocked, [](SculptApp& a) { a.editMask(operation); }};
+}
+
 template <AxisView view>
 CommandRow viewRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
 {
@@ -129,6 +136,10 @@ const std::vector<CommandRow>& SculptApp::commands()
          }},
         toolRow<BrushTool::Primitive>(Command::ToolPrimitive, "Blob", "Stamps a soft blob (Ctrl: carves one)",
                                       GLFW_KEY_B),
+        toolRow<BrushTool::Mask>(Command::ToolMask, "Mask",
+                                 "Paints the mask: masked clay holds still under every tool, filter and morph "
+                                 "(Ctrl: erases it)",
+                                 GLFW_KEY_M),
         {Command::RadiusDrag,
          "Radius",
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
@@ -303,6 +314,14 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_O, kAlt}},
          idle,
          [](App& a) { openFilter(a, ModelFilter::Kind::Offset, P::OffsetModel); }},
+        maskRow<MaskOperation::Invert>(Command::InvertMask, "Invert Mask", "Masked clay becomes free, free clay masked",
+                                       {{GLFW_KEY_I, kCtrlShift}}, idle),
+        maskRow<MaskOperation::Clear>(Command::ClearMask, "Clear Mask", "Frees the whole model",
+                                      {{GLFW_KEY_M, kCtrlShift}}, idle),
+        maskRow<MaskOperation::Blur>(Command::BlurMask, "Blur Mask", "Softens the mask's edge by a voxel", {}, idle),
+        maskRow<MaskOperation::Sharpen>(Command::SharpenMask, "Sharpen Mask", "Crisps the mask's edge", {}, idle),
+        maskRow<MaskOperation::Grow>(Command::GrowMask, "Grow Mask", "Spreads the mask by a voxel", {}, idle),
+        maskRow<MaskOperation::Shrink>(Command::ShrinkMask, "Shrink Mask", "Draws the mask back by a voxel", {}, idle),
         {Command::MorphTo,
          "Morph To...",
          "Morph the model into a target document, scan or mesh, as a job; then play and keep frames",
@@ -376,7 +395,7 @@ const std::vector<CommandRow>& SculptApp::commands()
         {Command::NextShading,
          "Next Matcap",
          "Clay, white, red wax, lit",
-         {{GLFW_KEY_M}},
+         {{GLFW_KEY_M, kShift}},
          nullptr,
          [](App& a) { a.mLook.setShading(Shading((int(a.mLook.shading()) + 1) % 4)); }},
         {Command::ToggleFlat,

@@ -179,10 +179,12 @@ void SculptApp::updateCursor()
         mHoverKey = key;
     }
     const bool show = mHover && !mPiecesMode && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
-    // White for tools that add, red for those that take away, blue for smoothing (Shift).
+    // White for tools that add, red for those that take away, blue for smoothing (Shift), grey
+    // for the mask.
     const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
     else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
+    else if (tool == BrushTool::Mask || tool == BrushTool::Unmask) mCursor.setColour(0.45, 0.45, 0.5);
     else mCursor.setColour(1.0, 1.0, 1.0);
     if (show) {
         const SurfaceHit shown = inWorld(*mHover);
@@ -262,7 +264,7 @@ void SculptApp::frame()
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
     const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
     const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
-    mDisplay.sync(shown, session.field().voxelSize(), detailView(now));
+    mDisplay.sync(shown, session.field().voxelSize(), detailView(now), session.field().mask());
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     mPieces.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
@@ -346,6 +348,7 @@ void SculptApp::replayStrokes()
     for (const ScriptEvent& event : script.events) {
         if (event.kind == ScriptEvent::Kind::Undo) mDocument->undo();
         else if (event.kind == ScriptEvent::Kind::Redo) mDocument->redo();
+        else if (event.kind == ScriptEvent::Kind::Mask) mDocument->editMask(event.maskOperation, event.maskTimes);
         else {
             Stroke settings = event.stroke;
             settings.samples.clear();

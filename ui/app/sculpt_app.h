@@ -184,6 +184,9 @@ public:
     bool& pushPieces() { return mPushPieces; }
     void beginPieceGesture(PieceGesture::Kind kind);
 
+    /// A mask operation on the sculpted piece, one undo step (the status bar says when it changed nothing).
+    void editMask(MaskOperation operation);
+
     /// Dialog outcomes.
     void confirmPrompt();
     void recover(bool accept);

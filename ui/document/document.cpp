@@ -200,6 +200,20 @@ void Document::replaceField(FieldImage result, const std::string& label)
     if (mUnscripted.empty()) mUnscripted = label;
 }
 
+bool Document::editMask(MaskOperation operation, int times)
+{
+    if (!session().editMask(operation, times)) return false;
+    ++mRevision;
+    recordStep(std::string(maskOperationName(operation)) + " mask", {{mPieces[mActive].session}, {}, {}});
+    if (mActive != 0 && mUnscripted.empty()) mUnscripted = "a mask edit on piece '" + mPieces[mActive].look.name + "'";
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::Mask;
+    event.maskOperation = operation;
+    event.maskTimes = times;
+    mLog.events.push_back(std::move(event));
+    return true;
+}
+
 void Document::setLooks(std::vector<PieceLook> looks, const std::string& label)
 {
     if (looks.size() != mPieces.size()) throw std::logic_error("setLooks: one look per piece");

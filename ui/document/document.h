@@ -126,6 +126,9 @@ public:
     bool redo();
     /// A whole-model edit's result (SculptSession::replaceField), one undo step named `label`.
     void replaceField(FieldImage result, const std::string& label);
+    /// A mask operation on the active piece (SculptSession::editMask), one undo step; the stroke
+    /// log carries it. False if it changed nothing (no step then).
+    bool editMask(MaskOperation operation, int times = 1);
 
     /// Labels of the strokes that can be undone (oldest first) and redone (next first).
     const std::vector<std::string>& undoLabels() const { return mUndoLabels; }

@@ -61,6 +61,14 @@ void drawMainMenu(SculptApp& app)
         item(Command::SaveScene);
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("Mask")) {
+        item(Command::ToolMask);
+        ImGui::Separator();
+        for (Command c : {Command::InvertMask, Command::ClearMask, Command::BlurMask, Command::SharpenMask,
+                          Command::GrowMask, Command::ShrinkMask})
+            item(c);
+        ImGui::EndMenu();
+    }
     if (ImGui::BeginMenu("Filters")) {
         item(Command::SmoothModel);
         item(Command::OffsetModel);

@@ -18,6 +18,7 @@ constexpr ToolButton kTools[] = {
     {BrushTool::Smooth, Command::ToolSmooth},   {BrushTool::Flatten, Command::ToolFlatten},
     {BrushTool::Grab, Command::ToolGrab},       {BrushTool::Pinch, Command::ToolPinch},
     {BrushTool::Follow, Command::ToolFollow},   {BrushTool::Primitive, Command::ToolPrimitive},
+    {BrushTool::Mask, Command::ToolMask},
 };
 
 constexpr const char* kFalloffs[] = {"smooth", "sphere", "sharp", "constant"};

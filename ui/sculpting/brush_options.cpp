@@ -17,6 +17,8 @@ BrushTool effectiveTool(BrushTool tool, int mods)
     case BrushTool::Carve: return BrushTool::Add;
     case BrushTool::Inflate: return BrushTool::Deflate;
     case BrushTool::Deflate: return BrushTool::Inflate;
+    case BrushTool::Mask: return BrushTool::Unmask;
+    case BrushTool::Unmask: return BrushTool::Mask;
     default: return tool;
     }
 }

@@ -27,7 +27,9 @@ constexpr double kCoarseCellVoxels = 3.0;
 vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look, vtkMatrix4x4* placement)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    mapper->ScalarVisibilityOff();
+    // A mask's tint, where a chunk has one, is its points' colours (tintByMask).
+    mapper->SetColorModeToDirectScalars();
+    mapper->SetScalarModeToUsePointData();
     auto actor = vtkSmartPointer<vtkActor>::New();
     actor->SetMapper(mapper);
     actor->SetUserMatrix(placement);
@@ -170,6 +172,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
         mRenderer->AddActor(chunk.full);
     }
     chunk.mesh = polyDataOf(mesh);
+    if (mMask) tintByMask(*chunk.mesh, mesh, *mMask);
     setMesh(chunk.full, chunk.mesh);
     mMeshBytes += bytesOf(mesh) - chunk.bytes;
     chunk.bytes = bytesOf(mesh);
@@ -251,8 +254,10 @@ void ModelDisplay::chooseDetail(double voxelSize, const DetailView& view)
     }
 }
 
-void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view)
+void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view,
+                        const openvdb::FloatGrid* mask)
 {
+    mMask = mask;
     mLastUploads = mLastRemovals = mLastChunkUploads = mLastBytes = 0;
     if (mPreview && mesher.id() == mPreview->replaces) return;  // the preview alone is shown
     if (mesher.id() != mSourceId) {

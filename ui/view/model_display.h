@@ -50,7 +50,10 @@ public:
     /// Uploads the chunks whose blocks the mesher changed since the last sync (all of them for a
     /// new mesher), then gives each chunk the detail `view` asks. `voxelSize` sizes the coarse
     /// twins' clusters. Once per frame.
-    void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {});
+    /// `mask` (the field's, or null) tints the chunks uploaded; a change of the mask marks its
+    /// leaves dirty, so the mesher's changes bring those chunks here again.
+    void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {},
+              const openvdb::FloatGrid* mask = nullptr);
     /// Waits for the coarse twin of every chunk and takes them (for tests: a frame never waits).
     void finishTwins(double voxelSize);
     /// Shows `preview` (world coordinates, of a grid on `xform`) instead of the mesher shown now,
@@ -120,6 +123,7 @@ private:
     std::uint64_t mGenerations = 0;  // chunk meshes made
     std::unique_ptr<TwinBuilder> mTwins;
     std::unique_ptr<Preview> mPreview;
+    const openvdb::FloatGrid* mMask = nullptr;  // of the last sync, for its uploads
     std::size_t mFillBudget = 1'000'000, mPendingChunks = 0;
     bool mHidden = false;
     std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0, mTwinBytes = 0;

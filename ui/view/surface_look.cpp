@@ -37,6 +37,8 @@ std::string matcapImpl(bool wireframe)
 {
     return std::string("//VTK::Light::Impl\n  if (matcapOn == 1) {\n"
                        "    vec3 matcap = matcapColour(normalVCVSOutput);\n") +
+           // Points coloured darker than the clay (the mask) darken the matcap alike.
+           "    matcap *= clamp(diffuseColor / max(diffuseIntensity * clayColour, vec3(1e-3)), 0.0, 1.0);\n" +
            (wireframe ? "    matcap = mix(matcap, vec3(0.08, 0.08, 0.1), emix);\n" : "") +
            "    gl_FragData[0] = vec4(matcap, opacity);\n  }\n";
 }
@@ -62,7 +64,7 @@ Matcap matcapOf(Shading shading)
 SurfaceLook::SurfaceLook()
 {
     mProperty = vtkSmartPointer<vtkProperty>::New();
-    mProperty->SetColor(0.80, 0.66, 0.55);
+    mProperty->SetColor(kClayColour[0], kClayColour[1], kClayColour[2]);
     mProperty->SetSpecular(0.15);
     mProperty->SetSpecularPower(20.0);
     mProperty->SetEdgeColor(0.1, 0.1, 0.12);
@@ -86,6 +88,8 @@ void SurfaceLook::setShading(Shading shading)
     u->SetUniformf("matcapSpecular", m.specular);
     u->SetUniformf("matcapGloss", m.gloss);
     u->SetUniformf("matcapWrap", m.wrap);
+    const float clay[3] = {float(kClayColour[0]), float(kClayColour[1]), float(kClayColour[2])};
+    u->SetUniform3f("clayColour", clay);
 }
 
 void SurfaceLook::setFlat(bool flat)

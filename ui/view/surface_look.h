@@ -16,6 +16,9 @@ class vtkShaderProperty;
 namespace sculpt::ui {
 
 enum class Shading { Clay, White, RedWax, Lit };
+/// The clay's colour (lit shading); points coloured darker than it (a mask's tint) darken every
+/// matcap by the same ratio.
+inline constexpr double kClayColour[3] = {0.80, 0.66, 0.55};
 inline constexpr const char* kShadingNames[] = {"Clay", "White", "Red wax", "Lit"};
 
 class SurfaceLook {

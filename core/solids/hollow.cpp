@@ -1,0 +1,129 @@
+#include "core/solids/hollow.h"
+
+#include "core/base/enum_names.h"
+#include "core/base/errors.h"
+#include "core/base/text_format.h"
+#include "core/local/capsule.h"
+#include "core/local/local_patch.h"
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/LevelSetRebuild.h>
+#include <openvdb/tools/LevelSetUtil.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sculpt {
+
+namespace {
+
+constexpr EnumNames<ShellSide, 3> kSides{
+    {{ShellSide::Inside, "inside"}, {ShellSide::Medial, "medial"}, {ShellSide::Outside, "outside"}}};
+
+constexpr double kMaxThicknessVoxels = 1000.0;
+
+void validate(const HollowOptions& o, double voxelSize)
+{
+    if (!(o.thicknessWorld > 0.0) || !std::isfinite(o.thicknessWorld))
+        throw InputError("the shell's thickness must be a positive number (got " + formatNumber(o.thicknessWorld) + ")");
+    if (!(o.closingWorld >= 0.0) || !std::isfinite(o.closingWorld))
+        throw InputError("the closing distance must be zero or more (got " + formatNumber(o.closingWorld) + ")");
+    if ((o.thicknessWorld + o.closingWorld) / voxelSize > kMaxThicknessVoxels)
+        throw InputError("a shell of " + formatNumber(o.thicknessWorld) + " is over " +
+                             formatNumber(kMaxThicknessVoxels) + " voxels thick: choose a thinner shell",
+                         Remedy::CoarserVoxelSize);
+}
+
+/// The level set at `iso` of `grid` (whose band reaches it), a narrow band of the field's width
+/// grown outwards by `extraOutsideWorld`.
+openvdb::FloatGrid::Ptr levelSetAt(const openvdb::FloatGrid& grid, double iso, double halfWidthVoxels,
+                                   double extraOutsideWorld = 0.0)
+{
+    const double h = grid.transform().voxelSize()[0];
+    return openvdb::tools::levelSetRebuild(grid, float(iso), float(halfWidthVoxels + extraOutsideWorld / h),
+                                           float(halfWidthVoxels));
+}
+
+/// The surface's distance field, `insideWorld` deep and `outsideWorld` out beyond the band.
+openvdb::FloatGrid::Ptr widened(const FieldImage& field, double insideWorld, double outsideWorld)
+{
+    const double h = field.voxelSize(), w = field.halfWidthVoxels();
+    return openvdb::tools::levelSetRebuild(field.grid(), 0.0f, float(w + outsideWorld / h), float(w + insideWorld / h));
+}
+
+/// The lowest point along `up` of each connected part of the cavity (its active voxels nearest
+/// the zero crossing stand for its wall).
+std::vector<openvdb::Vec3d> bottomsOf(const openvdb::FloatGrid& cavity, const openvdb::Vec3d& up)
+{
+    std::vector<openvdb::FloatGrid::Ptr> parts;
+    openvdb::tools::segmentSDF(cavity, parts);
+    std::vector<openvdb::Vec3d> bottoms;
+    const double h = cavity.transform().voxelSize()[0];
+    for (const auto& part : parts) {
+        double lowest = std::numeric_limits<double>::infinity();
+        openvdb::Vec3d at(0.0);
+        for (auto it = part->cbeginValueOn(); it; ++it) {
+            if (std::abs(*it) > 0.5 * h) continue;
+            const openvdb::Vec3d p = part->transform().indexToWorld(it.getCoord());
+            if (p.dot(up) < lowest) lowest = p.dot(up), at = p;
+        }
+        if (std::isfinite(lowest)) bottoms.push_back(at);
+    }
+    return bottoms;
+}
+
+}  // namespace
+
+ShellSide shellSideFromName(const std::string& name) { return enumFromName(kSides, name, "shell side"); }
+
+HollowResult hollow(const FieldImage& field, const HollowOptions& o, const openvdb::Vec3d& up, const Progress& progress)
+{
+    validate(o, field.voxelSize());
+    const double t = o.thicknessWorld, c = o.closingWorld, w = field.halfWidthVoxels();
+    const openvdb::Vec3d upward = up.length() > 0.0 ? up.unitSafe() : openvdb::Vec3d(0, 0, 1);
+    // The surfaces bounding the shell: `outer` (kept as the field where it can be) and the cavity.
+    const bool inside = o.side == ShellSide::Inside, outside = o.side == ShellSide::Outside;
+    const double inner = inside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;  // cavity depth
+    const double outer = outside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;  // outer wall's rise
+    const openvdb::FloatGrid::Ptr wide = widened(field, inner + c + field.voxelSize(), outer + field.voxelSize());
+    report(progress, 0.4);
+    openvdb::FloatGrid::Ptr cavity = inner > 0.0 ? levelSetAt(*wide, -(inner + c), w, c) : field.grid().deepCopy();
+    if (c > 0.0 && inner > 0.0) cavity = levelSetAt(*cavity, c, w);
+    report(progress, 0.7);
+    openvdb::FloatGrid::Ptr shell = outer > 0.0 ? levelSetAt(*wide, outer, w) : field.grid().deepCopy();
+    const std::vector<openvdb::Vec3d> bottoms = bottomsOf(*cavity, upward);
+    openvdb::tools::csgDifference(*shell, *cavity);
+    shell->setName(field.grid().getName());
+    report(progress, 1.0);
+    return {FieldImage(shell, field.units()), bottoms};
+}
+
+std::vector<DrainHole> drainHolesUnder(const std::vector<openvdb::Vec3d>& bottoms, const openvdb::Vec3d& up,
+                                       double wallWorld, double radiusWorld)
+{
+    const openvdb::Vec3d down = -(up.length() > 0.0 ? up.unitSafe() : openvdb::Vec3d(0, 0, 1));
+    std::vector<DrainHole> holes;
+    // From inside the cavity to beyond the wall's outside, with a radius to spare at each end.
+    for (const openvdb::Vec3d& bottom : bottoms)
+        holes.push_back({bottom - down * radiusWorld, bottom + down * (wallWorld + 2.0 * radiusWorld), radiusWorld});
+    return holes;
+}
+
+void cutDrainHoles(FieldImage& field, const std::vector<DrainHole>& holes)
+{
+    for (const DrainHole& hole : holes) {
+        if (!(hole.radiusWorld > 0.0) || !std::isfinite(hole.radiusWorld))
+            throw InputError("a drain hole's radius must be a positive number (got " + formatNumber(hole.radiusWorld) +
+                             ")");
+        const Capsule capsule{hole.from, hole.to, hole.radiusWorld};
+        const Capsule reach = capsule.grownBy(field.grid().background());
+        LocalPatch patch(field, reach);
+        patch.combineVoxels(reach, field.grid().background(), [&](const openvdb::Vec3d& world, float phi) {
+            return std::max(double(phi), capsule.radius - capsule.axisDistance(world));
+        });
+        patch.commit(field, nullptr);
+    }
+}
+
+}  // namespace sculpt

@@ -1,0 +1,77 @@
+#include "core/solids/islands.h"
+
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/Interpolation.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+#include <openvdb/tools/LevelSetUtil.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace sculpt {
+
+namespace {
+
+openvdb::BBoxd worldBoundsOf(const openvdb::FloatGrid& grid)
+{
+    const openvdb::CoordBBox box = grid.evalActiveVoxelBoundingBox();
+    return grid.transform().indexToWorld(box);
+}
+
+/// `field` less the islands of `islands` that `removed` picks (each subtracted).
+template <typename Removed>
+void subtractIslands(FieldImage& field, const std::vector<Island>& islands, const Removed& removed)
+{
+    openvdb::FloatGrid::Ptr grid = field.grid().deepCopy();
+    for (std::size_t i = 0; i < islands.size(); ++i) {
+        if (!removed(i)) continue;
+        openvdb::FloatGrid::Ptr island = islands[i].grid->deepCopy();
+        openvdb::tools::csgDifference(*grid, *island);
+    }
+    field.swapGrid(grid);
+}
+
+}  // namespace
+
+std::vector<Island> findIslands(const FieldImage& field)
+{
+    std::vector<openvdb::FloatGrid::Ptr> grids;
+    openvdb::tools::segmentSDF(field.grid(), grids);
+    std::vector<Island> islands;
+    for (auto& grid : grids) {
+        const double volume = openvdb::tools::levelSetVolume(*grid);
+        islands.push_back({grid, volume, worldBoundsOf(*grid)});
+    }
+    std::stable_sort(islands.begin(), islands.end(), [](const Island& a, const Island& b) { return a.volume > b.volume; });
+    return islands;
+}
+
+std::size_t removeIslandsUnder(FieldImage& field, double minVolume)
+{
+    const std::vector<Island> islands = findIslands(field);
+    const auto small = [&](std::size_t i) { return islands[i].volume < minVolume; };
+    const std::size_t count = std::size_t(std::count_if(islands.begin(), islands.end(), [&](const Island& island) {
+        return island.volume < minVolume;
+    }));
+    if (count > 0) subtractIslands(field, islands, small);
+    return count;
+}
+
+int islandAt(const std::vector<Island>& islands, const openvdb::Vec3d& world, double reachWorld)
+{
+    int best = -1;
+    double nearest = reachWorld;
+    for (std::size_t i = 0; i < islands.size(); ++i) {
+        const openvdb::FloatGrid& grid = *islands[i].grid;
+        const double d = openvdb::tools::BoxSampler::sample(grid.tree(), grid.transform().worldToIndex(world));
+        if (d <= nearest) nearest = d, best = int(i);
+    }
+    return best;
+}
+
+void keepOrRemoveIsland(FieldImage& field, const std::vector<Island>& islands, std::size_t index, bool keep)
+{
+    subtractIslands(field, islands, [&](std::size_t i) { return (i == index) != keep; });
+}
+
+}  // namespace sculpt

@@ -1,0 +1,52 @@
+#include "core/solids/islands.h"
+#include "sculpt/cli/commands.h"
+#include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/number_checks.h"
+#include "sculpt/session/model_filter.h"
+
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+#include <memory>
+
+namespace sculpt::cli {
+
+namespace {
+
+struct IslandsOptions {
+    DocumentInput input;
+    std::string output;
+    double removeUnder = 0.0;
+};
+
+void runIslands(const IslandsOptions& o)
+{
+    std::size_t removed = 0, found = 0;
+    const FieldImage field = editDocument(o.input, o.output, "removing islands", [&](FieldImage& f, const Progress& p) {
+        found = findIslands(f).size();
+        ModelFilter filter{ModelFilter::Kind::RemoveIslands};
+        filter.minIslandVolume = o.removeUnder;
+        f = applyFilter(std::move(f), filter, o.input.path, p);
+        removed = found - findIslands(f).size();
+    });
+    std::cout << "wrote " << o.output << ": " << removed << " of " << found << " islands were under " << o.removeUnder
+              << " " << field.units() << "^3 and removed\n";
+}
+
+}  // namespace
+
+void addIslandsCommand(CLI::App& app)
+{
+    auto options = std::make_shared<IslandsOptions>();
+    CLI::App* cmd = app.add_subcommand(
+        "islands", "Remove the islands (disjoint solids: a scan's specks) smaller than a volume; the others keep\n"
+                   "their voxels. `sculpt info` counts them (shells); `sculpt pieces --split` makes each a piece.");
+    addDocumentInput(*cmd, options->input, "the .vdb document");
+    cmd->add_option("--remove-under", options->removeUnder, "remove the islands of less volume than this (world units^3)")
+        ->check(positiveNumber())
+        ->required();
+    cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    cmd->callback([options] { runIslands(*options); });
+}
+
+}  // namespace sculpt::cli

@@ -1,0 +1,154 @@
+// Hollowing and islands against analytic volumes and the marching-cubes mesh's topology.
+
+#include "core/mesh/incremental_mesher.h"
+#include "core/primitives/analytic_shapes.h"
+#include "core/primitives/sdf_rasterizer.h"
+#include "core/solids/hollow.h"
+#include "core/solids/islands.h"
+#include "tests/support/mesh_checks.h"
+
+#include <gtest/gtest.h>
+#include <openvdb/tools/LevelSetMeasure.h>
+
+#include <random>
+
+namespace sculpt {
+namespace {
+
+using openvdb::Vec3d;
+
+struct Topology {
+    std::size_t shells;
+    long euler;
+    bool closedManifold;
+};
+
+Topology topologyOf(const FieldImage& field)
+{
+    const TriangleMesh mesh = meshLevelSet(field);
+    const test::MeshTopology t = test::meshTopology(mesh);
+    return {test::shellTriangleCounts(mesh).size(), long(t.eulerCharacteristic()), t.closedManifold()};
+}
+
+double volumeOf(const FieldImage& field) { return openvdb::tools::levelSetVolume(field.grid()); }
+
+TEST(Hollow, ABoxOfFortyWithAWallOfTwoHoldsTheShellsVolumeInTwoShells)
+{
+    const FieldImage box = makeBox(20.0, 0.5);
+    HollowOptions options;
+    options.thicknessWorld = 2.0;
+    const HollowResult shell = hollow(box, options);
+    EXPECT_NEAR(volumeOf(shell.field), 40.0 * 40.0 * 40.0 - 36.0 * 36.0 * 36.0, 0.01 * (64000.0 - 46656.0));
+    const Topology t = topologyOf(shell.field);
+    EXPECT_TRUE(t.closedManifold);
+    EXPECT_EQ(t.shells, 2u);
+    EXPECT_EQ(t.euler, 4);
+    ASSERT_EQ(shell.cavityBottoms.size(), 1u);
+    EXPECT_NEAR(shell.cavityBottoms.front().z(), -18.0, 0.5);
+    // The outer wall keeps its voxels: the box's band is far from the cavity (2 mm = 4 voxels, band 3).
+    const auto was = box.grid().getConstAccessor();
+    std::size_t outerChanged = 0;
+    for (auto it = shell.field.grid().cbeginValueOn(); it; ++it)
+        outerChanged += *it > -1.0f && was.getValue(it.getCoord()) != *it && was.isValueOn(it.getCoord());
+    EXPECT_EQ(outerChanged, 0u);
+}
+
+TEST(Hollow, ADrainHoleJoinsTheCavityToTheOutside)
+{
+    FieldImage box = makeBox(20.0, 0.5);
+    HollowOptions options;
+    options.thicknessWorld = 2.0;
+    HollowResult shell = hollow(box, options);
+    const double closed = volumeOf(shell.field);
+    cutDrainHoles(shell.field, drainHolesUnder(shell.cavityBottoms, {0, 0, 1}, options.thicknessWorld, 1.5));
+    const Topology t = topologyOf(shell.field);
+    EXPECT_TRUE(t.closedManifold);
+    EXPECT_EQ(t.shells, 1u);
+    EXPECT_EQ(t.euler, 2);
+    // The hole takes about a cylinder of radius 1.5 through the wall of 2.
+    EXPECT_NEAR(closed - volumeOf(shell.field), M_PI * 1.5 * 1.5 * 2.0, 0.35 * M_PI * 1.5 * 1.5 * 2.0);
+}
+
+TEST(Hollow, WallsThinnerThanAVoxelStillMeshClosedAndMedialAndOutsideShellsHoldTheirVolumes)
+{
+    const double h = 0.5;
+    const FieldImage ball = makeSphere(10.0, h);
+    HollowOptions thin;
+    thin.thicknessWorld = 0.7 * h;
+    EXPECT_TRUE(topologyOf(hollow(ball, thin).field).closedManifold);
+
+    const auto shellVolume = [](double inner, double outer) { return 4.0 / 3.0 * M_PI * (std::pow(outer, 3) - std::pow(inner, 3)); };
+    HollowOptions medial;
+    medial.thicknessWorld = 2.0;
+    medial.side = ShellSide::Medial;
+    EXPECT_NEAR(volumeOf(hollow(ball, medial).field), shellVolume(9.0, 11.0), 0.02 * shellVolume(9.0, 11.0));
+    HollowOptions outside = medial;
+    outside.side = ShellSide::Outside;
+    EXPECT_NEAR(volumeOf(hollow(ball, outside).field), shellVolume(10.0, 12.0), 0.02 * shellVolume(10.0, 12.0));
+    HollowOptions closed = medial;
+    closed.side = ShellSide::Inside;
+    closed.closingWorld = 1.0;  // a ball's cavity has no narrow part: the closing changes nothing much
+    EXPECT_NEAR(volumeOf(hollow(ball, closed).field), shellVolume(8.0, 10.0), 0.02 * shellVolume(8.0, 10.0));
+}
+
+/// Two balls of radius 5 and twenty specks of radius 0.4 (0.27 mm^3 each) scattered around them.
+FieldImage ballsAndSpecks()
+{
+    std::vector<std::pair<Vec3d, double>> balls{{Vec3d(-8, 0, 0), 5.0}, {Vec3d(8, 0, 0), 5.0}};
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> coordinate(-18.0, 18.0);
+    while (balls.size() < 22) {
+        const Vec3d p(coordinate(random), coordinate(random), coordinate(random));
+        const bool apart = std::all_of(balls.begin(), balls.end(),
+                                       [&](const auto& b) { return (p - b.first).length() > b.second + 2.5; });
+        if (apart) balls.push_back({p, 0.4});
+    }
+    AnalyticSdf sdf;
+    sdf.distance = [balls](const Vec3d& p) {
+        double d = std::numeric_limits<double>::infinity();
+        for (const auto& [centre, radius] : balls) d = std::min(d, (p - centre).length() - radius);
+        return d;
+    };
+    sdf.bounds = openvdb::BBoxd(Vec3d(-20.0), Vec3d(20.0));
+    sdf.surfaceArea = 2 * 4 * M_PI * 25 + 20 * 4 * M_PI * 0.16;
+    sdf.description = "two balls and twenty specks";
+    return rasterizeSdf(sdf, 0.2);
+}
+
+TEST(Islands, RemovingThoseUnderACubicMillimetreLeavesTheTwoBallsBitForBit)
+{
+    FieldImage field = ballsAndSpecks();
+    const FieldImage before = field.deepCopy();
+    ASSERT_EQ(topologyOf(field).shells, 22u);
+    EXPECT_EQ(removeIslandsUnder(field, 1.0), 20u);
+    EXPECT_EQ(topologyOf(field).shells, 2u);
+    const auto was = before.grid().getConstAccessor();
+    std::size_t ballChanged = 0;
+    for (auto it = field.grid().cbeginValueOn(); it; ++it) ballChanged += was.getValue(it.getCoord()) != *it;
+    EXPECT_EQ(ballChanged, 0u);
+    EXPECT_NEAR(volumeOf(field), 2 * 4.0 / 3.0 * M_PI * 125.0, 0.01 * 2 * 4.0 / 3.0 * M_PI * 125.0);
+}
+
+TEST(Islands, KeepingTheOneUnderAPointAndItsComplementUniteIntoTheInput)
+{
+    const FieldImage field = ballsAndSpecks();
+    const std::vector<Island> islands = findIslands(field);
+    ASSERT_EQ(islands.size(), 22u);
+    const int left = islandAt(islands, Vec3d(-13.0, 0.0, 0.0), 0.5);  // on the left ball's surface
+    ASSERT_GE(left, 0);
+    EXPECT_NEAR(islands[std::size_t(left)].bounds.min().x(), -13.0, 0.3);
+    FieldImage kept = field.deepCopy(), rest = field.deepCopy();
+    keepOrRemoveIsland(kept, islands, std::size_t(left), true);
+    keepOrRemoveIsland(rest, islands, std::size_t(left), false);
+    EXPECT_EQ(topologyOf(kept).shells, 1u);
+    EXPECT_EQ(topologyOf(rest).shells, 21u);
+    // Their union (the minimum) is the input on every active voxel.
+    const auto a = kept.grid().getConstAccessor(), b = rest.grid().getConstAccessor();
+    std::size_t differ = 0;
+    for (auto it = field.grid().cbeginValueOn(); it; ++it)
+        differ += std::min(a.getValue(it.getCoord()), b.getValue(it.getCoord())) != *it;
+    EXPECT_EQ(differ, 0u);
+}
+
+}  // namespace
+}  // namespace sculpt
