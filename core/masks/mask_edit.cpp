@@ -24,7 +24,8 @@ MaskSite::MaskSite(const FieldImage& field)
 
 openvdb::Vec3d MaskSite::footWorld(const openvdb::Coord& ijk) const
 {
-    return closestSurfacePoint(mTransform.indexToWorld(ijk), mSurface.getValue(ijk), centralDifferenceAt(mSurface, ijk));
+    return closestSurfacePoint(mTransform.indexToWorld(ijk), mSurface.getValue(ijk),
+                               centralDifferenceAt(mSurface, ijk));
 }
 
 std::vector<openvdb::Coord> maskDomain(const FieldImage& field)

@@ -18,9 +18,9 @@ constexpr EnumNames<MaskOperation, 6> kNames{{{MaskOperation::Invert, "invert"},
                                               {MaskOperation::Grow, "grow"},
                                               {MaskOperation::Shrink, "shrink"}}};
 
-const std::array<openvdb::Coord, 6> kNeighbours{openvdb::Coord(1, 0, 0),  openvdb::Coord(-1, 0, 0),
-                                                openvdb::Coord(0, 1, 0),  openvdb::Coord(0, -1, 0),
-                                                openvdb::Coord(0, 0, 1),  openvdb::Coord(0, 0, -1)};
+const std::array<openvdb::Coord, 6> kNeighbours{openvdb::Coord(1, 0, 0), openvdb::Coord(-1, 0, 0),
+                                                openvdb::Coord(0, 1, 0), openvdb::Coord(0, -1, 0),
+                                                openvdb::Coord(0, 0, 1), openvdb::Coord(0, 0, -1)};
 
 /// The rule of one pass of `operation`.
 MaskRule ruleOf(MaskOperation operation)
@@ -44,7 +44,8 @@ MaskRule ruleOf(MaskOperation operation)
         const bool grow = operation == MaskOperation::Grow;
         return [grow](const openvdb::Coord& ijk, const MaskSite& s) {
             double m = s.mask(ijk);
-            for (const openvdb::Coord& d : kNeighbours) m = grow ? std::max(m, s.mask(ijk + d)) : std::min(m, s.mask(ijk + d));
+            for (const openvdb::Coord& d : kNeighbours)
+                m = grow ? std::max(m, s.mask(ijk + d)) : std::min(m, s.mask(ijk + d));
             return m;
         };
     }

@@ -26,7 +26,8 @@ constexpr double kMaxThicknessVoxels = 1000.0;
 void validate(const HollowOptions& o, double voxelSize)
 {
     if (!(o.thicknessWorld > 0.0) || !std::isfinite(o.thicknessWorld))
-        throw InputError("the shell's thickness must be a positive number (got " + formatNumber(o.thicknessWorld) + ")");
+        throw InputError("the shell's thickness must be a positive number (got " + formatNumber(o.thicknessWorld) +
+                         ")");
     if (!(o.closingWorld >= 0.0) || !std::isfinite(o.closingWorld))
         throw InputError("the closing distance must be zero or more (got " + formatNumber(o.closingWorld) + ")");
     if ((o.thicknessWorld + o.closingWorld) / voxelSize > kMaxThicknessVoxels)
@@ -84,7 +85,7 @@ HollowResult hollow(const FieldImage& field, const HollowOptions& o, const openv
     const openvdb::Vec3d upward = up.length() > 0.0 ? up.unitSafe() : openvdb::Vec3d(0, 0, 1);
     // The surfaces bounding the shell: `outer` (kept as the field where it can be) and the cavity.
     const bool inside = o.side == ShellSide::Inside, outside = o.side == ShellSide::Outside;
-    const double inner = inside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;  // cavity depth
+    const double inner = inside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;   // cavity depth
     const double outer = outside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;  // outer wall's rise
     const openvdb::FloatGrid::Ptr wide = widened(field, inner + c + field.voxelSize(), outer + field.voxelSize());
     report(progress, 0.4);

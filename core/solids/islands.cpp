@@ -42,7 +42,8 @@ std::vector<Island> findIslands(const FieldImage& field)
         const double volume = openvdb::tools::levelSetVolume(*grid);
         islands.push_back({grid, volume, worldBoundsOf(*grid)});
     }
-    std::stable_sort(islands.begin(), islands.end(), [](const Island& a, const Island& b) { return a.volume > b.volume; });
+    std::stable_sort(islands.begin(), islands.end(),
+                     [](const Island& a, const Island& b) { return a.volume > b.volume; });
     return islands;
 }
 
@@ -50,9 +51,8 @@ std::size_t removeIslandsUnder(FieldImage& field, double minVolume)
 {
     const std::vector<Island> islands = findIslands(field);
     const auto small = [&](std::size_t i) { return islands[i].volume < minVolume; };
-    const std::size_t count = std::size_t(std::count_if(islands.begin(), islands.end(), [&](const Island& island) {
-        return island.volume < minVolume;
-    }));
+    const std::size_t count = std::size_t(
+        std::count_if(islands.begin(), islands.end(), [&](const Island& island) { return island.volume < minVolume; }));
     if (count > 0) subtractIslands(field, islands, small);
     return count;
 }

@@ -20,7 +20,7 @@ struct HollowCommandOptions {
     ModelFilter filter{ModelFilter::Kind::Hollow};
 };
 
-const std::map<std::string, openvdb::Vec3d> kDirections{{"x", {1, 0, 0}},  {"y", {0, 1, 0}},  {"z", {0, 0, 1}},
+const std::map<std::string, openvdb::Vec3d> kDirections{{"x", {1, 0, 0}},   {"y", {0, 1, 0}},   {"z", {0, 0, 1}},
                                                         {"-x", {-1, 0, 0}}, {"-y", {0, -1, 0}}, {"-z", {0, 0, -1}}};
 
 void runHollow(HollowCommandOptions o)

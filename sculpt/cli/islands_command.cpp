@@ -42,7 +42,8 @@ void addIslandsCommand(CLI::App& app)
         "islands", "Remove the islands (disjoint solids: a scan's specks) smaller than a volume; the others keep\n"
                    "their voxels. `sculpt info` counts them (shells); `sculpt pieces --split` makes each a piece.");
     addDocumentInput(*cmd, options->input, "the .vdb document");
-    cmd->add_option("--remove-under", options->removeUnder, "remove the islands of less volume than this (world units^3)")
+    cmd->add_option("--remove-under", options->removeUnder,
+                    "remove the islands of less volume than this (world units^3)")
         ->check(positiveNumber())
         ->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();

@@ -4,6 +4,7 @@
 #include "core/base/json_fields.h"
 #include "core/field/csg_combine.h"
 #include "core/primitives/scene_file.h"
+#include "sculpt/session/model_filter.h"
 #include "sculpt/session/shape_import.h"
 
 #include <cmath>
@@ -148,9 +149,69 @@ ScriptEvent parseMaskEvent(const json& j, const std::string& where)
     }
     const double times = numberOr(j, "times", 1.0, where);
     if (!(times >= 1.0 && times <= 1000.0) || times != std::floor(times))
-        throw InputError(where + ": field 'times' must be a whole number from 1 to 1000 (got " + j["times"].dump() + ")");
+        throw InputError(where + ": field 'times' must be a whole number from 1 to 1000 (got " + j["times"].dump() +
+                         ")");
     event.maskTimes = int(times);
     return event;
+}
+
+/// More polygon points than a hand draws in minutes: a file asking more is not a gesture.
+constexpr std::size_t kMaxPolygonPoints = 100000;
+
+ScriptEvent parseCutEvent(const json& j, const std::string& where)
+{
+    onlyFields(j, {"action", "mode", "view", "perspective", "polygon", "near", "far", "symmetry"}, where);
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::Cut;
+    ViewPrism& prism = event.prism;
+    try {
+        event.prismMode = prismModeFromName(textOr(j, "mode", "cut", where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+    const json& view = field(j, "view", where);
+    if (!view.is_array() || view.size() != 16)
+        throw InputError(where + ": field 'view' must be an array of 16 numbers");
+    for (int k = 0; k < 16; ++k) {
+        if (!view[std::size_t(k)].is_number()) throw InputError(where + ": field 'view' must hold numbers only");
+        prism.viewFromWorld(k / 4, k % 4) = view[std::size_t(k)].get<double>();
+    }
+    prism.perspective = flagOr(j, "perspective", false, where);
+    const json& polygon = field(j, "polygon", where);
+    if (!polygon.is_array() || polygon.size() < 3 || polygon.size() > kMaxPolygonPoints)
+        throw InputError(where + ": field 'polygon' must be an array of 3 to " + std::to_string(kMaxPolygonPoints) +
+                         " points");
+    for (const json& p : polygon) {
+        if (!p.is_array() || p.size() != 2 || !p[0].is_number() || !p[1].is_number())
+            throw InputError(where + ": field 'polygon' must hold points [x, y]");
+        prism.polygon.emplace_back(p[0].get<double>(), p[1].get<double>());
+    }
+    prism.nearDepth = numberOr(j, "near", prism.nearDepth, where);
+    prism.farDepth = numberOr(j, "far", prism.farDepth, where);
+    if (j.contains("symmetry")) {
+        const Symmetry s = parseSymmetry(j["symmetry"], where);
+        prism.mirror = {s.x, s.y, s.z};
+    }
+    return event;
+}
+
+json cutJson(const ScriptEvent& event)
+{
+    const ViewPrism& prism = event.prism;
+    json view = json::array(), polygon = json::array(), symmetry = json::array();
+    for (int k = 0; k < 16; ++k) view.push_back(prism.viewFromWorld(k / 4, k % 4));
+    for (const openvdb::Vec2d& p : prism.polygon) polygon.push_back({p.x(), p.y()});
+    json j = {{"action", "cut"},
+              {"mode", prismModeName(event.prismMode)},
+              {"view", view},
+              {"perspective", prism.perspective},
+              {"polygon", polygon}};
+    if (std::isfinite(prism.nearDepth)) j["near"] = prism.nearDepth;
+    if (std::isfinite(prism.farDepth)) j["far"] = prism.farDepth;
+    for (int a = 0; a < 3; ++a)
+        if (prism.mirror[std::size_t(a)]) symmetry.push_back(std::string(1, char('x' + a)));
+    if (!symmetry.empty()) j["symmetry"] = symmetry;
+    return j;
 }
 
 ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& context)
@@ -159,10 +220,12 @@ ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& co
     if (j.contains("action")) {
         const std::string action = textOr(j, "action", "", where);
         if (action == "mask") return parseMaskEvent(j, where);
+        if (action == "cut") return parseCutEvent(j, where);
         onlyFields(j, {"action"}, where);
         if (action == "undo") return {ScriptEvent::Kind::Undo, {}, {}};
         if (action == "redo") return {ScriptEvent::Kind::Redo, {}, {}};
-        throw InputError(where + ": field 'action' is \"" + action + "\" (expected \"undo\", \"redo\" or \"mask\")");
+        throw InputError(where + ": field 'action' is \"" + action +
+                         "\" (expected \"undo\", \"redo\", \"mask\" or \"cut\")");
     }
     field(j, "tool", where);
     ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, context), {}};
@@ -208,9 +271,11 @@ std::string writeStrokeScript(const StrokeScript& script)
         case ScriptEvent::Kind::Stroke: events.push_back(strokeJson(event)); break;
         case ScriptEvent::Kind::Undo: events.push_back({{"action", "undo"}}); break;
         case ScriptEvent::Kind::Redo: events.push_back({{"action", "redo"}}); break;
+        case ScriptEvent::Kind::Cut: events.push_back(cutJson(event)); break;
         case ScriptEvent::Kind::Mask:
-            events.push_back(
-                {{"action", "mask"}, {"operation", maskOperationName(event.maskOperation)}, {"times", event.maskTimes}});
+            events.push_back({{"action", "mask"},
+                              {"operation", maskOperationName(event.maskOperation)},
+                              {"times", event.maskTimes}});
             break;
         }
     }
@@ -275,6 +340,16 @@ ReplayReport replayScript(SculptSession& session, const StrokeScript& script, co
         case ScriptEvent::Kind::Mask:
             session.editMask(event.maskOperation, event.maskTimes);
             ++done.maskOperations;
+            break;
+        case ScriptEvent::Kind::Cut:
+            try {
+                FieldImage result = applyPrism(session.field(), event.prism, event.prismMode);
+                refuseEmptyResult(result, source, prismModeName(event.prismMode));
+                session.replaceField(std::move(result));
+            } catch (const InputError& e) {
+                throw InputError(where + " (" + prismModeName(event.prismMode) + "): " + e.what(), e.remedy());
+            }
+            ++done.cuts;
             break;
         }
         report(progress, double(i + 1) / double(script.events.size()));

@@ -10,14 +10,20 @@
 ///        {"tool": "follow", "radius": 4, "target": "template.vdb", "samples": [[1, 2, 3]]},
 ///        {"tool": "mask", "radius": 4, "samples": [[1, 2, 3]]},
 ///        {"action": "mask", "operation": "invert", "times": 1},
+///        {"action": "cut", "mode": "cut", "view": [16 numbers], "perspective": true,
+///         "polygon": [[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1]], "near": 40, "far": 60,
+///         "symmetry": ["x"]},
 ///        {"action": "undo"}, {"action": "redo"}]}
 /// A "mask" stroke paints the mask, "unmask" erases it; a "mask" action runs a mask operation
-/// (mask_operations.h) over the whole mask.
+/// (mask_operations.h) over the whole mask; a "cut" action cuts (or fills) along the view with the
+/// prism of a polygon (prism_cut.h: "view" is viewFromWorld row by row, OpenVDB's row-vector
+/// convention; "near" and "far" are optional, all the way when absent).
 /// A sample is an object or just its position. A follow stroke's target is a document, scan or
 /// mesh (relative to the script), read at its own resolution (loadShape with no voxel size), as
 /// the window reads it. Schema: data/strokes.schema.json; format: README.
 
 #include "core/base/progress.h"
+#include "core/solids/prism_cut.h"
 #include "sculpt/session/sculpt_session.h"
 
 #include <filesystem>
@@ -33,12 +39,14 @@ struct StrokeSources {
 };
 
 struct ScriptEvent {
-    enum class Kind { Stroke, Undo, Redo, Mask };
+    enum class Kind { Stroke, Undo, Redo, Mask, Cut };
     Kind kind = Kind::Stroke;
     Stroke stroke;  ///< Kind::Stroke only
     StrokeSources sources;
     MaskOperation maskOperation = MaskOperation::Invert;  ///< Kind::Mask only
     int maskTimes = 1;                                    ///< Kind::Mask only
+    ViewPrism prism;                                      ///< Kind::Cut only
+    PrismMode prismMode = PrismMode::Cut;                 ///< Kind::Cut only
 };
 
 struct StrokeScript {
@@ -58,7 +66,7 @@ std::string writeStrokeScript(const StrokeScript& script);
 
 /// What a replay did.
 struct ReplayReport {
-    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0;
+    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0, cuts = 0;
 };
 
 /// Applies the events in order, reporting progress per event.

@@ -549,6 +549,43 @@ TEST(SculptUi, AMaskPaintedInTheWindowHoldsItsClayThroughASmoothAndUndoesAsOneSt
     EXPECT_GT(changes.freeChanged, 1000u) << "the rest was smoothed";
 }
 
+// A lasso drawn round the ball's right side cuts it away through the model (a job, one undo
+// step); a line cut then takes off what lies below a line, mirrored across x; the stroke log
+// replays both with `sculpt apply` to the same grid.
+TEST(SculptUi, LassoAndLineCutsAreOneUndoStepEachAndReplayWithSculptApply)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r, "start").key("J").press();
+    const double cx = kCentreX + 150, cy = kCentreY;
+    for (int i = 0; i <= 40; ++i) {
+        const double a = 2.0 * M_PI * i / 40;
+        events.move(cx + 90 * std::cos(a), cy + 140 * std::sin(a));
+    }
+    events.release().untilJobEnds().report(r, "lassoed").screenshot(dir / "lassoed.png");
+    events.key("Z", {"ctrl"}).report(r, "undone").key("Z", {"ctrl", "shift"}).report(r, "redone");
+    events.key("X").key("J", {"alt"}).drag(kCentreX - 300, kCentreY + 120, kCentreX + 300, kCentreY + 120, 10);
+    events.untilJobEnds().report(r, "lined").screenshot(dir / "lined.png");
+    const CommandResult run =
+        play(dir, events, (dir / "ball.vdb").string(), "--stroke-log " + shellQuoted(dir / "strokes.json"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    const double start = reports["start"]["volume"];
+    EXPECT_EQ(reports["lassoed"]["undo"], 1);
+    EXPECT_LT(reports["lassoed"]["volume"].get<double>(), 0.9 * start);
+    EXPECT_GT(reports["lassoed"]["volume"].get<double>(), 0.5 * start);
+    EXPECT_EQ(reports["lassoed"]["shells"], 1);
+    EXPECT_EQ(reports["undone"]["checksum"], reports["start"]["checksum"]);
+    EXPECT_EQ(reports["redone"]["checksum"], reports["lassoed"]["checksum"]);
+    EXPECT_EQ(reports["lined"]["undo"], 2);
+    EXPECT_LT(reports["lined"]["volume"].get<double>(), reports["lassoed"]["volume"].get<double>());
+    const CommandResult apply = runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), reports["lined"]["checksum"]);
+}
+
 TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
 {
     TempDir dir;

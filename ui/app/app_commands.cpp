@@ -36,7 +36,8 @@ std::string SculptApp::whyNot(Command command) const
 bool Dialogs::confirmable() const
 {
     if (prompt == Prompt::None || recovery || gridChoice || afterUnsaved) return false;
-    const bool asksForPath = prompt != Prompt::New && prompt != Prompt::SmoothModel && prompt != Prompt::OffsetModel;
+    const bool asksForPath = prompt != Prompt::New && prompt != Prompt::SmoothModel && prompt != Prompt::OffsetModel &&
+                             prompt != Prompt::HollowModel && prompt != Prompt::RemoveIslands;
     return !asksForPath || !path.empty();
 }
 
@@ -126,7 +127,9 @@ void SculptApp::confirmPrompt()
             mDialogs.notice = "saved strokes to " + path.string();
             break;
         case Dialogs::Prompt::SmoothModel:
-        case Dialogs::Prompt::OffsetModel: startFilter(mDialogs.filter); break;
+        case Dialogs::Prompt::OffsetModel:
+        case Dialogs::Prompt::HollowModel:
+        case Dialogs::Prompt::RemoveIslands: startFilter(mDialogs.filter); break;
         case Dialogs::Prompt::Morph: startMorph(path, mDialogs.morph, mDialogs.morphTracked); break;
         case Dialogs::Prompt::Target: startLoadTarget(path); break;
         case Dialogs::Prompt::Import: startImportRead(path); break;
@@ -181,8 +184,9 @@ void SculptApp::editMask(MaskOperation operation)
 {
     if (busy()) return;
     if (mDocument->editMask(operation)) return;
-    notify(mDocument->session().field().mask() ? "the mask did not change"
-                                                : "nothing is masked: paint a mask first (M), or invert to mask everything");
+    notify(mDocument->session().field().mask()
+               ? "the mask did not change"
+               : "nothing is masked: paint a mask first (M), or invert to mask everything");
 }
 
 }  // namespace sculpt::ui

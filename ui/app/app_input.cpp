@@ -90,6 +90,8 @@ void SculptApp::pressButton(const InputEvent& event)
     }
     if (mDrag == Drag::Piece) return endPieceGesture(event.button == kLeftButton);  // right drops it
     if (mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt) && selectPieceAt(mMouseX, mMouseY)) return;
+    if (mCutTool && !mPiecesMode && !mMode && event.button == kLeftButton && !(event.mods & kAlt) && !busy())
+        return beginCut(event);
     if (!mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt)) {
         if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
             if (mMode && mMode->press(*hit)) {                                 // a primitive placed, say
@@ -124,6 +126,7 @@ void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
 void SculptApp::releaseButton(const InputEvent& event)
 {
     if (mDrag == Drag::Stroke && event.button == kLeftButton) endStroke();
+    if (mDrag == Drag::Cut && event.button == kLeftButton) finishCut();
     if (mDrag != Drag::Radius && mDrag != Drag::Strength && mDrag != Drag::Piece) mDrag = Drag::None;
 }
 
@@ -139,6 +142,7 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
     switch (mDrag) {
     case Drag::Stroke: extendStroke(event); break;
     case Drag::Piece: pointPieceGesture(event.x, event.y); break;
+    case Drag::Cut: mCut.extend(event.x, event.y); break;
     case Drag::Mode:
         if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;

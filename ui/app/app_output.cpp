@@ -30,6 +30,8 @@ const char* promptName(Dialogs::Prompt prompt)
     case Dialogs::Prompt::SaveStrokes: return "save-strokes";
     case Dialogs::Prompt::SmoothModel: return "smooth-model";
     case Dialogs::Prompt::OffsetModel: return "offset-model";
+    case Dialogs::Prompt::HollowModel: return "hollow-model";
+    case Dialogs::Prompt::RemoveIslands: return "remove-islands";
     case Dialogs::Prompt::Morph: return "morph";
     case Dialogs::Prompt::MorphExport: return "morph-export";
     case Dialogs::Prompt::Target: return "target";

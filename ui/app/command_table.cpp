@@ -26,7 +26,10 @@ void toggle(bool& flag) { flag = !flag; }
 template <BrushTool tool>
 CommandRow toolRow(Command command, const char* label, const char* help, int key)
 {
-    return {command, label, help, {{key}}, nullptr, [](SculptApp& a) { a.brush().tool = tool; }};
+    return {command, label, help, {{key}}, nullptr, [](SculptApp& a) {
+                a.brush().tool = tool;
+                a.setCutTool({});
+            }};
 }
 
 template <MaskOperation operation>
@@ -34,6 +37,12 @@ CommandRow maskRow(Command command, const char* label, const char* help, std::ve
                    std::string (*blocked)(const SculptApp&))
 {
     return {command, label, help, std::move(chords), blocked, [](SculptApp& a) { a.editMask(operation); }};
+}
+
+template <CutGesture::Shape shape>
+CommandRow cutRow(Command command, const char* label, const char* help, Chord chord)
+{
+    return {command, label, help, {chord}, nullptr, [](SculptApp& a) { a.setCutTool(shape); }};
 }
 
 template <AxisView view>
@@ -132,6 +141,7 @@ const std::vector<CommandRow>& SculptApp::commands()
          nullptr,
          [](App& a) {
              a.mBrush.tool = BrushTool::Follow;
+             a.mCutTool.reset();
              if (!a.mBrush.target.shape) a.notify("the follow brush needs a target: File > Load Target (Ctrl+T)");
          }},
         toolRow<BrushTool::Primitive>(Command::ToolPrimitive, "Blob", "Stamps a soft blob (Ctrl: carves one)",
@@ -140,6 +150,15 @@ const std::vector<CommandRow>& SculptApp::commands()
                                  "Paints the mask: masked clay holds still under every tool, filter and morph "
                                  "(Ctrl: erases it)",
                                  GLFW_KEY_M),
+        cutRow<CutGesture::Shape::Lasso>(Command::ToolLassoCut, "Lasso Cut",
+                                         "Draw around what to cut away, through the model along the view "
+                                         "(Ctrl: fill it with clay)",
+                                         {GLFW_KEY_J}),
+        cutRow<CutGesture::Shape::Box>(Command::ToolBoxCut, "Box Cut",
+                                       "Drag a box to cut away along the view (Ctrl: fill it)", {GLFW_KEY_J, kShift}),
+        cutRow<CutGesture::Shape::Line>(Command::ToolLineCut, "Line Cut",
+                                        "Drag a line: what lies to its right, as you see it, is cut away",
+                                        {GLFW_KEY_J, kAlt}),
         {Command::RadiusDrag,
          "Radius",
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
@@ -314,6 +333,18 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_O, kAlt}},
          idle,
          [](App& a) { openFilter(a, ModelFilter::Kind::Offset, P::OffsetModel); }},
+        {Command::HollowModel,
+         "Hollow...",
+         "Make the model a shell of a wall thickness with drain holes (for resin prints), as a job",
+         {},
+         idle,
+         [](App& a) { openFilter(a, ModelFilter::Kind::Hollow, P::HollowModel); }},
+        {Command::RemoveIslands,
+         "Remove Small Islands...",
+         "Remove the disjoint bits of clay (a scan's specks) under a volume, as a job",
+         {},
+         idle,
+         [](App& a) { openFilter(a, ModelFilter::Kind::RemoveIslands, P::RemoveIslands); }},
         maskRow<MaskOperation::Invert>(Command::InvertMask, "Invert Mask", "Masked clay becomes free, free clay masked",
                                        {{GLFW_KEY_I, kCtrlShift}}, idle),
         maskRow<MaskOperation::Clear>(Command::ClearMask, "Clear Mask", "Frees the whole model",

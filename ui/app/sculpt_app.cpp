@@ -178,7 +178,8 @@ void SculptApp::updateCursor()
         mHover = key.picking ? pickAt(mMouseX, mMouseY) : std::nullopt;
         mHoverKey = key;
     }
-    const bool show = mHover && !mPiecesMode && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
+    const bool show =
+        mHover && !mPiecesMode && !mCutTool && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift), grey
     // for the mask.
     const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
@@ -326,7 +327,8 @@ void SculptApp::drawPanels()
     drawJobPanel(*this);
     drawModePanel();
     if (mDialogs.help) drawHelpPanel(*this);
-    if (!mHover && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
+    drawCutOutline();
+    if (!mHover && !mCutTool && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
         const double pixels = mBrush.radius / std::max(1e-12, mViewport.pixelSizeAt(mCamera.focalPoint()));
         ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mMouseX), float(mMouseY)), float(pixels),

@@ -18,6 +18,7 @@
 #include "ui/jobs/job_runner.h"
 #include "ui/modes/mode.h"
 #include "ui/modes/mode_host.h"
+#include "ui/sculpting/cut_gesture.h"
 #include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/view/brush_cursor.h"
@@ -86,6 +87,8 @@ struct Dialogs {
         SaveStrokes,
         SmoothModel,
         OffsetModel,
+        HollowModel,
+        RemoveIslands,
         Morph,
         MorphExport,
         Target,
@@ -186,6 +189,12 @@ public:
 
     /// A mask operation on the sculpted piece, one undo step (the status bar says when it changed nothing).
     void editMask(MaskOperation operation);
+    /// Cut tools (app_cut.cpp): a gesture on the screen cuts through the model along the view
+    /// (Ctrl: fills), a job landing as one undo step. None: the brush again.
+    void setCutTool(std::optional<CutGesture::Shape> shape) { mCutTool = shape; }
+    std::optional<CutGesture::Shape> cutTool() const { return mCutTool; }
+    /// How deep a cut reaches from the surface under its first point (0: all the way through).
+    double& cutDepth() { return mCutDepth; }
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -290,6 +299,10 @@ private:
     }
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
+    void beginCut(const InputEvent& event);
+    /// Cuts (or fills) with the finished gesture's prism, as a job.
+    void finishCut();
+    void drawCutOutline() const;
     /// Opens the document at `path` as a job; the old one stays if it fails.
     void startOpen(const std::filesystem::path& path, const std::string& grid = {});
     /// The open job itself: a large model shows its preview first (OpenPreview), then fills in.
@@ -344,6 +357,10 @@ private:
     SurfaceStatistics mStatistics;
     BrushOptions mBrush;
     StrokeController mStroke;
+    std::optional<CutGesture::Shape> mCutTool;  // a cut tool replaces the brush while chosen
+    CutGesture mCut;
+    int mCutMods = 0;       // the modifiers held when the cut began (Ctrl: fill)
+    double mCutNear = 0.0;  // the depth of the surface under the cut's first point (the view's focus off it)
     Dialogs mDialogs;
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
@@ -365,10 +382,11 @@ private:
     int mHeldMods = 0;    // modifier keys held down
     int mStrokeMods = 0;  // the modifiers the current stroke began with
     std::string mTitle;
-    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode, Piece };
+    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode, Piece, Cut };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     bool mPiecesMode = false, mPushPieces = false;
+    double mCutDepth = 0.0;
     std::optional<PieceGesture> mGesture;       // G, R or S under way
     openvdb::Mat4d mGestureShown;               // the placement it shows (stopped at contact)
     std::vector<std::size_t> mObstacles;        // the pieces it stops at

@@ -192,12 +192,16 @@ void Document::endStroke()
     mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingSources)});
 }
 
-void Document::replaceField(FieldImage result, const std::string& label)
+void Document::replaceField(FieldImage result, const std::string& label, std::optional<ScriptEvent> scripted)
 {
     session().replaceField(std::move(result));
     ++mRevision;
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    if (mUnscripted.empty()) mUnscripted = label;
+    if (scripted && mActive == 0) {
+        mLog.events.push_back(std::move(*scripted));
+    } else if (mUnscripted.empty()) {
+        mUnscripted = label;
+    }
 }
 
 bool Document::editMask(MaskOperation operation, int times)

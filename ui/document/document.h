@@ -124,8 +124,9 @@ public:
     void endStroke();
     bool undo();
     bool redo();
-    /// A whole-model edit's result (SculptSession::replaceField), one undo step named `label`.
-    void replaceField(FieldImage result, const std::string& label);
+    /// A whole-model edit's result (SculptSession::replaceField), one undo step named `label`;
+    /// `scripted`, the event a stroke script replays it by (a cut), else Save Strokes refuses it.
+    void replaceField(FieldImage result, const std::string& label, std::optional<ScriptEvent> scripted = {});
     /// A mask operation on the active piece (SculptSession::editMask), one undo step; the stroke
     /// log carries it. False if it changed nothing (no step then).
     bool editMask(MaskOperation operation, int times = 1);

@@ -143,23 +143,55 @@ void pathDialog(SculptApp& app, const char* title, const char* hint)
     okOrCancel(app, "OK", fileField(app, kindsOf(d.prompt), "##path"));
 }
 
+void hollowFields(ModelFilter& f)
+{
+    ImGui::InputDouble("wall thickness", &f.hollow.thicknessWorld, 0.1, 1.0, "%.4g");
+    f.hollow.thicknessWorld = std::max(f.hollow.thicknessWorld, 1e-3);
+    static const char* kSides[] = {"inside", "medial", "outside"};
+    int side = int(f.hollow.side);
+    ImGui::Combo("wall", &side, kSides, 3);
+    f.hollow.side = ShellSide(side);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Inside the surface (it stays where it is), centred on it, or around it");
+    ImGui::InputDouble("closing", &f.hollow.closingWorld, 0.1, 1.0, "%.4g");
+    f.hollow.closingWorld = std::max(f.hollow.closingWorld, 0.0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Smooths the cavity: no part of it narrower than twice this");
+    ImGui::Checkbox("drain holes", &f.drain);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("A hole through the bottom wall under each cavity's lowest point");
+    ImGui::InputDouble("hole radius", &f.drainRadiusWorld, 0.1, 1.0, "%.4g");
+    f.drainRadiusWorld = std::max(f.drainRadiusWorld, 1e-3);
+    static const char* kAxes[] = {"x up", "y up", "z up"};
+    int axis = f.up.x() != 0.0 ? 0 : f.up.y() != 0.0 ? 1 : 2;
+    ImGui::Combo("print direction", &axis, kAxes, 3);
+    f.up = openvdb::Vec3d(axis == 0, axis == 1, axis == 2);
+}
+
 void filterDialog(SculptApp& app)
 {
     Dialogs& d = app.dialogs();
     ModelFilter& f = d.filter;
-    const bool smoothing = f.kind == ModelFilter::Kind::Smooth;
-    beginDialog(smoothing ? "Smooth Model" : "Offset Model");
+    static const char* kTitles[] = {"Smooth Model", "Offset Model", "Hollow", "Remove Small Islands"};
+    beginDialog(kTitles[int(f.kind)]);
     if (d.focusField) ImGui::SetKeyboardFocusHere();
     d.focusField = false;
-    if (smoothing) {
+    switch (f.kind) {
+    case ModelFilter::Kind::Smooth:
         ImGui::InputInt("iterations", &f.iterations, 1, 10);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("Stable steps of mean-curvature flow: more is smoother");
         ImGui::Checkbox("keep volume", &f.keepVolume);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Hold the enclosed volume (otherwise smoothing shrinks the model)");
-    } else {
+        break;
+    case ModelFilter::Kind::Offset:
         ImGui::InputDouble("distance", &f.distanceWorld, 0.1, 1.0, "%.4g");
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("World units along the normal: > 0 grows, < 0 shrinks");
+        break;
+    case ModelFilter::Kind::Hollow: hollowFields(f); break;
+    case ModelFilter::Kind::RemoveIslands:
+        ImGui::InputDouble("smaller than", &f.minIslandVolume, 0.1, 1.0, "%.4g");
+        f.minIslandVolume = std::max(f.minIslandVolume, 0.0);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("Volume (world units cubed): the islands under it are removed");
+        break;
     }
     ImGui::TextDisabled("Runs as a job: the view stays live, Esc cancels, Ctrl+Z undoes it");
     okOrCancel(app, "Run", pressed(GLFW_KEY_ENTER));
@@ -271,7 +303,9 @@ void drawDialogs(SculptApp& app)
     case Dialogs::Prompt::SaveStrokes:
         return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
     case Dialogs::Prompt::SmoothModel:
-    case Dialogs::Prompt::OffsetModel: return filterDialog(app);
+    case Dialogs::Prompt::OffsetModel:
+    case Dialogs::Prompt::HollowModel:
+    case Dialogs::Prompt::RemoveIslands: return filterDialog(app);
     case Dialogs::Prompt::Morph: return morphDialog(app);
     case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
     case Dialogs::Prompt::LoadScene:

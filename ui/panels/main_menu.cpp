@@ -72,6 +72,8 @@ void drawMainMenu(SculptApp& app)
     if (ImGui::BeginMenu("Filters")) {
         item(Command::SmoothModel);
         item(Command::OffsetModel);
+        item(Command::HollowModel);
+        item(Command::RemoveIslands);
         ImGui::Separator();
         item(Command::MorphTo);
         ImGui::EndMenu();

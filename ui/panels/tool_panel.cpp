@@ -27,12 +27,34 @@ void toolPalette(SculptApp& app)
 {
     BrushOptions& b = app.brush();
     for (int i = 0; i < int(std::size(kTools)); ++i) {
-        const bool current = b.tool == kTools[i].tool;
+        const bool current = b.tool == kTools[i].tool && !app.cutTool();
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         if (ImGui::Button(commandRow(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
         commandTooltip(app, kTools[i].command);
         if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
+    }
+    constexpr std::pair<CutGesture::Shape, Command> kCuts[] = {{CutGesture::Shape::Lasso, Command::ToolLassoCut},
+                                                               {CutGesture::Shape::Box, Command::ToolBoxCut},
+                                                               {CutGesture::Shape::Line, Command::ToolLineCut}};
+    for (const auto& [shape, command] : kCuts) {
+        const bool current = app.cutTool() == shape;
+        if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+        if (ImGui::Button(commandRow(command).label, ImVec2(68, 0))) app.execute(command);
+        if (current) ImGui::PopStyleColor();
+        commandTooltip(app, command);
+        if (command != Command::ToolLineCut) ImGui::SameLine();
+    }
+    if (app.cutTool()) {
+        ImGui::PushItemWidth(130);
+        float depth = float(app.cutDepth());
+        if (ImGui::DragFloat("cut depth", &depth, 0.1f, 0.0f, 1e4f, depth > 0.0f ? "%.3g" : "through")) {
+            app.cutDepth() = std::max(0.0f, depth);
+        }
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "How far behind the surface under the first point the cut reaches (0: all the way through)");
+        ImGui::PopItemWidth();
     }
 }
 

@@ -98,7 +98,8 @@ void tintByMask(vtkPolyData& poly, const BlockMesh& mesh, const openvdb::FloatGr
         const openvdb::Vec3d index = xform.worldToIndex(openvdb::Vec3d(p[0], p[1], p[2]));
         const double m = std::clamp(double(openvdb::tools::BoxSampler::sample(acc, index)), 0.0, 1.0);
         for (int c = 0; c < 3; ++c)
-            colours->SetValue(vtkIdType(3 * i + c), static_cast<unsigned char>(std::lround(255.0 * kClayColour[c] * (1.0 - (1.0 - kDarkest) * m))));
+            colours->SetValue(vtkIdType(3 * i + c), static_cast<unsigned char>(std::lround(
+                                                        255.0 * kClayColour[c] * (1.0 - (1.0 - kDarkest) * m))));
     }
     poly.GetPointData()->SetScalars(colours);
 }

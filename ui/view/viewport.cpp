@@ -80,6 +80,17 @@ glm::dmat4 Viewport::worldToNdc() const
     return out;
 }
 
+glm::dmat4 Viewport::viewFromWorld() const
+{
+    const vtkMatrix4x4* m = camera()->GetViewTransformMatrix();
+    glm::dmat4 view(1.0);
+    for (int row = 0; row < 4; ++row)
+        for (int col = 0; col < 4; ++col) view[col][row] = m->GetElement(row, col);
+    return view;
+}
+
+bool Viewport::perspective() const { return camera()->GetParallelProjection() == 0; }
+
 Ray Viewport::rayThrough(double x, double y) const
 {
     const glm::dmat4 inverse = glm::inverse(worldToNdc());

@@ -40,6 +40,10 @@ public:
     int width() const { return mWidth; }
     int height() const { return mHeight; }
 
+    /// View from world (column vectors, as GLM's): the camera's frame, looking down its -z.
+    glm::dmat4 viewFromWorld() const;
+    /// Whether rays leave one eye (else the projection is parallel).
+    bool perspective() const;
     /// The ray from the eye through window pixel (x, y) (origin top left).
     Ray rayThrough(double x, double y) const;
     /// Window pixel of a world point; z in [-1, 1] is its depth (NDC).

@@ -45,7 +45,8 @@ std::map<Coord, VoxelState> heldVoxels(const FieldImage& field)
     const auto acc = field.grid().getConstAccessor();
     for (auto leaf = field.grid().tree().cbeginLeaf(); leaf; ++leaf)
         for (auto it = leaf->beginValueAll(); it; ++it)
-            if (reader.at(it.getCoord()) >= 1.0) held[it.getCoord()] = {acc.getValue(it.getCoord()), acc.isValueOn(it.getCoord())};
+            if (reader.at(it.getCoord()) >= 1.0)
+                held[it.getCoord()] = {acc.getValue(it.getCoord()), acc.isValueOn(it.getCoord())};
     return held;
 }
 
@@ -54,13 +55,11 @@ struct Changes {
     std::size_t held = 0, free = 0;
 };
 
-Changes changesSince(const std::map<Coord, VoxelState>& held, const openvdb::FloatGrid& before,
-                     const FieldImage& after)
+Changes changesSince(const std::map<Coord, VoxelState>& held, const openvdb::FloatGrid& before, const FieldImage& after)
 {
     Changes changes;
     const auto acc = after.grid().getConstAccessor();
-    for (const auto& [ijk, state] : held)
-        changes.held += !(VoxelState{acc.getValue(ijk), acc.isValueOn(ijk)} == state);
+    for (const auto& [ijk, state] : held) changes.held += !(VoxelState{acc.getValue(ijk), acc.isValueOn(ijk)} == state);
     const auto was = before.getConstAccessor();
     for (auto it = after.grid().cbeginValueOn(); it; ++it)
         changes.free += it.getCoord().x() > 0 && was.getValue(it.getCoord()) != *it;

@@ -1,10 +1,12 @@
 // Hollowing and islands against analytic volumes and the marching-cubes mesh's topology.
 
+#include "core/base/errors.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/sdf_rasterizer.h"
 #include "core/solids/hollow.h"
 #include "core/solids/islands.h"
+#include "core/solids/prism_cut.h"
 #include "tests/support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -77,7 +79,9 @@ TEST(Hollow, WallsThinnerThanAVoxelStillMeshClosedAndMedialAndOutsideShellsHoldT
     thin.thicknessWorld = 0.7 * h;
     EXPECT_TRUE(topologyOf(hollow(ball, thin).field).closedManifold);
 
-    const auto shellVolume = [](double inner, double outer) { return 4.0 / 3.0 * M_PI * (std::pow(outer, 3) - std::pow(inner, 3)); };
+    const auto shellVolume = [](double inner, double outer) {
+        return 4.0 / 3.0 * M_PI * (std::pow(outer, 3) - std::pow(inner, 3));
+    };
     HollowOptions medial;
     medial.thicknessWorld = 2.0;
     medial.side = ShellSide::Medial;
@@ -148,6 +152,91 @@ TEST(Islands, KeepingTheOneUnderAPointAndItsComplementUniteIntoTheInput)
     for (auto it = field.grid().cbeginValueOn(); it; ++it)
         differ += std::min(a.getValue(it.getCoord()), b.getValue(it.getCoord())) != *it;
     EXPECT_EQ(differ, 0u);
+}
+
+/// The front view: looking down -z from far along +z, parallel rays.
+ViewPrism frontSquare(double x0, double y0, double x1, double y1)
+{
+    ViewPrism prism;
+    prism.viewFromWorld.setTranslation(Vec3d(0.0, 0.0, -100.0));  // the eye at z = 100
+    prism.polygon = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    return prism;
+}
+
+/// The ball of radius r less the column x > a, y > b (along z), by the midpoint rule.
+double ballLessCorner(double r, double a, double b)
+{
+    const int n = 2000;
+    const double step = r / n;
+    double removed = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double x = (i + 0.5) * step, y = (j + 0.5) * step;
+            if (x > a && y > b && x * x + y * y < r * r)
+                removed += 2.0 * std::sqrt(r * r - x * x - y * y) * step * step;
+        }
+    return 4.0 / 3.0 * M_PI * r * r * r - removed;
+}
+
+TEST(PrismCut, AFrontSquareCutThroughABallRemovesItsPrism)
+{
+    const FieldImage ball = makeSphere(25.0, 0.5);
+    const FieldImage cut = applyPrism(ball, frontSquare(8.0, 6.0, 60.0, 60.0), PrismMode::Cut);
+    const double expected = ballLessCorner(25.0, 8.0, 6.0);
+    EXPECT_NEAR(volumeOf(cut), expected, 0.005 * expected);
+    const Topology t = topologyOf(cut);
+    EXPECT_TRUE(t.closedManifold);
+    EXPECT_EQ(t.shells, 1u);
+    EXPECT_EQ(t.euler, 2);
+    // Away from the prism the ball keeps its voxels.
+    const auto was = ball.grid().getConstAccessor();
+    std::size_t changedFar = 0;
+    for (auto it = cut.grid().cbeginValueOn(); it; ++it) {
+        const Vec3d p = cut.grid().transform().indexToWorld(it.getCoord());
+        changedFar += (p.x() < 5.0 || p.y() < 3.0) && was.getValue(it.getCoord()) != *it;
+    }
+    EXPECT_EQ(changedFar, 0u);
+}
+
+TEST(PrismCut, MirroredAcrossXTheCutFieldIsMirrorSymmetric)
+{
+    ViewPrism prism = frontSquare(8.0, 6.0, 60.0, 60.0);
+    prism.mirror = {true, false, false};
+    const FieldImage cut = applyPrism(makeSphere(25.0, 0.5), prism, PrismMode::Cut);
+    const auto acc = cut.grid().getConstAccessor();
+    std::size_t asymmetric = 0, visited = 0;
+    for (auto it = cut.grid().cbeginValueOn(); it; ++it, ++visited) {
+        const openvdb::Coord m(-it.getCoord().x(), it.getCoord().y(), it.getCoord().z());
+        asymmetric += acc.getValue(m) != *it || !acc.isValueOn(m);
+    }
+    EXPECT_GT(visited, 10000u);
+    EXPECT_EQ(asymmetric, 0u);
+    const double expected = ballLessCorner(25.0, 8.0, 6.0) * 2.0 - 4.0 / 3.0 * M_PI * 25.0 * 25.0 * 25.0;
+    EXPECT_NEAR(volumeOf(cut), expected, 0.005 * expected);
+}
+
+TEST(PrismCut, AFillSlabAddsItsBoxAndAPerspectivePyramidCutsWhatTheEyeSees)
+{
+    const FieldImage ball = makeSphere(10.0, 0.5);
+    ViewPrism slab = frontSquare(-4.0, -4.0, 4.0, 4.0);
+    slab.nearDepth = 80.0;  // z from 20 down to 5: a 8 x 8 x 15 box, 5 of it inside the ball
+    slab.farDepth = 95.0;
+    const FieldImage filled = applyPrism(ball, slab, PrismMode::Fill);
+    EXPECT_GT(volumeOf(filled), volumeOf(ball) + 8.0 * 8.0 * 9.0);
+    EXPECT_LT(volumeOf(filled), volumeOf(ball) + 8.0 * 8.0 * 15.0);
+    EXPECT_EQ(topologyOf(filled).shells, 1u);
+
+    // From the eye at z = 100, the rays through (+-0.05, +-0.05) span +-5 at the ball's centre.
+    ViewPrism pyramid = frontSquare(-0.05, -0.05, 0.05, 0.05);
+    pyramid.perspective = true;
+    const FieldImage holed = applyPrism(ball, pyramid, PrismMode::Cut);
+    const Topology t = topologyOf(holed);
+    EXPECT_EQ(t.shells, 1u);
+    EXPECT_EQ(t.euler, 0) << "a square hole through the ball: a torus";
+    const double removed = volumeOf(ball) - volumeOf(holed);
+    EXPECT_GT(removed, 0.8 * 10.0 * 10.0 * 16.0);
+    EXPECT_LT(removed, 10.0 * 10.0 * 20.0);
+    EXPECT_THROW(applyPrism(ball, frontSquare(-1, -1, 1, 1), PrismMode::Fill), InputError) << "a fill needs a depth";
 }
 
 }  // namespace
