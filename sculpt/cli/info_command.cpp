@@ -1,8 +1,10 @@
 #include "core/base/text_format.h"
 #include "core/io/vdb_layout.h"
 #include "core/mesh/field_measures.h"
+#include "core/solids/wall_thickness.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
+#include "sculpt/cli/number_checks.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -20,7 +22,17 @@ namespace {
 struct InfoOptions {
     DocumentInput input;
     bool json = false;
+    double thickness = 0.0;  ///< > 0: look for walls thinner than this
 };
+
+/// The first piece's thinnest wall under `under` as JSON: null when none is thinner.
+nlohmann::json thinnestJson(const FieldImage& field, double under)
+{
+    const std::optional<ThinnestWall> thinnest = thinnestWall(field, under);
+    if (!thinnest) return nullptr;
+    const openvdb::Vec3d& w = thinnest->where;
+    return {{"thickness", thinnest->thickness}, {"where", {w.x(), w.y(), w.z()}}};
+}
 
 nlohmann::json gridsJson(const VdbLayout& layout)
 {
@@ -134,6 +146,7 @@ void runInfo(const InfoOptions& o)
             piece["visible"] = pieces[i].visible;
             report["pieces"].push_back(piece);
         }
+        if (o.thickness > 0.0) report["thinnest_wall"] = thinnestJson(pieces.front().field, o.thickness);
         std::cout << report.dump() << "\n";
         return;
     }
@@ -145,6 +158,15 @@ void runInfo(const InfoOptions& o)
         printPieces(pieces, measures, othersThan(layout, pieces));
     }
     printMeasures(all, units);
+    if (o.thickness <= 0.0) return;
+    const nlohmann::json thinnest = thinnestJson(pieces.front().field, o.thickness);
+    if (thinnest.is_null()) {
+        std::printf("thinnest wall:        none under %g %s\n", o.thickness, units.c_str());
+    } else {
+        std::printf("thinnest wall:        %g %s at (%g, %g, %g)\n", thinnest["thickness"].get<double>(), units.c_str(),
+                    thinnest["where"][0].get<double>(), thinnest["where"][1].get<double>(),
+                    thinnest["where"][2].get<double>());
+    }
 }
 
 }  // namespace
@@ -165,6 +187,10 @@ void addInfoCommand(CLI::App& app)
                   "grid of the file with its name, type and class, and pieces: the same keys per\n"
                   "piece with its name, colour (sRGB 0..1) and visible; the top-level keys are the\n"
                   "pieces' total)");
+    cmd->add_option("--thickness", options->thickness,
+                    "also find the thinnest wall under this thickness (world units; measured into the solid\n"
+                    "along the normal at every surface sample of the first piece): its thickness and where")
+        ->check(positiveNumber());
     cmd->callback([options] { runInfo(*options); });
 }
 

@@ -7,6 +7,8 @@
 #include "core/solids/hollow.h"
 #include "core/solids/islands.h"
 #include "core/solids/prism_cut.h"
+#include "core/solids/wall_thickness.h"
+#include "core/field/central_difference.h"
 #include "tests/support/mesh_checks.h"
 
 #include <gtest/gtest.h>
@@ -237,6 +239,86 @@ TEST(PrismCut, AFillSlabAddsItsBoxAndAPerspectivePyramidCutsWhatTheEyeSees)
     EXPECT_GT(removed, 0.8 * 10.0 * 10.0 * 16.0);
     EXPECT_LT(removed, 10.0 * 10.0 * 20.0);
     EXPECT_THROW(applyPrism(ball, frontSquare(-1, -1, 1, 1), PrismMode::Fill), InputError) << "a fill needs a depth";
+}
+
+/// A box of half extents `half` centred at `centre`: its exact signed distance.
+double boxDistance(const Vec3d& p, const Vec3d& centre, const Vec3d& half)
+{
+    const Vec3d q(std::abs(p.x() - centre.x()) - half.x(), std::abs(p.y() - centre.y()) - half.y(),
+                  std::abs(p.z() - centre.z()) - half.z());
+    const Vec3d out(std::max(q.x(), 0.0), std::max(q.y(), 0.0), std::max(q.z(), 0.0));
+    return out.length() + std::min(std::max({q.x(), q.y(), q.z()}), 0.0);
+}
+
+/// A plate 20 x 20 x 2 (z from -1 to 1) with a fin 0.6 thick and 4 high standing on it at x = 0;
+/// its near edge (y < -6) chamfered at 45 degrees underneath.
+FieldImage plateWithFin(double h)
+{
+    AnalyticSdf sdf;
+    sdf.distance = [](const Vec3d& p) {
+        const double plate = std::max(boxDistance(p, Vec3d(0, 0, 0), Vec3d(10, 10, 1)),
+                                      (-(p.y() + 6.0) - (p.z() + 1.0) - 3.0) / std::sqrt(2.0));
+        return std::min(plate, boxDistance(p, Vec3d(0, 0, 3), Vec3d(0.3, 8, 2)));
+    };
+    sdf.bounds = openvdb::BBoxd(Vec3d(-10, -10, -1), Vec3d(10, 10, 5));
+    sdf.surfaceArea = 2 * 400 + 80 + 2 * 64;
+    sdf.description = "plate with a fin";
+    return rasterizeSdf(sdf, h);
+}
+
+TEST(WallThickness, APlateReadsItsThicknessAndOnlyItsThinFinIsFlagged)
+{
+    const double h = 0.1;
+    const FieldImage plate = plateWithFin(h);
+    const auto plateT = wallThicknessAt(plate.grid(), Vec3d(5, 3, 1), Vec3d(0, 0, 1), 10.0);
+    ASSERT_TRUE(plateT.has_value());
+    EXPECT_NEAR(*plateT, 2.0, h);
+    const auto finT = wallThicknessAt(plate.grid(), Vec3d(0.3, 0, 3), Vec3d(1, 0, 0), 10.0);
+    ASSERT_TRUE(finT.has_value());
+    EXPECT_NEAR(*finT, 0.6, h);
+    EXPECT_FALSE(wallThicknessAt(plate.grid(), Vec3d(5, 3, 1), Vec3d(0, 0, 1), 1.0).has_value());
+
+    const std::optional<ThinnestWall> thinnest = thinnestWall(plate, 1.0);
+    ASSERT_TRUE(thinnest.has_value());
+    EXPECT_NEAR(thinnest->thickness, 0.6, h);
+    EXPECT_LE(std::abs(thinnest->where.x()), 0.3 + 2 * h);
+    EXPECT_GE(thinnest->where.z(), 1.0 - 2 * h);
+    // Every surface point under 1 mm is on the fin.
+    const auto acc = plate.grid().getConstAccessor();
+    std::size_t flagged = 0, offFin = 0;
+    for (auto it = plate.grid().cbeginValueOn(); it; ++it) {
+        if (std::abs(*it) > 0.5 * h) continue;
+        const Vec3d difference = centralDifferenceAt(acc, it.getCoord());
+        const Vec3d foot = closestSurfacePoint(plate.grid().transform().indexToWorld(it.getCoord()), *it, difference);
+        const auto t = wallThicknessAt(plate.grid(), foot, difference.unitSafe(), 1.0);
+        if (!t) continue;
+        ++flagged;
+        offFin += std::abs(foot.x()) > 0.3 + 2 * h || foot.z() < 1.0 - 2 * h;
+    }
+    EXPECT_GT(flagged, 100u);
+    EXPECT_EQ(offFin, 0u);
+}
+
+TEST(WallThickness, AFortyFiveDegreeChamferOverhangsFortyFiveDegrees)
+{
+    const double h = 0.1;
+    const FieldImage plate = plateWithFin(h);
+    const auto acc = plate.grid().getConstAccessor();
+    std::size_t measured = 0;
+    for (auto it = plate.grid().cbeginValueOn(); it; ++it) {
+        const Vec3d p = plate.grid().transform().indexToWorld(it.getCoord());
+        // On the chamfer (the plane y + z = -10, z from -1 to 0), away from its edges.
+        if (std::abs(*it) > 0.5 * h || std::abs(p.x()) > 8.0 || p.z() > -0.2 || p.z() < -0.8 || p.y() > -8.5)
+            continue;
+        const Vec3d normal = centralDifferenceAt(acc, it.getCoord()).unitSafe();
+        const auto overhang = overhangDegrees(normal, Vec3d(0, 0, 1));
+        ASSERT_TRUE(overhang.has_value()) << p;
+        EXPECT_NEAR(*overhang, 45.0, 2.0) << p;
+        ++measured;
+    }
+    EXPECT_GT(measured, 100u);
+    EXPECT_FALSE(overhangDegrees(Vec3d(0, 0, 1), Vec3d(0, 0, 1)).has_value()) << "a face looking up";
+    EXPECT_NEAR(*overhangDegrees(Vec3d(0, 0, -1), Vec3d(0, 0, 1)), 0.0, 1e-9) << "facing the plate";
 }
 
 }  // namespace
