@@ -60,6 +60,13 @@ void LeafJournal::save(const openvdb::FloatTree& tree, const openvdb::Coord& lea
     mEntries.emplace(leafOrigin, std::move(saved));
 }
 
+void LeafJournal::saveWholeMask(openvdb::FloatGrid::Ptr mask)
+{
+    mHasWholeMask = true;
+    mBytes += mask ? mask->memUsage() : 0;
+    mWholeMask = std::move(mask);
+}
+
 void LeafJournal::saveMask(const openvdb::FloatTree& maskTree, const openvdb::Coord& leafOrigin)
 {
     if (mMaskEntries.count(leafOrigin)) return;
@@ -104,6 +111,15 @@ void LeafJournal::swap(FieldImage& field)
     DirtyRegion touched;
     mBytes = swapEntries(field.mutableGrid().tree(), mEntries, touched);
     if (!mMaskEntries.empty()) mBytes += swapEntries(field.mutableMask().tree(), mMaskEntries, touched);
+    if (mHasWholeMask) {
+        openvdb::FloatGrid::Ptr current = field.maskPtr();
+        for (const openvdb::FloatGrid::Ptr& mask : {current, mWholeMask})
+            if (mask)
+                for (auto leaf = mask->tree().cbeginLeaf(); leaf; ++leaf) touched.addVoxel(leaf->origin());
+        field.setMask(mWholeMask);
+        mWholeMask = std::move(current);
+        mBytes += mWholeMask ? mWholeMask->memUsage() : 0;
+    }
     field.markDirty(touched);
 }
 

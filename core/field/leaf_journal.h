@@ -38,6 +38,9 @@ public:
     /// The same for a leaf position of the field's mask (FieldImage::mask): an edit of the mask is
     /// journalled with the surface's, and swap() restores both.
     void saveMask(const openvdb::FloatTree& maskTree, const openvdb::Coord& leafOrigin);
+    /// Keeps the field's whole mask (null: none) before an edit that replaces it whole (clearing
+    /// it): swap() exchanges it with the field's mask.
+    void saveWholeMask(openvdb::FloatGrid::Ptr mask);
 
     /// What the tree held at a saved leaf position: that leaf (its values), or, where there was
     /// none, the value of the tile or background that covered it.
@@ -51,7 +54,7 @@ public:
     /// Restores every saved position and keeps what it replaced; marks them dirty in `field`.
     void swap(FieldImage& field);
 
-    bool empty() const { return mEntries.empty() && mMaskEntries.empty() && !mWholeGrid; }
+    bool empty() const { return mEntries.empty() && mMaskEntries.empty() && !mWholeGrid && !mHasWholeMask; }
     std::size_t leafCount() const { return mEntries.size() + mMaskEntries.size(); }
     /// Heap bytes held (leaf copies and bookkeeping).
     std::size_t memoryBytes() const { return mBytes; }
@@ -67,6 +70,8 @@ private:
 
     Entries mEntries;
     Entries mMaskEntries;
+    bool mHasWholeMask = false;
+    openvdb::FloatGrid::Ptr mWholeMask;
     openvdb::FloatGrid::Ptr mWholeGrid;
     std::size_t mBytes = 0;
 };

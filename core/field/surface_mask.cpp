@@ -1,8 +1,5 @@
 #include "core/field/surface_mask.h"
 
-#include "core/field/central_difference.h"
-
-#include <openvdb/tools/Interpolation.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -28,22 +25,6 @@ std::vector<openvdb::Coord> leafOriginsOfEither(const openvdb::FloatTree& a, con
 
 }  // namespace
 
-MaskReader::MaskReader(const openvdb::FloatGrid& surface, const openvdb::FloatGrid& mask)
-    : mSurface(surface.getConstAccessor()), mMask(mask.getConstAccessor()),
-      mInvVoxel(1.0 / surface.transform().voxelSize()[0])
-{}
-
-double MaskReader::at(const openvdb::Coord& ijk) const
-{
-    return atIndex(ijk.asVec3d(), mSurface.getValue(ijk), centralDifferenceAt(mSurface, ijk));
-}
-
-double MaskReader::atIndex(const openvdb::Vec3d& index, float phi, const openvdb::Vec3d& difference) const
-{
-    const openvdb::Vec3d foot = closestSurfacePoint(index, phi, difference, mInvVoxel);
-    return std::clamp(double(openvdb::tools::BoxSampler::sample(mMask, foot)), 0.0, 1.0);
-}
-
 void keepMasked(FieldImage& field, const openvdb::FloatGrid& before)
 {
     const openvdb::FloatGrid* mask = field.mask();
@@ -57,7 +38,7 @@ void keepMasked(FieldImage& field, const openvdb::FloatGrid& before)
     std::mutex newLeavesLock;
     std::vector<char> changed(origins.size(), 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, origins.size()), [&](const auto& range) {
-        const MaskReader reader(before, *mask);
+        const MaskReader reader(*mask);
         const auto beforeAcc = before.getConstAccessor();
         const auto afterAcc = grid.getConstAccessor();
         for (std::size_t i = range.begin(); i < range.end(); ++i) {

@@ -2,33 +2,32 @@
 /// @file surface_mask.h
 /// @brief Reading the field's mask where an edit lands, and holding the share of the edit it holds.
 ///
-/// The mask (FieldImage::mask) lives on the field's voxels but belongs to the surface: a voxel's
-/// weight m is the mask at the voxel's closest surface point (trilinear), as the follow brush
-/// reads its target, so the whole band under a masked patch of surface is held alike. An edit
-/// that would take a voxel from v to v' leaves it at v + (1 - m)(v' - v): every speed times
-/// (1 - m). Where m = 1 the voxel keeps v bit for bit; where m = 0 it takes v' bit for bit.
+/// The mask (FieldImage::mask) belongs to the surface but lives on the field's voxels: painting
+/// gives each voxel the mask of its closest surface point (masks/mask_edit.h), so the whole band
+/// under a masked patch of surface is held alike, and an edit reads each voxel's own value m.
+/// Reading it there, not again at a closest point the edit may be moving, keeps the voxels held
+/// the same from one step of an edit to the next. An edit that would take a voxel from v to v'
+/// leaves it at v + (1 - m)(v' - v): every speed times (1 - m). Where m = 1 the voxel keeps v
+/// bit for bit; where m = 0 (or nothing is stored) it takes v' bit for bit.
 
 #include "core/field/band_rule.h"
 #include "core/field/field_image.h"
 
 #include <openvdb/openvdb.h>
 
+#include <algorithm>
+
 namespace sculpt {
 
-/// Reads a mask at the closest points of a surface (the field before an edit). Holds accessors:
-/// one reader per thread.
+/// Reads a mask, one voxel at a time. Holds an accessor: one reader per thread.
 class MaskReader {
 public:
-    MaskReader(const openvdb::FloatGrid& surface, const openvdb::FloatGrid& mask);
-    /// The mask, clamped to [0, 1], at voxel ijk's closest surface point (outside the band, where
-    /// the field knows only its sign, at the voxel itself).
-    double at(const openvdb::Coord& ijk) const;
-    /// The same at any lattice point of the surface's index space.
-    double atIndex(const openvdb::Vec3d& index, float phi, const openvdb::Vec3d& difference) const;
+    explicit MaskReader(const openvdb::FloatGrid& mask) : mMask(mask.getConstAccessor()) {}
+    /// The voxel's mask, clamped to [0, 1].
+    double at(const openvdb::Coord& ijk) const { return std::clamp(double(mMask.getValue(ijk)), 0.0, 1.0); }
 
 private:
-    openvdb::FloatGrid::ConstAccessor mSurface, mMask;
-    double mInvVoxel;
+    openvdb::FloatGrid::ConstAccessor mMask;
 };
 
 /// What the band stores of a voxel the edit took from `before` to `after` once the mask `m` held

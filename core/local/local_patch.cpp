@@ -117,9 +117,8 @@ DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal)
     const Capsule region = mRegion.inIndexSpace(grid.transform());
     removeSpecks(mField.mutableGrid(), region, mInnerLeaves);
     const float background = grid.background();
-    // Every change is found before any is written: the mask is read on the surface as it was.
     std::optional<MaskReader> mask;
-    if (target.mask()) mask.emplace(grid, *target.mask());
+    if (target.mask()) mask.emplace(*target.mask());
     struct Change {
         openvdb::Coord ijk;
         BandValue value;
@@ -141,10 +140,13 @@ DirtyRegion LocalPatch::commit(FieldImage& target, LeafJournal* journal)
         }
         if (!changes.empty()) edits.emplace_back(origin, std::move(changes));
     }
+    // Every leaf is saved before any is written: a leaf made in an empty region must not make its
+    // neighbours' saved states part of the region it made.
+    for (const auto& [origin, changes] : edits)
+        if (journal) journal->save(grid.tree(), origin);
     auto write = grid.getAccessor();
     DirtyRegion touched;
     for (const auto& [origin, changes] : edits) {
-        if (journal) journal->save(grid.tree(), origin);
         LeafT* leaf = write.touchLeaf(origin);
         for (const Change& change : changes) setBandValue(*leaf, change.ijk, change.value);
         touched.addVoxel(origin);

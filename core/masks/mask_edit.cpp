@@ -57,11 +57,13 @@ DirtyRegion rewriteMask(FieldImage& field, const std::vector<openvdb::Coord>& le
             changed[i] |= empty[i] && mask.tree().probeConstLeaf(origins[i]);
         }
     });
+    // Every leaf is saved before any is written (see LocalPatch::commit).
+    for (std::size_t i = 0; i < origins.size(); ++i)
+        if (changed[i] && journal) journal->saveMask(mask.tree(), origins[i]);
     auto acc = mask.getAccessor();
     DirtyRegion touched;
     for (std::size_t i = 0; i < origins.size(); ++i) {
         if (!changed[i]) continue;
-        if (journal) journal->saveMask(mask.tree(), origins[i]);
         touched.addVoxel(origins[i]);
         if (empty[i]) {
             acc.addTile(1, origins[i], 0.0f, false);

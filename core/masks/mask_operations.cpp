@@ -2,6 +2,7 @@
 
 #include "core/base/enum_names.h"
 #include "core/base/errors.h"
+#include "core/field/leaf_journal.h"
 #include "core/masks/mask_edit.h"
 
 #include <algorithm>
@@ -27,7 +28,6 @@ MaskRule ruleOf(MaskOperation operation)
 {
     switch (operation) {
     case MaskOperation::Invert: return [](const openvdb::Coord& ijk, const MaskSite& s) { return 1.0 - s.mask(ijk); };
-    case MaskOperation::Clear: return [](const openvdb::Coord&, const MaskSite&) { return 0.0; };
     case MaskOperation::Sharpen:
         return [](const openvdb::Coord& ijk, const MaskSite& s) {
             const double m = s.mask(ijk);
@@ -49,8 +49,21 @@ MaskRule ruleOf(MaskOperation operation)
             return m;
         };
     }
+    case MaskOperation::Clear: break;  // clearMask drops the mask whole
     }
     return {};
+}
+
+/// Drops the mask whole (the journal keeps it whole): nothing is left to read.
+DirtyRegion clearMask(FieldImage& field, LeafJournal* journal)
+{
+    if (!field.mask()) return {};
+    DirtyRegion cleared;
+    for (auto leaf = field.mask()->tree().cbeginLeaf(); leaf; ++leaf) cleared.addVoxel(leaf->origin());
+    if (journal) journal->saveWholeMask(field.maskPtr());
+    field.setMask(nullptr);
+    field.markDirty(cleared);
+    return cleared;
 }
 
 }  // namespace
@@ -62,10 +75,10 @@ const char* maskOperationName(MaskOperation operation) { return enumName(kNames,
 DirtyRegion applyMaskOperation(FieldImage& field, MaskOperation operation, int times, LeafJournal* journal)
 {
     if (times < 1) throw InputError("a mask operation runs at least once (got " + std::to_string(times) + ")");
+    if (operation == MaskOperation::Clear) return clearMask(field, journal);
     const std::vector<openvdb::Coord> domain = maskDomain(field);
     DirtyRegion changed;
     for (int i = 0; i < times; ++i) changed.merge(rewriteMask(field, domain, journal, ruleOf(operation)));
-    if (operation == MaskOperation::Clear) field.setMask(nullptr);  // nothing to read any more
     return changed;
 }
 

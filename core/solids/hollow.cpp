@@ -53,8 +53,9 @@ openvdb::FloatGrid::Ptr widened(const FieldImage& field, double insideWorld, dou
     return openvdb::tools::levelSetRebuild(field.grid(), 0.0f, float(w + outsideWorld / h), float(w + insideWorld / h));
 }
 
-/// The lowest point along `up` of each connected part of the cavity (its active voxels nearest
-/// the zero crossing stand for its wall).
+/// The lowest point along `up` of each connected part of the cavity: among its wall's voxels
+/// (within half a voxel of the zero crossing) within half a voxel of the lowest, the one nearest
+/// their middle (a flat floor drains from its centre, not a corner).
 std::vector<openvdb::Vec3d> bottomsOf(const openvdb::FloatGrid& cavity, const openvdb::Vec3d& up)
 {
     std::vector<openvdb::FloatGrid::Ptr> parts;
@@ -62,14 +63,22 @@ std::vector<openvdb::Vec3d> bottomsOf(const openvdb::FloatGrid& cavity, const op
     std::vector<openvdb::Vec3d> bottoms;
     const double h = cavity.transform().voxelSize()[0];
     for (const auto& part : parts) {
+        std::vector<openvdb::Vec3d> wall;
         double lowest = std::numeric_limits<double>::infinity();
-        openvdb::Vec3d at(0.0);
         for (auto it = part->cbeginValueOn(); it; ++it) {
             if (std::abs(*it) > 0.5 * h) continue;
-            const openvdb::Vec3d p = part->transform().indexToWorld(it.getCoord());
-            if (p.dot(up) < lowest) lowest = p.dot(up), at = p;
+            wall.push_back(part->transform().indexToWorld(it.getCoord()));
+            lowest = std::min(lowest, wall.back().dot(up));
         }
-        if (std::isfinite(lowest)) bottoms.push_back(at);
+        openvdb::Vec3d middle(0.0);
+        std::vector<openvdb::Vec3d> floor;
+        for (const openvdb::Vec3d& p : wall)
+            if (p.dot(up) <= lowest + 0.5 * h) floor.push_back(p), middle += p;
+        if (floor.empty()) continue;
+        middle /= double(floor.size());
+        bottoms.push_back(*std::min_element(floor.begin(), floor.end(), [&](const auto& a, const auto& b) {
+            return (a - middle).lengthSqr() < (b - middle).lengthSqr();
+        }));
     }
     return bottoms;
 }

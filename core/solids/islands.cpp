@@ -18,15 +18,17 @@ openvdb::BBoxd worldBoundsOf(const openvdb::FloatGrid& grid)
     return grid.transform().indexToWorld(box);
 }
 
-/// `field` less the islands of `islands` that `removed` picks (each subtracted).
-template <typename Removed>
-void subtractIslands(FieldImage& field, const std::vector<Island>& islands, const Removed& removed)
+/// `field` made of the islands of `islands` that `kept` picks (united: islands apart by more than
+/// the band keep their voxels bit for bit, and nothing of the others is left, not even a band).
+template <typename Kept>
+void keepIslands(FieldImage& field, const std::vector<Island>& islands, const Kept& kept)
 {
-    openvdb::FloatGrid::Ptr grid = field.grid().deepCopy();
+    openvdb::FloatGrid::Ptr grid = makeLevelSetGrid(field.grid().transform(), field.grid().background());
+    grid->setName(field.grid().getName());
     for (std::size_t i = 0; i < islands.size(); ++i) {
-        if (!removed(i)) continue;
+        if (!kept(i)) continue;
         openvdb::FloatGrid::Ptr island = islands[i].grid->deepCopy();
-        openvdb::tools::csgDifference(*grid, *island);
+        openvdb::tools::csgUnion(*grid, *island);
     }
     field.swapGrid(grid);
 }
@@ -50,10 +52,10 @@ std::vector<Island> findIslands(const FieldImage& field)
 std::size_t removeIslandsUnder(FieldImage& field, double minVolume)
 {
     const std::vector<Island> islands = findIslands(field);
-    const auto small = [&](std::size_t i) { return islands[i].volume < minVolume; };
+    const auto large = [&](std::size_t i) { return islands[i].volume >= minVolume; };
     const std::size_t count = std::size_t(
         std::count_if(islands.begin(), islands.end(), [&](const Island& island) { return island.volume < minVolume; }));
-    if (count > 0) subtractIslands(field, islands, small);
+    if (count > 0) keepIslands(field, islands, large);
     return count;
 }
 
@@ -71,7 +73,7 @@ int islandAt(const std::vector<Island>& islands, const openvdb::Vec3d& world, do
 
 void keepOrRemoveIsland(FieldImage& field, const std::vector<Island>& islands, std::size_t index, bool keep)
 {
-    subtractIslands(field, islands, [&](std::size_t i) { return (i == index) != keep; });
+    keepIslands(field, islands, [&](std::size_t i) { return (i == index) == keep; });
 }
 
 }  // namespace sculpt

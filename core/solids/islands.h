@@ -20,9 +20,9 @@ struct Island {
 /// Every island of the field, largest first. Cost: the band.
 std::vector<Island> findIslands(const FieldImage& field);
 
-/// The field without the islands whose volume is under `minVolume` (world units cubed): each is
-/// subtracted (CSG difference), so the voxels of the others stay bit for bit unless two bands
-/// overlap. Returns how many were removed.
+/// The field without the islands whose volume is under `minVolume` (world units cubed): the others
+/// are united again (CSG union), so their voxels stay bit for bit unless two bands overlap.
+/// Returns how many were removed.
 std::size_t removeIslandsUnder(FieldImage& field, double minVolume);
 
 /// The index (in findIslands' order) of the island holding or nearest `world` within

@@ -79,8 +79,8 @@ std::optional<ThinnestWall> thinnestWall(const FieldImage& field, double farthes
                 const openvdb::Vec3d foot =
                     closestSurfacePoint(grid.transform().indexToWorld(it.getCoord()), *it, difference);
                 ++best.samples;
-                const std::optional<double> t = distanceToExit(acc, grid.transform(), foot, -normal, 0.5 * h,
-                                                               best.thickness, h);
+                const std::optional<double> t =
+                    distanceToExit(acc, grid.transform(), foot, -normal, 0.5 * h, best.thickness, h);
                 if (t && (*t < best.thickness || (*t == best.thickness && lexicographicallyBefore(foot, best.where))))
                     best = {*t, foot, best.samples};
             }
@@ -91,7 +91,8 @@ std::optional<ThinnestWall> thinnestWall(const FieldImage& field, double farthes
     for (const ThinnestWall& local : found) {
         thinnest.samples += local.samples;
         if (local.thickness < thinnest.thickness ||
-            (local.thickness == thinnest.thickness && local.thickness < farthestWorld && lexicographicallyBefore(local.where, thinnest.where))) {
+            (local.thickness == thinnest.thickness && local.thickness < farthestWorld &&
+             lexicographicallyBefore(local.where, thinnest.where))) {
             thinnest.thickness = local.thickness;
             thinnest.where = local.where;
             any = true;

@@ -28,9 +28,9 @@ std::optional<double> wallThicknessAt(const openvdb::FloatGrid& grid, const open
 std::optional<double> overhangDegrees(const openvdb::Vec3d& normal, const openvdb::Vec3d& up);
 
 struct ThinnestWall {
-    double thickness = 0.0;    ///< world units
+    double thickness = 0.0;     ///< world units
     openvdb::Vec3d where{0.0};  ///< the surface point
-    std::size_t samples = 0;   ///< surface points measured
+    std::size_t samples = 0;    ///< surface points measured
 };
 
 /// The thinnest wall of the field: measured at the closest surface point of every band voxel

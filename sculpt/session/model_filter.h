@@ -22,7 +22,7 @@ struct ModelFilter {
     int iterations = 10;         ///< smooth: stable steps (dt = h^2 / 6)
     bool keepVolume = false;     ///< smooth: hold the mesh volume
     double distanceWorld = 1.0;  ///< offset: > 0 grows
-    HollowOptions hollow;        ///< hollow: the shell
+    HollowOptions hollow{};      ///< hollow: the shell
     bool drain = true;           ///< hollow: a drain hole under each cavity
     double drainRadiusWorld = 1.0;
     openvdb::Vec3d up{0.0, 0.0, 1.0};  ///< hollow: the print direction

@@ -45,7 +45,7 @@ struct ScriptEvent {
     StrokeSources sources;
     MaskOperation maskOperation = MaskOperation::Invert;  ///< Kind::Mask only
     int maskTimes = 1;                                    ///< Kind::Mask only
-    ViewPrism prism;                                      ///< Kind::Cut only
+    ViewPrism prism{};                                    ///< Kind::Cut only
     PrismMode prismMode = PrismMode::Cut;                 ///< Kind::Cut only
 };
 

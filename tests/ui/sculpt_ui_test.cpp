@@ -490,15 +490,15 @@ TEST(SculptUi, AWholeModelSmoothRunsAsAJobTheViewStaysLiveAndCancelChangesNothin
     EXPECT_FALSE(reports["cancelled"]["modified"].get<bool>());
 }
 
-/// Of the voxels of `before`'s leaves: those whose closest surface point reads mask 1, those of
-/// them that differ in `after`, and the others that differ.
+/// Of the voxels of `before`'s leaves: those whose mask is 1, those of them that differ in
+/// `after`, and the others that differ.
 struct MaskedChanges {
     std::size_t held = 0, heldChanged = 0, freeChanged = 0;
 };
 
 MaskedChanges maskedChanges(const FieldImage& before, const FieldImage& after)
 {
-    const MaskReader reader(before.grid(), *before.mask());
+    const MaskReader reader(*before.mask());
     const auto was = before.grid().getConstAccessor(), now = after.grid().getConstAccessor();
     MaskedChanges changes;
     for (auto leaf = before.grid().tree().cbeginLeaf(); leaf; ++leaf)

@@ -5,6 +5,7 @@
 #include "core/base/text_format.h"
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_layout.h"
+#include "core/solids/islands.h"
 #include "sculpt/session/morph_run.h"
 #include "sculpt/session/shape_import.h"
 #include "ui/app/sculpt_app.h"
@@ -144,6 +145,25 @@ void SculptApp::startFilter(const ModelFilter& filter)
     startEdit({filterLabel(filter),
                [filter, source](FieldImage model, const Progress& p) {
                    return applyFilter(std::move(model), filter, source, p);
+               },
+               {}});
+}
+
+void SculptApp::editIslandUnderPointer(bool keep)
+{
+    if (busy()) return;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    if (!hit) return notify(std::string("point at the island to ") + (keep ? "keep" : "delete") + " first");
+    const openvdb::Vec3d at(hit->position.x, hit->position.y, hit->position.z);
+    const double reach = 2.0 * mDocument->session().field().voxelSize();
+    startEdit({keep ? "keep island" : "delete island",
+               [at, reach, keep](FieldImage model, const Progress&) {
+                   const std::vector<Island> islands = findIslands(model);
+                   const int index = islandAt(islands, at, reach);
+                   if (index < 0) throw InputError("no island under the pointer");
+                   keepOrRemoveIsland(model, islands, std::size_t(index), keep);
+                   refuseEmptyResult(model, "the model", keep ? "keep island" : "delete island");
+                   return model;
                },
                {}});
 }

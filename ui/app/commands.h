@@ -61,6 +61,8 @@ enum class Command {
     OffsetModel,
     HollowModel,
     RemoveIslands,
+    KeepIsland,
+    DeleteIsland,
     MorphTo,
     MorphPlay,
     StepUp,

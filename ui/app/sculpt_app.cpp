@@ -265,7 +265,10 @@ void SculptApp::frame()
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
     const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
     const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
-    mDisplay.sync(shown, session.field().voxelSize(), detailView(now), session.field().mask());
+    SurfaceTint tint = mCheck;
+    tint.mask = session.field().mask();
+    tint.surface = &session.field().grid();
+    mDisplay.sync(shown, session.field().voxelSize(), detailView(now), tint);
     mScales.sync(shown, session.field().voxelSize());
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     mPieces.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));

@@ -195,6 +195,11 @@ public:
     std::optional<CutGesture::Shape> cutTool() const { return mCutTool; }
     /// How deep a cut reaches from the surface under its first point (0: all the way through).
     double& cutDepth() { return mCutDepth; }
+    /// Keeps only (or deletes) the island under the pointer, as a job; says so when none is there.
+    void editIslandUnderPointer(bool keep);
+    /// The print check the clay shows (View > Print Check): wall thickness or overhang, and their
+    /// thresholds; its grids are filled in each frame.
+    SurfaceTint& printCheck() { return mCheck; }
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -387,6 +392,7 @@ private:
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     bool mPiecesMode = false, mPushPieces = false;
     double mCutDepth = 0.0;
+    SurfaceTint mCheck;
     std::optional<PieceGesture> mGesture;       // G, R or S under way
     openvdb::Mat4d mGestureShown;               // the placement it shows (stopped at contact)
     std::vector<std::size_t> mObstacles;        // the pieces it stops at

@@ -3,6 +3,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 namespace sculpt::ui {
 
 void commandMenuItem(SculptApp& app, Command command)
@@ -21,6 +23,29 @@ void commandTooltip(const SculptApp& app, Command command)
     ImGui::SetTooltip("%s%s%s%s%s", commandRow(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
                       blocked.empty() ? "" : "\nNot now: ", blocked.c_str());
 }
+
+namespace {
+
+/// View > Print Check: colour thin walls or overhangs, with their thresholds.
+void printCheckMenu(SurfaceTint& check)
+{
+    if (!ImGui::BeginMenu("Print Check")) return;
+    for (SurfaceTint::Check c : {SurfaceTint::Check::None, SurfaceTint::Check::Thickness, SurfaceTint::Check::Overhang})
+        if (ImGui::MenuItem(checkName(c), nullptr, check.check == c)) check.check = c;
+    ImGui::Separator();
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputDouble("thinner than", &check.thinnerThan, 0.1, 1.0, "%.3g"))
+        check.thinnerThan = std::max(check.thinnerThan, 1e-3);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Walls thinner than this (world units) show red");
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputDouble("steeper than", &check.steeperThan, 1.0, 5.0, "%.3g"))
+        check.steeperThan = std::clamp(check.steeperThan, 1.0, 89.0);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Faces overhanging closer to facing down than this (degrees; print direction +z) show blue");
+    ImGui::EndMenu();
+}
+
+}  // namespace
 
 void drawMainMenu(SculptApp& app)
 {
@@ -74,6 +99,8 @@ void drawMainMenu(SculptApp& app)
         item(Command::OffsetModel);
         item(Command::HollowModel);
         item(Command::RemoveIslands);
+        item(Command::KeepIsland);
+        item(Command::DeleteIsland);
         ImGui::Separator();
         item(Command::MorphTo);
         ImGui::EndMenu();
@@ -97,6 +124,7 @@ void drawMainMenu(SculptApp& app)
             app.execute(Command::ToggleGhost);
         if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
             app.execute(Command::ToggleTrackball);
+        printCheckMenu(app.printCheck());
         ImGui::Separator();
         for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight,
                           Command::ViewLeft, Command::ViewTop, Command::ViewBottom}) {

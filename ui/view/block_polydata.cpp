@@ -1,19 +1,13 @@
 #include "ui/view/block_polydata.h"
 
-#include "ui/view/surface_look.h"
-
 #include <glm/common.hpp>
-#include <openvdb/tools/Interpolation.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTypeInt32Array.h>
-#include <vtkUnsignedCharArray.h>
 
-#include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -82,26 +76,6 @@ vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh)
     poly->GetPointData()->SetNormals(normals);
     poly->SetPolys(cells);
     return poly;
-}
-
-void tintByMask(vtkPolyData& poly, const BlockMesh& mesh, const openvdb::FloatGrid& mask)
-{
-    constexpr double kDarkest = 0.4;  // of the clay, where fully masked
-    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colours->SetName("Mask");
-    colours->SetNumberOfComponents(3);
-    colours->SetNumberOfTuples(vtkIdType(mesh.positions.size()));
-    const auto acc = mask.getConstAccessor();
-    const openvdb::math::Transform& xform = mask.transform();
-    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-        const auto& p = mesh.positions[i];
-        const openvdb::Vec3d index = xform.worldToIndex(openvdb::Vec3d(p[0], p[1], p[2]));
-        const double m = std::clamp(double(openvdb::tools::BoxSampler::sample(acc, index)), 0.0, 1.0);
-        for (int c = 0; c < 3; ++c)
-            colours->SetValue(vtkIdType(3 * i + c), static_cast<unsigned char>(std::lround(
-                                                        255.0 * kClayColour[c] * (1.0 - (1.0 - kDarkest) * m))));
-    }
-    poly.GetPointData()->SetScalars(colours);
 }
 
 BlockMesh blockMeshOf(const vtkPolyData* poly)

@@ -5,7 +5,6 @@
 #include "core/mesh/block_mesh.h"
 
 #include <glm/vec3.hpp>
-#include <openvdb/openvdb.h>
 #include <vtkSmartPointer.h>
 
 #include <utility>
@@ -22,9 +21,6 @@ std::pair<glm::dvec3, glm::dvec3> boundsOf(const std::array<float, 3>* points, s
 
 /// The mesh's points, normals and triangles, copied into VTK arrays.
 vtkSmartPointer<vtkPolyData> polyDataOf(const BlockMesh& mesh);
-/// Colours each point of `poly` (made from `mesh`) by `mask` there: the clay darkened by up to 60%
-/// where it is masked (SurfaceLook darkens its matcaps alike).
-void tintByMask(vtkPolyData& poly, const BlockMesh& mesh, const openvdb::FloatGrid& mask);
 /// The points, normals and triangles of a polydata polyDataOf made, copied back (only reads it:
 /// safe on another thread while the UI thread draws it).
 BlockMesh blockMeshOf(const vtkPolyData* poly);

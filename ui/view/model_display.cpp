@@ -27,7 +27,7 @@ constexpr double kCoarseCellVoxels = 3.0;
 vtkSmartPointer<vtkActor> newActor(const SurfaceLook& look, vtkMatrix4x4* placement)
 {
     auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    // A mask's tint, where a chunk has one, is its points' colours (tintByMask).
+    // A tint, where a chunk has one, is its points' colours (tintPoints).
     mapper->SetColorModeToDirectScalars();
     mapper->SetScalarModeToUsePointData();
     auto actor = vtkSmartPointer<vtkActor>::New();
@@ -172,7 +172,7 @@ void ModelDisplay::uploadFull(const IncrementalMesher& mesher, const openvdb::Co
         mRenderer->AddActor(chunk.full);
     }
     chunk.mesh = polyDataOf(mesh);
-    if (mMask) tintByMask(*chunk.mesh, mesh, *mMask);
+    if (mTint.any()) tintPoints(*chunk.mesh, mesh, mTint);
     setMesh(chunk.full, chunk.mesh);
     mMeshBytes += bytesOf(mesh) - chunk.bytes;
     chunk.bytes = bytesOf(mesh);
@@ -255,9 +255,11 @@ void ModelDisplay::chooseDetail(double voxelSize, const DetailView& view)
 }
 
 void ModelDisplay::sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view,
-                        const openvdb::FloatGrid* mask)
+                        const SurfaceTint& tint)
 {
-    mMask = mask;
+    if (!tint.sameSettings(mTint))
+        for (auto& [origin, chunk] : mChunks) chunk.fullStale = true;  // every chunk coloured anew
+    mTint = tint;
     mLastUploads = mLastRemovals = mLastChunkUploads = mLastBytes = 0;
     if (mPreview && mesher.id() == mPreview->replaces) return;  // the preview alone is shown
     if (mesher.id() != mSourceId) {

@@ -22,6 +22,7 @@
 
 #include "core/mesh/incremental_mesher.h"
 #include "ui/view/detail_view.h"
+#include "ui/view/surface_tint.h"
 
 #include <vtkSmartPointer.h>
 
@@ -50,10 +51,11 @@ public:
     /// Uploads the chunks whose blocks the mesher changed since the last sync (all of them for a
     /// new mesher), then gives each chunk the detail `view` asks. `voxelSize` sizes the coarse
     /// twins' clusters. Once per frame.
-    /// `mask` (the field's, or null) tints the chunks uploaded; a change of the mask marks its
-    /// leaves dirty, so the mesher's changes bring those chunks here again.
+    /// `tint` colours the chunks uploaded (the mask, a print check); a change of the mask marks
+    /// its leaves dirty, so the mesher's changes bring those chunks here again, and a change of
+    /// the check re-uploads every chunk.
     void sync(const IncrementalMesher& mesher, double voxelSize, const DetailView& view = {},
-              const openvdb::FloatGrid* mask = nullptr);
+              const SurfaceTint& tint = {});
     /// Waits for the coarse twin of every chunk and takes them (for tests: a frame never waits).
     void finishTwins(double voxelSize);
     /// Shows `preview` (world coordinates, of a grid on `xform`) instead of the mesher shown now,
@@ -123,7 +125,7 @@ private:
     std::uint64_t mGenerations = 0;  // chunk meshes made
     std::unique_ptr<TwinBuilder> mTwins;
     std::unique_ptr<Preview> mPreview;
-    const openvdb::FloatGrid* mMask = nullptr;  // of the last sync, for its uploads
+    SurfaceTint mTint;  // of the last sync, for its uploads
     std::size_t mFillBudget = 1'000'000, mPendingChunks = 0;
     bool mHidden = false;
     std::size_t mBlockCount = 0, mTrianglesDrawn = 0, mCoarseChunks = 0, mMeshBytes = 0, mTwinBytes = 0;
