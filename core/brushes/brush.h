@@ -22,7 +22,7 @@
 ///                 read at its closest point: the target term of the level-set motion, only
 ///                 where the brush goes (a rough import snaps to a clean template under it);
 ///   primitive     the primitive set, moved to the stamp, combined by its own operation;
-///   mask / unmask paints the mask (FieldImage::mask) towards 1 / 0 by s p w of the way: the
+///   mask / unmask adds s p w to the mask (FieldImage::mask) / takes it away, within [0, 1]: the
 ///                 surface does not move.
 /// Every tool but the mask's holds the share of its change the mask holds (surface_mask.h).
 /// Motions larger than a voxel are split into sub-steps of at most one voxel, each redistanced,

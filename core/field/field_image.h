@@ -66,8 +66,8 @@ public:
     openvdb::FloatGrid::Ptr mutableGridPtr() { return mGrid; }
 
     /// The mask, or null when nothing is masked: a fog grid (0 free ... 1 held, background 0) on
-    /// the field's transform, read at each voxel's closest surface point (surface_mask.h). Every
-    /// edit keeps the share of the surface its mask holds.
+    /// the field's transform, each voxel painted with its closest surface point's mask and read for
+    /// itself (surface_mask.h). Every edit keeps the share of the surface its mask holds.
     const openvdb::FloatGrid* mask() const { return mMask && !mMask->tree().empty() ? mMask.get() : nullptr; }
     /// Write access to the mask, an empty one made on first use; the editor marks what it changed.
     openvdb::FloatGrid& mutableMask();

@@ -82,9 +82,13 @@ void LeafJournal::restore(openvdb::FloatTree& tree, const openvdb::Coord& leafOr
     } else if (saved.level >= 0) {
         // A tile a split produced may already be back inside a coarser tile restored before it;
         // adding it again would split that tile anew (and leave a node of background tiles).
+        // A background tile needs no restoring where the background is already (an edit that first
+        // made this region, and whose first save restored it to nothing, saved the rest as tiles).
         const int depth = tree.getValueDepth(leafOrigin);
-        const bool covered = depth >= 0 && kLeafDepth - depth >= saved.level && !tree.probeConstLeaf(leafOrigin) &&
-                             tree.getValue(leafOrigin) == saved.value && tree.isValueOn(leafOrigin) == saved.active;
+        const bool sameValue = !tree.probeConstLeaf(leafOrigin) && tree.getValue(leafOrigin) == saved.value &&
+                               tree.isValueOn(leafOrigin) == saved.active;
+        const bool background = saved.value == tree.background() && !saved.active;
+        const bool covered = sameValue && (background || (depth >= 0 && kLeafDepth - depth >= saved.level));
         if (!covered) tree.addTile(openvdb::Index(saved.level), leafOrigin, saved.value, saved.active);
     } else {
         // Nothing was there: a background root tile, then erased like pruneLevelSet does.

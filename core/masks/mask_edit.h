@@ -3,8 +3,9 @@
 /// @brief The one way the mask is written: a rule gives each voxel of some of the field's leaves
 ///        its new mask value, journalled with the surface.
 ///
-/// The mask is kept on the field's leaves (the band and the voxels sharing its leaves): it is read
-/// at closest surface points (surface_mask.h), which lie there. Values are clamped to [0, 1]; 0 is
+/// The mask is kept on the field's leaves (the band and the voxels sharing its leaves), each voxel
+/// read for itself (surface_mask.h); rules give a voxel the mask of its closest surface point
+/// (MaskSite::footWorld), so the band under a patch of surface is held alike. Values are clamped to [0, 1]; 0 is
 /// stored inactive. Rules read the mask as it was (every value is found before any is written),
 /// so the order of voxels does not matter, and the field's leaves are marked dirty so the display
 /// re-tints them.

@@ -12,9 +12,7 @@ DirtyRegion paintMask(FieldImage& field, const FalloffBall& ball, double amount,
     const Capsule reach = Capsule::ball(ball.centreWorld, ball.radiusWorld + field.grid().background());
     return rewriteMask(field, leavesMeeting(field.grid(), reach), journal,
                        [&](const openvdb::Coord& ijk, const MaskSite& site) {
-                           const double m = site.mask(ijk);
-                           const double w = ball.weightAt(site.footWorld(ijk));
-                           return m + amount * w * (amount > 0.0 ? 1.0 - m : m);
+                           return site.mask(ijk) + amount * ball.weightAt(site.footWorld(ijk));
                        });
 }
 

@@ -10,9 +10,9 @@ namespace sculpt {
 
 class LeafJournal;
 
-/// Paints (amount > 0) or erases (amount < 0) the mask under `ball`: each voxel's mask moves
-/// |amount| x the falloff at its closest surface point of the way to 1 (paint) or to 0 (erase),
-/// so repeated stamps approach full strength and never pass it. Saves each mask leaf in `journal`
+/// Paints (amount > 0) or erases (amount < 0) the mask under `ball`: each voxel's mask gains (or
+/// loses) |amount| x the falloff at its closest surface point, within [0, 1], so a few stamps
+/// mask the middle of a stroke fully, as Blender's mask brush does. Saves each mask leaf in `journal`
 /// before it first changes; returns (and marks dirty) the leaves changed. Cost: the ball's leaves.
 DirtyRegion paintMask(FieldImage& field, const FalloffBall& ball, double amount, LeafJournal* journal);
 

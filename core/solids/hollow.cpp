@@ -3,16 +3,18 @@
 #include "core/base/enum_names.h"
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/base/union_find.h"
 #include "core/local/capsule.h"
 #include "core/local/local_patch.h"
+#include "core/mesh/incremental_mesher.h"
 
 #include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetRebuild.h>
-#include <openvdb/tools/LevelSetUtil.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace sculpt {
 
@@ -53,28 +55,30 @@ openvdb::FloatGrid::Ptr widened(const FieldImage& field, double insideWorld, dou
     return openvdb::tools::levelSetRebuild(field.grid(), 0.0f, float(w + outsideWorld / h), float(w + insideWorld / h));
 }
 
-/// The lowest point along `up` of each connected part of the cavity: among its wall's voxels
-/// (within half a voxel of the zero crossing) within half a voxel of the lowest, the one nearest
+/// The lowest point along `up` of each cavity: each connected part of the cavity's mesh (a part
+/// is one cavity's wall), among its vertices within half a voxel of its lowest, the one nearest
 /// their middle (a flat floor drains from its centre, not a corner).
-std::vector<openvdb::Vec3d> bottomsOf(const openvdb::FloatGrid& cavity, const openvdb::Vec3d& up)
+std::vector<openvdb::Vec3d> bottomsOf(const openvdb::FloatGrid::Ptr& cavity, const openvdb::Vec3d& up)
 {
-    std::vector<openvdb::FloatGrid::Ptr> parts;
-    openvdb::tools::segmentSDF(cavity, parts);
+    const TriangleMesh mesh = meshLevelSet(FieldImage(cavity));
+    UnionFind parts(mesh.positions.size());
+    for (const auto& t : mesh.triangles) parts.join(t[0], t[1]), parts.join(t[1], t[2]);
+    const auto point = [&](std::size_t v) {
+        return openvdb::Vec3d(mesh.positions[v][0], mesh.positions[v][1], mesh.positions[v][2]);
+    };
+    std::map<std::uint32_t, double> lowest;
+    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v) {
+        const auto [at, fresh] = lowest.emplace(parts.find(v), point(v).dot(up));
+        if (!fresh) at->second = std::min(at->second, point(v).dot(up));
+    }
+    const double h = cavity->transform().voxelSize()[0];
+    std::map<std::uint32_t, std::vector<openvdb::Vec3d>> floors;
+    for (std::uint32_t v = 0; v < mesh.positions.size(); ++v)
+        if (point(v).dot(up) <= lowest[parts.find(v)] + 0.5 * h) floors[parts.find(v)].push_back(point(v));
     std::vector<openvdb::Vec3d> bottoms;
-    const double h = cavity.transform().voxelSize()[0];
-    for (const auto& part : parts) {
-        std::vector<openvdb::Vec3d> wall;
-        double lowest = std::numeric_limits<double>::infinity();
-        for (auto it = part->cbeginValueOn(); it; ++it) {
-            if (std::abs(*it) > 0.5 * h) continue;
-            wall.push_back(part->transform().indexToWorld(it.getCoord()));
-            lowest = std::min(lowest, wall.back().dot(up));
-        }
+    for (const auto& [part, floor] : floors) {
         openvdb::Vec3d middle(0.0);
-        std::vector<openvdb::Vec3d> floor;
-        for (const openvdb::Vec3d& p : wall)
-            if (p.dot(up) <= lowest + 0.5 * h) floor.push_back(p), middle += p;
-        if (floor.empty()) continue;
+        for (const openvdb::Vec3d& p : floor) middle += p;
         middle /= double(floor.size());
         bottoms.push_back(*std::min_element(floor.begin(), floor.end(), [&](const auto& a, const auto& b) {
             return (a - middle).lengthSqr() < (b - middle).lengthSqr();
@@ -102,7 +106,7 @@ HollowResult hollow(const FieldImage& field, const HollowOptions& o, const openv
     if (c > 0.0 && inner > 0.0) cavity = levelSetAt(*cavity, c, w);
     report(progress, 0.7);
     openvdb::FloatGrid::Ptr shell = outer > 0.0 ? levelSetAt(*wide, outer, w) : field.grid().deepCopy();
-    const std::vector<openvdb::Vec3d> bottoms = bottomsOf(*cavity, upward);
+    const std::vector<openvdb::Vec3d> bottoms = bottomsOf(cavity, upward);
     openvdb::tools::csgDifference(*shell, *cavity);
     shell->setName(field.grid().getName());
     report(progress, 1.0);

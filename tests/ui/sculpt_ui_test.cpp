@@ -558,11 +558,11 @@ TEST(SculptUi, LassoAndLineCutsAreOneUndoStepEachAndReplayWithSculptApply)
     ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path().string()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r, "start").key("J").press();
-    const double cx = kCentreX + 150, cy = kCentreY;
-    for (int i = 0; i <= 40; ++i) {
+    const double cx = kCentreX + 250, cy = kCentreY;  // an ellipse over the ball's right edge
+    events.report(r, "start").key("J").move(cx + 200, cy).press();
+    for (int i = 1; i <= 40; ++i) {
         const double a = 2.0 * M_PI * i / 40;
-        events.move(cx + 90 * std::cos(a), cy + 140 * std::sin(a));
+        events.move(cx + 200 * std::cos(a), cy + 140 * std::sin(a));
     }
     events.release().untilJobEnds().report(r, "lassoed").screenshot(dir / "lassoed.png");
     events.key("Z", {"ctrl"}).report(r, "undone").key("Z", {"ctrl", "shift"}).report(r, "redone");

@@ -5,6 +5,7 @@
 #include <vtkShaderProperty.h>
 #include <vtkUniforms.h>
 
+#include <cstdio>
 #include <string>
 
 namespace sculpt::ui {
@@ -31,14 +32,21 @@ vec3 matcapColour(vec3 n)
 }
 )";
 
-/// The matcap replaces VTK's lit colour; with the wireframe on, VTK's edge term (emix, only
-/// declared then) darkens it near the triangles' edges.
+/// The clay's colour as a GLSL constant.
+std::string clayLiteral()
+{
+    char text[64];
+    std::snprintf(text, sizeof text, "vec3(%.4f, %.4f, %.4f)", kClayColour[0], kClayColour[1], kClayColour[2]);
+    return text;
+}
+
+/// The matcap replaces VTK's lit colour, tinted as the points are (pointTint, below); with the
+/// wireframe on, VTK's edge term (emix, only declared then) darkens it near the triangles' edges.
 std::string matcapImpl(bool wireframe)
 {
     return std::string("//VTK::Light::Impl\n  if (matcapOn == 1) {\n"
                        "    vec3 matcap = matcapColour(normalVCVSOutput);\n") +
-           // Points coloured darker than the clay (the mask) darken the matcap alike.
-           "    matcap *= clamp(diffuseColor / max(diffuseIntensity * clayColour, vec3(1e-3)), 0.0, 1.0);\n" +
+           "    matcap *= pointTint;\n" +
            (wireframe ? "    matcap = mix(matcap, vec3(0.08, 0.08, 0.1), emix);\n" : "") +
            "    gl_FragData[0] = vec4(matcap, opacity);\n  }\n";
 }
@@ -88,8 +96,6 @@ void SurfaceLook::setShading(Shading shading)
     u->SetUniformf("matcapSpecular", m.specular);
     u->SetUniformf("matcapGloss", m.gloss);
     u->SetUniformf("matcapWrap", m.wrap);
-    const float clay[3] = {float(kClayColour[0]), float(kClayColour[1]), float(kClayColour[2])};
-    u->SetUniform3f("clayColour", clay);
 }
 
 void SurfaceLook::setFlat(bool flat)
@@ -113,6 +119,13 @@ void SurfaceLook::setWireframe(bool wireframe)
     mShader->ClearAllFragmentShaderReplacements();
     mShader->AddFragmentShaderReplacement("//VTK::Light::Dec", true, kMatcapFunction, false);
     mShader->AddFragmentShaderReplacement("//VTK::Light::Impl", true, matcapImpl(wireframe), false);
+    // Points coloured other than the clay (the mask, a print check) tint every look alike; read
+    // where VTK has just set the colour, before its lighting scales it.
+    mShader->AddFragmentShaderReplacement(
+        "//VTK::Color::Impl", true,
+        "//VTK::Color::Impl\n  vec3 pointTint = clamp(diffuseColor / max(diffuseIntensity * " + clayLiteral() +
+            ", vec3(1e-3)), 0.0, 1.0);\n",
+        false);
 }
 
 void SurfaceLook::apply(vtkActor* actor) const

@@ -51,7 +51,7 @@ const char* checkName(SurfaceTint::Check check)
 
 void tintPoints(vtkPolyData& poly, const BlockMesh& mesh, const SurfaceTint& tint)
 {
-    constexpr double kMaskedShade = 0.4;  // of the clay, where fully masked
+    constexpr double kMaskedShade = 0.3;  // of the clay, where fully masked
     const Colour clay{kClayColour[0], kClayColour[1], kClayColour[2]};
     const Colour heat = tint.check == SurfaceTint::Check::Thickness ? Colour{0.95, 0.1, 0.05} : Colour{0.1, 0.3, 0.95};
     auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();

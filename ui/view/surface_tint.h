@@ -33,7 +33,7 @@ struct SurfaceTint {
 const char* checkName(SurfaceTint::Check check);
 
 /// Colours each point of `poly` (made from `mesh`, in the field's world) by `tint`: the clay,
-/// darkened by up to 60% where masked, red where a wall is thinner than the threshold (deeper red
+/// darkened by up to 70% where masked, red where a wall is thinner than the threshold (deeper red
 /// the thinner), blue where a face overhangs more steeply than the threshold.
 void tintPoints(vtkPolyData& poly, const BlockMesh& mesh, const SurfaceTint& tint);
 

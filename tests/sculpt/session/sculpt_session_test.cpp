@@ -467,7 +467,7 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
     const std::string ok = R"("samples": [[1, 2, 3]])";
     EXPECT_EQ(parseError(R"([{"action": "undo"}, {"tool": "sponge", "radius": 1, )" + ok + "}]"),
               "s.json: events[1] ('sponge' stroke): unknown tool \"sponge\" (expected add, carve, inflate, "
-              "deflate, smooth, flatten, grab, pinch, follow or primitive)");
+              "deflate, smooth, flatten, grab, pinch, follow, primitive, mask or unmask)");
     EXPECT_EQ(parseError(R"([{"tool": "add", )" + ok + "}]"),
               "s.json: events[0] ('add' stroke): missing field 'radius'");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 0, )" + ok + "}]"),
@@ -484,7 +484,7 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": []}])"),
               "s.json: events[0] ('add' stroke): field 'samples' is empty: a stroke needs at least one");
     EXPECT_EQ(parseError(R"([{"action": "again"}])"),
-              "s.json: events[0]: field 'action' is \"again\" (expected \"undo\" or \"redo\")");
+              "s.json: events[0]: field 'action' is \"again\" (expected \"undo\", \"redo\", \"mask\" or \"cut\")");
     EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
               "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
     EXPECT_EQ(parseError(R"([{"tool": "follow", "radius": 1, )" + ok + "}]"),
