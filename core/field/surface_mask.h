@@ -16,6 +16,7 @@
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sculpt {
 
@@ -23,8 +24,12 @@ namespace sculpt {
 class MaskReader {
 public:
     explicit MaskReader(const openvdb::FloatGrid& mask) : mMask(mask.getConstAccessor()) {}
-    /// The voxel's mask, clamped to [0, 1].
-    double at(const openvdb::Coord& ijk) const { return std::clamp(double(mMask.getValue(ijk)), 0.0, 1.0); }
+    /// The voxel's mask, clamped to [0, 1]; a value that is not a number (a file's) frees the voxel.
+    double at(const openvdb::Coord& ijk) const
+    {
+        const double m = mMask.getValue(ijk);
+        return std::isfinite(m) ? std::clamp(m, 0.0, 1.0) : 0.0;
+    }
 
 private:
     openvdb::FloatGrid::ConstAccessor mMask;

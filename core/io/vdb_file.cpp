@@ -232,6 +232,11 @@ void attachMask(FieldImage& field, const std::string& surfaceName, openvdb::Grid
             throw InputError("corrupt (the mask of '" + surfaceName + "' does not match its checksum)");
     }
     for (const char* ours : {kMetaMaskOf, kMetaChecksum}) mask->removeMeta(ours);
+    // Another program's grid may hold anything: a mask is a share in [0, 1], and not a number is none.
+    for (auto it = mask->beginValueAll(); it; ++it) {
+        if (!std::isfinite(*it)) it.setValue(0.0f);
+        else if (*it < 0.0f || *it > 1.0f) it.setValue(std::clamp(*it, 0.0f, 1.0f));
+    }
     mask->setName("mask");
     field.setMask(mask);
     grids.erase(found);

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <map>
 
 namespace sculpt {
@@ -158,6 +159,24 @@ TEST_F(MaskedHalf, InvertingFreesTheMaskedHalfAndHoldsTheOther)
     const auto& xform = ball.grid().transform();
     EXPECT_EQ(reader.at(xform.worldToIndexCellCentered(Vec3d(-8.0, 0.0, 0.0))), 0.0);
     EXPECT_EQ(reader.at(xform.worldToIndexCellCentered(Vec3d(8.0, 0.0, 0.0))), 1.0);
+}
+
+TEST_F(MaskedHalf, AMaskOfValuesThatAreNoSharesIsReadAsShares)
+{
+    auto acc = ball.mutableMask().getAccessor();
+    const Coord a(0, 0, 16), b(1, 0, 16), c(2, 0, 16);  // near the ball's top, on its leaves
+    acc.setValueOn(a, std::numeric_limits<float>::quiet_NaN());
+    acc.setValueOn(b, 2.5f);
+    acc.setValueOn(c, -1.0f);
+    const auto path = std::filesystem::path(::testing::TempDir()) / "odd_mask.vdb";
+    writeFieldImage(ball, path);
+    const FieldImage opened = readFieldImage(path);
+    ASSERT_NE(opened.mask(), nullptr);
+    const auto read = opened.mask()->getConstAccessor();
+    EXPECT_EQ(read.getValue(a), 0.0f);
+    EXPECT_EQ(read.getValue(b), 1.0f);
+    EXPECT_EQ(read.getValue(c), 0.0f);
+    std::filesystem::remove(path);
 }
 
 }  // namespace
