@@ -50,6 +50,16 @@ DirtyRegion combineLocally(openvdb::FloatGrid& grid, const openvdb::FloatGrid& s
 
 }  // namespace
 
+void combineWhole(openvdb::FloatGrid& a, openvdb::FloatGrid& b, CsgOperation operation)
+{
+    switch (operation) {
+    case CsgOperation::Union: openvdb::tools::csgUnion(a, b); break;
+    case CsgOperation::Difference: openvdb::tools::csgDifference(a, b); break;
+    case CsgOperation::Intersection: openvdb::tools::csgIntersection(a, b); break;
+    case CsgOperation::Replace: a.setTree(b.tree().copy()); break;
+    }
+}
+
 CsgOperation csgFromName(const std::string& name) { return enumFromName(kOperationNames, name, "operation"); }
 
 const char* csgName(CsgOperation operation) { return enumName(kOperationNames, operation); }
@@ -67,7 +77,7 @@ DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation op
     case CsgOperation::Intersection: {
         touched = sculpt.allLeaves();
         auto copy = shape.grid().deepCopy();
-        openvdb::tools::csgIntersection(grid, *copy);
+        combineWhole(grid, *copy, CsgOperation::Intersection);
         break;
     }
     case CsgOperation::Replace:

@@ -21,4 +21,9 @@ const char* csgName(CsgOperation operation);
 /// @throws InputError if the two grids' transforms differ.
 DirtyRegion combine(FieldImage& sculpt, const FieldImage& shape, CsgOperation operation);
 
+/// OpenVDB's CSG of two whole level sets on the same voxels, a = a op b (union, difference or
+/// intersection; b is consumed): for edits of whole regions (cuts, shells, islands), which keeps
+/// inside tiles whole instead of making leaves of them. In this one unit: its templates are heavy.
+void combineWhole(openvdb::FloatGrid& a, openvdb::FloatGrid& b, CsgOperation operation);
+
 }  // namespace sculpt

@@ -4,11 +4,11 @@
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/base/union_find.h"
+#include "core/field/csg_combine.h"
 #include "core/local/capsule.h"
 #include "core/local/local_patch.h"
 #include "core/mesh/incremental_mesher.h"
 
-#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetRebuild.h>
 
 #include <algorithm>
@@ -107,7 +107,7 @@ HollowResult hollow(const FieldImage& field, const HollowOptions& o, const openv
     report(progress, 0.7);
     openvdb::FloatGrid::Ptr shell = outer > 0.0 ? levelSetAt(*wide, outer, w) : field.grid().deepCopy();
     const std::vector<openvdb::Vec3d> bottoms = bottomsOf(cavity, upward);
-    openvdb::tools::csgDifference(*shell, *cavity);
+    combineWhole(*shell, *cavity, CsgOperation::Difference);
     shell->setName(field.grid().getName());
     report(progress, 1.0);
     return {FieldImage(shell, field.units()), bottoms};

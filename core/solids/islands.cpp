@@ -1,6 +1,7 @@
 #include "core/solids/islands.h"
 
-#include <openvdb/tools/Composite.h>
+#include "core/field/csg_combine.h"
+
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetUtil.h>
@@ -28,7 +29,7 @@ void keepIslands(FieldImage& field, const std::vector<Island>& islands, const Ke
     for (std::size_t i = 0; i < islands.size(); ++i) {
         if (!kept(i)) continue;
         openvdb::FloatGrid::Ptr island = islands[i].grid->deepCopy();
-        openvdb::tools::csgUnion(*grid, *island);
+        combineWhole(*grid, *island, CsgOperation::Union);
     }
     field.swapGrid(grid);
 }

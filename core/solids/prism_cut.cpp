@@ -2,9 +2,8 @@
 
 #include "core/base/enum_names.h"
 #include "core/base/errors.h"
+#include "core/field/csg_combine.h"
 #include "core/primitives/sdf_rasterizer.h"
-
-#include <openvdb/tools/Composite.h>
 
 #include <algorithm>
 #include <cmath>
@@ -108,11 +107,7 @@ FieldImage applyPrism(const FieldImage& field, const ViewPrism& prism, PrismMode
     openvdb::FloatGrid::Ptr result = field.grid().deepCopy();
     openvdb::FloatGrid::Ptr shape = tool.mutableGridPtr();
     shape->setTransform(result->transform().copy());
-    if (mode == PrismMode::Cut) {
-        openvdb::tools::csgDifference(*result, *shape);
-    } else {
-        openvdb::tools::csgUnion(*result, *shape);
-    }
+    combineWhole(*result, *shape, mode == PrismMode::Cut ? CsgOperation::Difference : CsgOperation::Union);
     FieldImage out(result, field.units());
     out.setMask(field.maskPtr());
     return out;
