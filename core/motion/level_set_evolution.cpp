@@ -4,6 +4,7 @@
 #include "core/base/text_format.h"
 #include "core/field/central_difference.h"
 #include "core/field/dense_gather.h"
+#include "core/field/mean_curvature.h"
 #include "core/field/surface_mask.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/volume_estimate.h"
@@ -82,28 +83,6 @@ void oneSided(const LeafStencil& s, int x, int y, int z, int axis, GradientSchem
     plus = openvdb::math::WENO5(d[5], d[4], d[3], d[2], d[1]);
 }
 
-/// Mean-curvature flow term kappa |grad phi| by central differences (zero where grad vanishes).
-double curvatureNormGrad(const LeafStencil& s, int x, int y, int z, double invH)
-{
-    const double f = s.at(x, y, z);
-    const double dx = 0.5 * (s.at(x + 1, y, z) - s.at(x - 1, y, z)), dy = 0.5 * (s.at(x, y + 1, z) - s.at(x, y - 1, z)),
-                 dz = 0.5 * (s.at(x, y, z + 1) - s.at(x, y, z - 1));
-    const double dxx = s.at(x + 1, y, z) - 2 * f + s.at(x - 1, y, z),
-                 dyy = s.at(x, y + 1, z) - 2 * f + s.at(x, y - 1, z),
-                 dzz = s.at(x, y, z + 1) - 2 * f + s.at(x, y, z - 1);
-    const double dxy =
-        0.25 * (s.at(x + 1, y + 1, z) - s.at(x + 1, y - 1, z) - s.at(x - 1, y + 1, z) + s.at(x - 1, y - 1, z));
-    const double dxz =
-        0.25 * (s.at(x + 1, y, z + 1) - s.at(x + 1, y, z - 1) - s.at(x - 1, y, z + 1) + s.at(x - 1, y, z - 1));
-    const double dyz =
-        0.25 * (s.at(x, y + 1, z + 1) - s.at(x, y + 1, z - 1) - s.at(x, y - 1, z + 1) + s.at(x, y - 1, z - 1));
-    const double g2 = dx * dx + dy * dy + dz * dz;
-    if (g2 < 1e-12) return 0.0;
-    const double num = dx * dx * (dyy + dzz) + dy * dy * (dxx + dzz) + dz * dz * (dxx + dyy) -
-                       2.0 * (dx * dy * dxy + dx * dz * dxz + dy * dz * dyz);
-    return num / g2 * invH * invH;  // differences carry h: num ~ h^4, g2 ~ h^2
-}
-
 /// The right-hand side dphi/dt at one voxel.
 class VoxelRate {
 public:
@@ -125,7 +104,9 @@ public:
         }
         if (mC.beta > 0.0) {
             const double weight = mC.smoothWeight ? mC.smoothWeight->weightAt(mC.xform->indexToWorld(ijk)) : 1.0;
-            if (weight > 0.0) rate += mC.beta * weight * curvatureNormGrad(s, x, y, z, mC.invH);
+            if (weight > 0.0)
+                rate += mC.beta * weight *
+                        curvatureNormGrad([&](int i, int j, int k) { return s.at(i, j, k); }, x, y, z, mC.invH);
         }
         return rate;
     }

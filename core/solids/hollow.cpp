@@ -8,6 +8,7 @@
 #include "core/local/capsule.h"
 #include "core/local/local_patch.h"
 #include "core/mesh/incremental_mesher.h"
+#include "core/solids/wall_thickness.h"
 
 #include <openvdb/tools/LevelSetRebuild.h>
 
@@ -124,19 +125,32 @@ std::vector<DrainHole> drainHolesUnder(const std::vector<openvdb::Vec3d>& bottom
     return holes;
 }
 
-void cutDrainHoles(FieldImage& field, const std::vector<DrainHole>& holes)
+std::optional<DrainHole> drainHoleAt(const FieldImage& field, const openvdb::Vec3d& surfacePoint,
+                                     const openvdb::Vec3d& normal, double radiusWorld, double farthestWorld)
+{
+    const std::optional<double> wall = wallThicknessAt(field.grid(), surfacePoint, normal, farthestWorld);
+    if (!wall) return std::nullopt;
+    return DrainHole{surfacePoint + normal * radiusWorld, surfacePoint - normal * (*wall + radiusWorld), radiusWorld};
+}
+
+void cutDrainHoles(FieldImage& field, const std::vector<DrainHole>& holes, LeafJournal* journal)
 {
     for (const DrainHole& hole : holes) {
         if (!(hole.radiusWorld > 0.0) || !std::isfinite(hole.radiusWorld))
             throw InputError("a drain hole's radius must be a positive number (got " + formatNumber(hole.radiusWorld) +
                              ")");
+        for (const openvdb::Vec3d& end : {hole.from, hole.to})
+            if (!std::isfinite(end.x()) || !std::isfinite(end.y()) || !std::isfinite(end.z()))
+                throw InputError("a drain hole's end is not finite");
+    }
+    for (const DrainHole& hole : holes) {
         const Capsule capsule{hole.from, hole.to, hole.radiusWorld};
         const Capsule reach = capsule.grownBy(field.grid().background());
         LocalPatch patch(field, reach);
         patch.combineVoxels(reach, field.grid().background(), [&](const openvdb::Vec3d& world, float phi) {
             return std::max(double(phi), capsule.radius - capsule.axisDistance(world));
         });
-        patch.commit(field, nullptr);
+        patch.commit(field, journal);
     }
 }
 

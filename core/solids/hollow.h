@@ -17,10 +17,13 @@
 
 #include <openvdb/openvdb.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace sculpt {
+
+class LeafJournal;
 
 enum class ShellSide {
     Inside,  ///< the wall within the surface: the outside stays where it was
@@ -60,8 +63,16 @@ HollowResult hollow(const FieldImage& field, const HollowOptions& options, const
 std::vector<DrainHole> drainHolesUnder(const std::vector<openvdb::Vec3d>& bottoms, const openvdb::Vec3d& up,
                                        double wallWorld, double radiusWorld);
 
+/// A hole drilled at `surfacePoint` straight in (along -normal, the outward unit normal there)
+/// through the wall to the cavity behind it, reaching a radius beyond both; none if no cavity lies
+/// within `farthestWorld` of the surface (a solid part: nothing to drain).
+std::optional<DrainHole> drainHoleAt(const FieldImage& field, const openvdb::Vec3d& surfacePoint,
+                                     const openvdb::Vec3d& normal, double radiusWorld, double farthestWorld);
+
 /// Cuts the holes out of `field` (CSG difference of each capsule; only the leaves near each hole
-/// change). @throws InputError if a radius is not positive and finite.
-void cutDrainHoles(FieldImage& field, const std::vector<DrainHole>& holes);
+/// change), saving each leaf in `journal` (may be null) before it changes.
+/// @throws InputError if a radius or an end is not finite, or a radius not positive; nothing
+///         changes then.
+void cutDrainHoles(FieldImage& field, const std::vector<DrainHole>& holes, LeafJournal* journal = nullptr);
 
 }  // namespace sculpt

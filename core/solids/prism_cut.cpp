@@ -39,21 +39,21 @@ double boxDistance(const openvdb::BBoxd& bounds, const openvdb::Vec3d& p)
     return outside.length() + std::min(std::max({q.x(), q.y(), q.z()}), 0.0);
 }
 
-void validate(const ViewPrism& prism, PrismMode mode)
-{
-    if (prism.polygon.size() < 3) throw InputError("a cut's polygon needs three points at least");
-    for (const openvdb::Vec2d& p : prism.polygon)
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw InputError("a cut's polygon has a point not finite");
-    if (!(prism.nearDepth < prism.farDepth)) throw InputError("a cut's depth slab is empty (near is not before far)");
-    if (mode == PrismMode::Fill && !std::isfinite(prism.farDepth))
-        throw InputError("a fill needs a depth (how far along the view it reaches)");
-}
-
 }  // namespace
 
 PrismMode prismModeFromName(const std::string& name) { return enumFromName(kModes, name, "cut mode"); }
 
 const char* prismModeName(PrismMode mode) { return enumName(kModes, mode); }
+
+void validatePrism(const ViewPrism& prism)
+{
+    if (prism.polygon.size() < 3) throw InputError("a gesture's polygon needs three points at least");
+    for (const openvdb::Vec2d& p : prism.polygon)
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+            throw InputError("a gesture's polygon has a point not finite");
+    if (!(prism.nearDepth < prism.farDepth))
+        throw InputError("a gesture's depth slab is empty (near is not before far)");
+}
 
 double ViewPrism::distance(const openvdb::Vec3d& world) const
 {
@@ -88,7 +88,9 @@ std::vector<openvdb::Vec2d> halfPlanePolygon(const openvdb::Vec2d& a, const open
 
 FieldImage applyPrism(const FieldImage& field, const ViewPrism& prism, PrismMode mode)
 {
-    validate(prism, mode);
+    validatePrism(prism);
+    if (mode == PrismMode::Fill && !std::isfinite(prism.farDepth))
+        throw InputError("a fill needs a depth (how far along the view it reaches)");
     openvdb::CoordBBox leaves;
     field.grid().tree().evalLeafBoundingBox(leaves);
     openvdb::BBoxd reach = field.grid().transform().indexToWorld(leaves);

@@ -45,6 +45,10 @@ struct ViewPrism {
     double distance(const openvdb::Vec3d& world) const;
 };
 
+/// @throws InputError for a polygon of fewer than three vertices or not finite, or a slab that is
+///         empty.
+void validatePrism(const ViewPrism& prism);
+
 /// The half-plane to the right of the line from a to b (view-plane coordinates, as the polygon's),
 /// as a polygon reaching `reach` beyond both: a line gesture's prism.
 std::vector<openvdb::Vec2d> halfPlanePolygon(const openvdb::Vec2d& a, const openvdb::Vec2d& b, double reach);

@@ -229,6 +229,38 @@ bool SculptSession::editMask(MaskOperation operation, int times)
     return changed;
 }
 
+bool SculptSession::selectMask(const MaskSelection& selection)
+{
+    if (mLive) throw std::logic_error("selectMask during a live stroke");
+    LeafJournal journal;
+    applyMaskSelection(mField, selection, &journal);
+    const bool changed = !journal.empty();
+    mHistory.push(std::move(journal));
+    updateMesh();
+    return changed;
+}
+
+void SculptSession::replaceMask(openvdb::FloatGrid::Ptr mask)
+{
+    if (mLive) throw std::logic_error("replaceMask during a live stroke");
+    if (mask && mask->transform() != mField.grid().transform())
+        throw InputError("the mask '" + mask->getName() + "' is not on the surface's voxels (another transform)");
+    LeafJournal journal;
+    journal.saveWholeMask(std::move(mask));
+    journal.swap(mField);  // the field holds the new mask now, the journal the one it replaced
+    mHistory.push(std::move(journal));
+    updateMesh();
+}
+
+void SculptSession::drillHoles(const std::vector<DrainHole>& holes)
+{
+    if (mLive) throw std::logic_error("drillHoles during a live stroke");
+    LeafJournal journal;
+    cutDrainHoles(mField, holes, &journal);
+    mHistory.push(std::move(journal));
+    updateMesh();
+}
+
 bool SculptSession::undo()
 {
     const bool done = mHistory.undo(mField);

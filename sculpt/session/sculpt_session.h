@@ -8,8 +8,10 @@
 
 #include "core/field/field_image.h"
 #include "core/masks/mask_operations.h"
+#include "core/masks/mask_selection.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/push.h"
+#include "core/solids/hollow.h"
 #include "sculpt/session/stroke.h"
 #include "sculpt/session/undo_history.h"
 
@@ -66,6 +68,17 @@ public:
     /// undo step; false if it changed nothing (no step then). Not during a live stroke.
     /// @throws InputError if times < 1; nothing changes then.
     bool editMask(MaskOperation operation, int times = 1);
+    /// Masks (or erases) what `selection` selects (a box or lasso, the cavities, the thin walls, an
+    /// island), as one undo step; false if it changed nothing. Not during a live stroke.
+    /// @throws InputError as applyMaskSelection; nothing changes then.
+    bool selectMask(const MaskSelection& selection);
+    /// Makes `mask` (null: none) the field's mask whole, as one undo step: a mask selection made
+    /// on a copy of the field (off the UI thread) landing. Not during a live stroke.
+    /// @throws InputError unless it is on the field's transform; nothing changes then.
+    void replaceMask(openvdb::FloatGrid::Ptr mask);
+    /// Cuts drain holes (a hollow model's, hollow.h) as one undo step. Not during a live stroke.
+    /// @throws InputError as cutDrainHoles; nothing changes then.
+    void drillHoles(const std::vector<DrainHole>& holes);
     bool undo();
     bool redo();
 

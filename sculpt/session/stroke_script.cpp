@@ -158,17 +158,10 @@ ScriptEvent parseMaskEvent(const json& j, const std::string& where)
 /// More polygon points than a hand draws in minutes: a file asking more is not a gesture.
 constexpr std::size_t kMaxPolygonPoints = 100000;
 
-ScriptEvent parseCutEvent(const json& j, const std::string& where)
+/// The fields of a prism (a cut's, a mask selection's) read from `j`.
+ViewPrism parsePrism(const json& j, const std::string& where)
 {
-    onlyFields(j, {"action", "mode", "view", "perspective", "polygon", "near", "far", "symmetry"}, where);
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Cut;
-    ViewPrism& prism = event.prism;
-    try {
-        event.prismMode = prismModeFromName(textOr(j, "mode", "cut", where));
-    } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what());
-    }
+    ViewPrism prism;
     const json& view = field(j, "view", where);
     if (!view.is_array() || view.size() != 16)
         throw InputError(where + ": field 'view' must be an array of 16 numbers");
@@ -192,25 +185,95 @@ ScriptEvent parseCutEvent(const json& j, const std::string& where)
         const Symmetry s = parseSymmetry(j["symmetry"], where);
         prism.mirror = {s.x, s.y, s.z};
     }
+    return prism;
+}
+
+ScriptEvent parseCutEvent(const json& j, const std::string& where)
+{
+    onlyFields(j, {"action", "mode", "view", "perspective", "polygon", "near", "far", "symmetry"}, where);
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::Cut;
+    try {
+        event.prismMode = prismModeFromName(textOr(j, "mode", "cut", where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+    event.prism = parsePrism(j, where);
     return event;
 }
 
-json cutJson(const ScriptEvent& event)
+ScriptEvent parseMaskSelection(const json& j, const std::string& where)
 {
-    const ViewPrism& prism = event.prism;
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::MaskSelection;
+    MaskSelection& selection = event.maskSelection;
+    try {
+        selection.kind = maskSelectionFromName(textOr(j, "select", "", where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+    switch (selection.kind) {
+    case MaskSelectionKind::Prism:
+        onlyFields(j, {"action", "select", "erase", "view", "perspective", "polygon", "near", "far", "symmetry"},
+                   where);
+        selection.prism = parsePrism(j, where);
+        break;
+    case MaskSelectionKind::Cavity:
+        onlyFields(j, {"action", "select", "erase", "crease_radius"}, where);
+        selection.creaseRadiusWorld = number(j, "crease_radius", where);
+        break;
+    case MaskSelectionKind::Thin:
+        onlyFields(j, {"action", "select", "erase", "thickness"}, where);
+        selection.thicknessWorld = number(j, "thickness", where);
+        break;
+    case MaskSelectionKind::Island:
+        onlyFields(j, {"action", "select", "erase", "point"}, where);
+        selection.point = vec3(field(j, "point", where), where + ": field 'point'");
+        break;
+    }
+    selection.erase = flagOr(j, "erase", false, where);
+    return event;
+}
+
+ScriptEvent parseDrainEvent(const json& j, const std::string& where)
+{
+    onlyFields(j, {"action", "from", "to", "radius"}, where);
+    ScriptEvent event;
+    event.kind = ScriptEvent::Kind::Drain;
+    event.hole.from = vec3(field(j, "from", where), where + ": field 'from'");
+    event.hole.to = vec3(field(j, "to", where), where + ": field 'to'");
+    event.hole.radiusWorld = number(j, "radius", where);
+    return event;
+}
+
+/// The prism's fields, added to `j`.
+void addPrismJson(json& j, const ViewPrism& prism)
+{
     json view = json::array(), polygon = json::array(), symmetry = json::array();
     for (int k = 0; k < 16; ++k) view.push_back(prism.viewFromWorld(k / 4, k % 4));
     for (const openvdb::Vec2d& p : prism.polygon) polygon.push_back({p.x(), p.y()});
-    json j = {{"action", "cut"},
-              {"mode", prismModeName(event.prismMode)},
-              {"view", view},
-              {"perspective", prism.perspective},
-              {"polygon", polygon}};
+    j["view"] = view;
+    j["perspective"] = prism.perspective;
+    j["polygon"] = polygon;
     if (std::isfinite(prism.nearDepth)) j["near"] = prism.nearDepth;
     if (std::isfinite(prism.farDepth)) j["far"] = prism.farDepth;
     for (int a = 0; a < 3; ++a)
         if (prism.mirror[std::size_t(a)]) symmetry.push_back(std::string(1, char('x' + a)));
     if (!symmetry.empty()) j["symmetry"] = symmetry;
+}
+
+json vec3Json(const openvdb::Vec3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json maskSelectionJson(const MaskSelection& selection)
+{
+    json j = {{"action", "mask"}, {"select", maskSelectionName(selection.kind)}};
+    if (selection.erase) j["erase"] = true;
+    switch (selection.kind) {
+    case MaskSelectionKind::Prism: addPrismJson(j, selection.prism); break;
+    case MaskSelectionKind::Cavity: j["crease_radius"] = selection.creaseRadiusWorld; break;
+    case MaskSelectionKind::Thin: j["thickness"] = selection.thicknessWorld; break;
+    case MaskSelectionKind::Island: j["point"] = vec3Json(selection.point); break;
+    }
     return j;
 }
 
@@ -219,13 +282,14 @@ ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& co
     if (!j.is_object()) throw InputError(where + " must be an object");
     if (j.contains("action")) {
         const std::string action = textOr(j, "action", "", where);
-        if (action == "mask") return parseMaskEvent(j, where);
+        if (action == "mask") return j.contains("select") ? parseMaskSelection(j, where) : parseMaskEvent(j, where);
         if (action == "cut") return parseCutEvent(j, where);
+        if (action == "drain") return parseDrainEvent(j, where);
         onlyFields(j, {"action"}, where);
         if (action == "undo") return {ScriptEvent::Kind::Undo, {}, {}};
         if (action == "redo") return {ScriptEvent::Kind::Redo, {}, {}};
         throw InputError(where + ": field 'action' is \"" + action +
-                         "\" (expected \"undo\", \"redo\", \"mask\" or \"cut\")");
+                         "\" (expected \"undo\", \"redo\", \"mask\", \"cut\" or \"drain\")");
     }
     field(j, "tool", where);
     ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, context), {}};
@@ -233,8 +297,6 @@ ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& co
     if (event.stroke.brush.tool == BrushTool::Follow) event.sources.targetPath = j["target"].get<std::string>();
     return event;
 }
-
-json vec3Json(const openvdb::Vec3d& v) { return json::array({v.x(), v.y(), v.z()}); }
 
 json strokeJson(const ScriptEvent& event)
 {
@@ -271,7 +333,19 @@ std::string writeStrokeScript(const StrokeScript& script)
         case ScriptEvent::Kind::Stroke: events.push_back(strokeJson(event)); break;
         case ScriptEvent::Kind::Undo: events.push_back({{"action", "undo"}}); break;
         case ScriptEvent::Kind::Redo: events.push_back({{"action", "redo"}}); break;
-        case ScriptEvent::Kind::Cut: events.push_back(cutJson(event)); break;
+        case ScriptEvent::Kind::Cut: {
+            json cut = {{"action", "cut"}, {"mode", prismModeName(event.prismMode)}};
+            addPrismJson(cut, event.prism);
+            events.push_back(std::move(cut));
+            break;
+        }
+        case ScriptEvent::Kind::MaskSelection: events.push_back(maskSelectionJson(event.maskSelection)); break;
+        case ScriptEvent::Kind::Drain:
+            events.push_back({{"action", "drain"},
+                              {"from", vec3Json(event.hole.from)},
+                              {"to", vec3Json(event.hole.to)},
+                              {"radius", event.hole.radiusWorld}});
+            break;
         case ScriptEvent::Kind::Mask:
             events.push_back({{"action", "mask"},
                               {"operation", maskOperationName(event.maskOperation)},
@@ -340,6 +414,19 @@ ReplayReport replayScript(SculptSession& session, const StrokeScript& script, co
         case ScriptEvent::Kind::Mask:
             session.editMask(event.maskOperation, event.maskTimes);
             ++done.maskOperations;
+            break;
+        case ScriptEvent::Kind::MaskSelection: try { session.selectMask(event.maskSelection);
+            } catch (const InputError& e) {
+                throw InputError(where + " (mask " + maskSelectionName(event.maskSelection.kind) + "): " + e.what(),
+                                 e.remedy());
+            }
+            ++done.maskOperations;
+            break;
+        case ScriptEvent::Kind::Drain: try { session.drillHoles({event.hole});
+            } catch (const InputError& e) {
+                throw InputError(where + " (drain): " + e.what(), e.remedy());
+            }
+            ++done.drains;
             break;
         case ScriptEvent::Kind::Cut:
             try {

@@ -10,12 +10,17 @@
 ///        {"tool": "follow", "radius": 4, "target": "template.vdb", "samples": [[1, 2, 3]]},
 ///        {"tool": "mask", "radius": 4, "samples": [[1, 2, 3]]},
 ///        {"action": "mask", "operation": "invert", "times": 1},
+///        {"action": "mask", "select": "cavity", "crease_radius": 2, "erase": false},
 ///        {"action": "cut", "mode": "cut", "view": [16 numbers], "perspective": true,
 ///         "polygon": [[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1]], "near": 40, "far": 60,
 ///         "symmetry": ["x"]},
+///        {"action": "drain", "from": [0, 0, -10], "to": [0, 0, -14], "radius": 1},
 ///        {"action": "undo"}, {"action": "redo"}]}
 /// A "mask" stroke paints the mask, "unmask" erases it; a "mask" action runs a mask operation
-/// (mask_operations.h) over the whole mask; a "cut" action cuts (or fills) along the view with the
+/// (mask_operations.h) over the whole mask, or masks a selection (mask_selection.h: "select" is
+/// "prism" with the cut's "view", "perspective", "polygon", "near", "far", "symmetry"; "cavity"
+/// with "crease_radius"; "thin" with "thickness"; "island" with "point"); a "drain" action drills
+/// a drain hole (hollow.h); a "cut" action cuts (or fills) along the view with the
 /// prism of a polygon (prism_cut.h: "view" is viewFromWorld row by row, OpenVDB's row-vector
 /// convention; "near" and "far" are optional, all the way when absent).
 /// A sample is an object or just its position. A follow stroke's target is a document, scan or
@@ -39,7 +44,7 @@ struct StrokeSources {
 };
 
 struct ScriptEvent {
-    enum class Kind { Stroke, Undo, Redo, Mask, Cut };
+    enum class Kind { Stroke, Undo, Redo, Mask, Cut, MaskSelection, Drain };
     Kind kind = Kind::Stroke;
     Stroke stroke;  ///< Kind::Stroke only
     StrokeSources sources;
@@ -47,6 +52,8 @@ struct ScriptEvent {
     int maskTimes = 1;                                    ///< Kind::Mask only
     ViewPrism prism{};                                    ///< Kind::Cut only
     PrismMode prismMode = PrismMode::Cut;                 ///< Kind::Cut only
+    MaskSelection maskSelection{};                        ///< Kind::MaskSelection only
+    DrainHole hole{};                                     ///< Kind::Drain only
 };
 
 struct StrokeScript {
@@ -66,7 +73,7 @@ std::string writeStrokeScript(const StrokeScript& script);
 
 /// What a replay did.
 struct ReplayReport {
-    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0, cuts = 0;
+    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0, cuts = 0, drains = 0;
 };
 
 /// Applies the events in order, reporting progress per event.

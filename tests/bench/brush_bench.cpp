@@ -9,12 +9,12 @@
 // BM_NaiveUnion/R     : createLevelSetSphere(16) + csgUnion into the sphere + volumeToMesh
 
 #include "core/brushes/brush.h"
+#include "core/field/csg_combine.h"
 #include "core/field/leaf_journal.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
 
 #include <benchmark/benchmark.h>
-#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
@@ -75,7 +75,7 @@ void BM_NaiveUnion(benchmark::State& state)
         const openvdb::Vec3d at = onStroke(radius, ++i);
         auto ball = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(
             float(kBrushRadius * 0.5), openvdb::Vec3f(at), 1.0f, 3.0f);  // add's ball: radius x strength
-        openvdb::tools::csgUnion(field.mutableGrid(), *ball);
+        combineWhole(field.mutableGrid(), *ball, CsgOperation::Union);   // tools::csgUnion, in one unit
         std::vector<openvdb::Vec3s> points;
         std::vector<openvdb::Vec3I> triangles;
         std::vector<openvdb::Vec4I> quads;

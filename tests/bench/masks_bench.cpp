@@ -3,24 +3,27 @@
 //   unmasked: what reading the mask costs;
 // - a lasso cut through the model (applyPrism: the prism's band within the model's reach, then
 //   csgDifference) against OpenVDB's own route for the same prism: its mesh (the lasso's outline
-//   at the model's nearest and farthest depths) to a level set (meshToLevelSet), then
-//   csgDifference;
-// - hollowing the model into a 2 mm inside shell with drain holes.
+//   at the model's nearest and farthest depths) to a level set (meshToLevelSet, through the mesh
+//   import), then csgDifference (through combineWhole: both instantiated once, in core);
+// - hollowing the model into a 2 mm inside shell with drain holes;
+// - each mask selection (the lasso's prism, cavities, walls thinner than 2 mm, the island at a
+//   surface point), next to the smoothing step.
 // The model: $SCULPT_BENCH_MODEL (a .vdb, e.g. ch2better imported at 0.25 mm:
 // `sculpt import /usr/share/mricron/templates/ch2better.nii.gz --largest-component
 // --voxel-size 0.25 -o ch2.vdb`), else the clay ball (radius 50 at 0.5).
 
+#include "core/field/csg_combine.h"
 #include "core/field/leaf_journal.h"
+#include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
 #include "core/masks/mask_edit.h"
+#include "core/masks/mask_selection.h"
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/solids/hollow.h"
 #include "core/solids/prism_cut.h"
 
 #include <benchmark/benchmark.h>
-#include <openvdb/tools/Composite.h>
-#include <openvdb/tools/MeshToVolume.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -98,23 +101,26 @@ void BM_LassoCutOpenVdbMeshToLevelSetAndCsgDifference(benchmark::State& state)
     const ViewPrism prism = lasso();
     const openvdb::BBoxd box = worldBox(model());
     const double front = box.max().z() + 1.0, back = box.min().z() - 1.0;
-    std::vector<openvdb::Vec3s> points;
-    for (const openvdb::Vec2d& p : prism.polygon) points.emplace_back(float(p.x()), float(p.y()), float(front));
-    for (const openvdb::Vec2d& p : prism.polygon) points.emplace_back(float(p.x()), float(p.y()), float(back));
-    const auto n = openvdb::Index32(prism.polygon.size());
-    std::vector<openvdb::Vec3I> triangles;
-    std::vector<openvdb::Vec4I> quads;
-    for (openvdb::Index32 i = 1; i + 1 < n; ++i) {  // the outline is convex: fans close both ends
-        triangles.emplace_back(0, i + 1, i);
-        triangles.emplace_back(n, n + i, n + i + 1);
+    TriangleMesh prismMesh;
+    for (const double z : {front, back})
+        for (const openvdb::Vec2d& p : prism.polygon)
+            prismMesh.positions.push_back({float(p.x()), float(p.y()), float(z)});
+    const auto n = std::uint32_t(prism.polygon.size());
+    for (std::uint32_t i = 1; i + 1 < n; ++i) {  // the outline is convex: fans close both ends
+        prismMesh.triangles.push_back({0, i + 1, i});
+        prismMesh.triangles.push_back({n, n + i, n + i + 1});
     }
-    for (openvdb::Index32 i = 0; i < n; ++i) quads.emplace_back(i, (i + 1) % n, n + (i + 1) % n, n + i);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t j = (i + 1) % n;
+        prismMesh.triangles.push_back({i, j, n + j});
+        prismMesh.triangles.push_back({i, n + j, n + i});
+    }
     const FieldImage& field = model();
     for (auto _ : state) {
-        const openvdb::FloatGrid::Ptr tool = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(
-            field.grid().transform(), points, triangles, quads, float(field.halfWidthVoxels()));
+        // tools::meshToLevelSet, as the mesh import calls it (one unit).
+        const openvdb::FloatGrid::Ptr tool = meshToField(prismMesh, field.voxelSize()).mutableGridPtr();
         openvdb::FloatGrid::Ptr result = field.grid().deepCopy();
-        openvdb::tools::csgDifference(*result, *tool);
+        combineWhole(*result, *tool, CsgOperation::Difference);  // tools::csgDifference, in one unit
         benchmark::DoNotOptimize(result->activeVoxelCount());
     }
 }
@@ -134,6 +140,33 @@ void BM_Hollow(benchmark::State& state)
     }
 }
 BENCHMARK(BM_Hollow)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
+
+/// A point on the model's surface: the first band voxel within half a voxel of it.
+openvdb::Vec3d surfacePoint(const FieldImage& field)
+{
+    for (auto it = field.grid().cbeginValueOn(); it; ++it)
+        if (std::abs(*it) < 0.5 * field.voxelSize()) return field.grid().transform().indexToWorld(it.getCoord());
+    return openvdb::Vec3d(0.0);
+}
+
+void BM_MaskSelection(benchmark::State& state)
+{
+    MaskSelection selection;
+    selection.kind = MaskSelectionKind(state.range(0));
+    selection.prism = lasso();
+    selection.creaseRadiusWorld = 4.0 * model().voxelSize();
+    selection.thicknessWorld = 2.0;
+    selection.point = surfacePoint(model());
+    for (auto _ : state) {
+        state.PauseTiming();
+        FieldImage field = model().deepCopy();
+        state.ResumeTiming();
+        applyMaskSelection(field, selection, nullptr);
+        benchmark::DoNotOptimize(field.mask());
+    }
+    state.SetLabel(maskSelectionName(selection.kind));
+}
+BENCHMARK(BM_MaskSelection)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(2);
 
 }  // namespace
 }  // namespace sculpt

@@ -586,6 +586,35 @@ TEST(SculptUi, LassoAndLineCutsAreOneUndoStepEachAndReplayWithSculptApply)
     EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), reports["lined"]["checksum"]);
 }
 
+TEST(SculptUi, ABoxMaskAndADrainHoleDrilledAtThePointerAreOneUndoStepEachAndReplayWithSculptApply)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new -o ball.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt("hollow ball.vdb --thickness 2 -o shell.vdb", dir.path()).exitCode, 0);
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.report(r, "start").key("B", {"shift"}).drag(kCentreX - 400, kCentreY - 300, kCentreX - 120, kCentreY + 300);
+    events.untilJobEnds().report(r, "masked").screenshot(dir / "masked.png");
+    events.key("S").move(kCentreX, kCentreY).key("H", {"ctrl"}).report(r, "drilled").screenshot(dir / "drilled.png");
+    events.key("Z", {"ctrl"}).report(r, "undone");
+    events.key("Z", {"ctrl", "shift"}).report(r, "redone");
+    const CommandResult run =
+        play(dir, events, (dir / "shell.vdb").string(), "--stroke-log " + shellQuoted(dir / "strokes.json"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    EXPECT_EQ(reports["start"]["shells"], 2);
+    EXPECT_EQ(reports["masked"]["undo"], 1);
+    EXPECT_NE(reports["masked"]["mask_checksum"], reports["start"]["mask_checksum"]);
+    EXPECT_EQ(reports["masked"]["checksum"], reports["start"]["checksum"]) << "a mask moves no clay";
+    EXPECT_EQ(reports["drilled"]["undo"], 2);
+    EXPECT_EQ(reports["drilled"]["shells"], 1) << "the hole joins the hollow to the outside";
+    EXPECT_EQ(reports["undone"]["checksum"], reports["masked"]["checksum"]);
+    EXPECT_EQ(reports["redone"]["checksum"], reports["drilled"]["checksum"]);
+    const CommandResult apply = runSculpt("apply shell.vdb strokes.json -o applied.vdb", dir.path());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), reports["drilled"]["checksum"]);
+}
+
 TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)
 {
     TempDir dir;

@@ -1,7 +1,8 @@
 // SculptApp: the cut tools. A box, lasso or line drawn on the screen is swept along the view into
-// a prism that cuts through the model (Ctrl: fills it with clay), all the way or a slab from the
-// surface under the gesture's first point; mirrored by the brush's symmetry; a job that lands as
-// one undo step and in the stroke log (Save Strokes replays it).
+// a prism that cuts through the model (Ctrl: fills it with clay), or masks the clay it covers
+// (Ctrl: unmasks), all the way or a slab from the surface under the gesture's first point;
+// mirrored by the brush's symmetry; a job that lands as one undo step and in the stroke log (Save
+// Strokes replays it). And the drain hole drilled where the pointer is.
 
 #include "sculpt/session/model_filter.h"
 #include "ui/app/sculpt_app.h"
@@ -26,22 +27,28 @@ void SculptApp::beginCut(const InputEvent& event)
 
 void SculptApp::finishCut()
 {
-    const bool fill = (mCutMods & kControl) != 0;
+    const bool ctrl = (mCutMods & kControl) != 0, fill = ctrl && !mGestureMasks;
     // A fill needs a depth: twice the brush's radius unless one is set.
     const double depth = mCutDepth > 0.0 ? mCutDepth : fill ? 2.0 * mBrush.radius : 0.0;
     const double nearDepth = depth > 0.0 ? mCutNear : -std::numeric_limits<double>::infinity();
     const double farDepth = depth > 0.0 ? mCutNear + depth : std::numeric_limits<double>::infinity();
-    const std::optional<ViewPrism> prism = mCut.prism(mViewport, nearDepth, farDepth, mBrush.symmetry);
+    std::optional<ViewPrism> prism = mCut.prism(mViewport, nearDepth, farDepth, mBrush.symmetry);
     mCut.clear();
     if (!prism || busy()) return;
-    const PrismMode mode = fill ? PrismMode::Fill : PrismMode::Cut;
+    // The piece's voxels are in its own world: view from it = view from the world after its placement.
+    prism->viewFromWorld = mDocument->pieces()[mDocument->activePiece()].look.placement * prism->viewFromWorld;
+    const std::string slab = depth > 0.0 ? " (slab)" : "";
+    if (mGestureMasks) {
+        MaskSelection selection;
+        selection.prism = *prism;
+        selection.erase = ctrl;
+        return selectMask(selection, std::string(ctrl ? "unmask" : "mask") + slab);
+    }
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::Cut;
     event.prism = *prism;
-    // The piece's voxels are in its own world: view from it = view from the world after its placement.
-    event.prism.viewFromWorld = mDocument->pieces()[mDocument->activePiece()].look.placement * prism->viewFromWorld;
-    event.prismMode = mode;
-    const std::string label = std::string(fill ? "fill" : "cut") + (depth > 0.0 ? " (slab)" : "");
+    event.prismMode = fill ? PrismMode::Fill : PrismMode::Cut;
+    const std::string label = std::string(fill ? "fill" : "cut") + slab;
     autosaveNow();
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     startJob<FieldImage>(
@@ -63,11 +70,29 @@ void SculptApp::drawCutOutline() const
     const std::vector<glm::dvec2> outline = mCut.outline();
     std::vector<ImVec2> points;
     for (const glm::dvec2& p : outline) points.emplace_back(float(p.x), float(p.y));
-    const bool fill = ((mCutMods | mHeldMods) & kControl) != 0;
-    const ImU32 colour = fill ? IM_COL32(140, 220, 140, 230) : IM_COL32(255, 120, 100, 230);
+    const bool ctrl = ((mCutMods | mHeldMods) & kControl) != 0;
+    const ImU32 colour = mGestureMasks ? (ctrl ? IM_COL32(230, 230, 230, 230) : IM_COL32(90, 90, 110, 230))
+                         : ctrl        ? IM_COL32(140, 220, 140, 230)
+                                       : IM_COL32(255, 120, 100, 230);
     const bool closed = mCut.shape() != CutGesture::Shape::Line;
     ImGui::GetForegroundDrawList()->AddPolyline(points.data(), int(points.size()), colour,
                                                 closed ? ImDrawFlags_Closed : ImDrawFlags_None, 2.0f);
+}
+
+void SculptApp::drillDrainHoleUnderPointer()
+{
+    if (busy()) return;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    if (!hit) return notify("point at the wall to drill the drain hole through first");
+    const FieldImage& field = mDocument->session().field();
+    const openvdb::Vec3d at(hit->position.x, hit->position.y, hit->position.z);
+    const openvdb::Vec3d normal(hit->normal.x, hit->normal.y, hit->normal.z);
+    const double radius = mDialogs.filter.drainRadiusWorld;
+    const double farthest = std::max(mDocument->session().modelSize(), 4.0 * field.voxelSize());
+    const std::optional<DrainHole> hole = drainHoleAt(field, at, normal, radius, farthest);
+    if (!hole) return notify("no hollow behind the wall here: Filters > Hollow makes one");
+    mDocument->drillHoles({*hole});
+    mDialogs.notice = "drain hole drilled (Ctrl+Z undoes it)";
 }
 
 }  // namespace sculpt::ui

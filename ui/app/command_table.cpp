@@ -39,10 +39,10 @@ CommandRow maskRow(Command command, const char* label, const char* help, std::ve
     return {command, label, help, std::move(chords), blocked, [](SculptApp& a) { a.editMask(operation); }};
 }
 
-template <CutGesture::Shape shape>
+template <CutGesture::Shape shape, bool masks = false>
 CommandRow cutRow(Command command, const char* label, const char* help, Chord chord)
 {
-    return {command, label, help, {chord}, nullptr, [](SculptApp& a) { a.setCutTool(shape); }};
+    return {command, label, help, {chord}, nullptr, [](SculptApp& a) { a.setCutTool(shape, masks); }};
 }
 
 template <AxisView view>
@@ -159,6 +159,14 @@ const std::vector<CommandRow>& SculptApp::commands()
         cutRow<CutGesture::Shape::Line>(Command::ToolLineCut, "Line Cut",
                                         "Drag a line: what lies to its right, as you see it, is cut away",
                                         {GLFW_KEY_J, kAlt}),
+        cutRow<CutGesture::Shape::Box, true>(Command::ToolBoxMask, "Box Mask",
+                                             "Drag a box: the clay in it, through the model along the view, is "
+                                             "masked (Ctrl: unmasked)",
+                                             {GLFW_KEY_B, kShift}),
+        cutRow<CutGesture::Shape::Lasso, true>(Command::ToolLassoMask, "Lasso Mask",
+                                               "Draw around the clay to mask, through the model along the view "
+                                               "(Ctrl: unmask it)",
+                                               {GLFW_KEY_B, kAlt}),
         {Command::RadiusDrag,
          "Radius",
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
@@ -357,6 +365,13 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_L, kAlt}},
          idle,
          [](App& a) { a.editIslandUnderPointer(false); }},
+        {Command::DrillDrainHole,
+         "Drill Drain Hole",
+         "Drills a drain hole at the pointer, straight in through the wall to the hollow behind it (radius: "
+         "Filters > Hollow's hole radius)",
+         {{GLFW_KEY_H, kControl}},
+         idle,
+         [](App& a) { a.drillDrainHoleUnderPointer(); }},
         maskRow<MaskOperation::Invert>(Command::InvertMask, "Invert Mask", "Masked clay becomes free, free clay masked",
                                        {{GLFW_KEY_I, kCtrlShift}}, idle),
         maskRow<MaskOperation::Clear>(Command::ClearMask, "Clear Mask", "Frees the whole model",
@@ -365,6 +380,25 @@ const std::vector<CommandRow>& SculptApp::commands()
         maskRow<MaskOperation::Sharpen>(Command::SharpenMask, "Sharpen Mask", "Crisps the mask's edge", {}, idle),
         maskRow<MaskOperation::Grow>(Command::GrowMask, "Grow Mask", "Spreads the mask by a voxel", {}, idle),
         maskRow<MaskOperation::Shrink>(Command::ShrinkMask, "Shrink Mask", "Draws the mask back by a voxel", {}, idle),
+        {Command::MaskIsland,
+         "Mask Island",
+         "Masks the island (disjoint bit of clay) under the pointer, as a job",
+         {{GLFW_KEY_L, kControl}},
+         idle,
+         [](App& a) { a.maskIslandUnderPointer(); }},
+        {Command::MaskCavities,
+         "Mask Cavities",
+         "Masks the creases and hollows, where the surface curves inwards (fully within the crease radius), "
+         "as a job",
+         {},
+         idle,
+         [](App& a) { a.maskCavities(); }},
+        {Command::MaskThinWalls,
+         "Mask Thin Walls",
+         "Masks the walls thinner than the thickness set here (View > Print Check shows them red), as a job",
+         {},
+         idle,
+         [](App& a) { a.maskThinWalls(); }},
         {Command::MorphTo,
          "Morph To...",
          "Morph the model into a target document, scan or mesh, as a job; then play and keep frames",

@@ -351,17 +351,41 @@ void SculptApp::replayStrokes()
 {
     const StrokeScript script = readStrokeScript(mOptions.strokes);
     for (const ScriptEvent& event : script.events) {
-        if (event.kind == ScriptEvent::Kind::Undo) mDocument->undo();
-        else if (event.kind == ScriptEvent::Kind::Redo) mDocument->redo();
-        else if (event.kind == ScriptEvent::Kind::Mask) mDocument->editMask(event.maskOperation, event.maskTimes);
-        else {
-            Stroke settings = event.stroke;
-            settings.samples.clear();
-            mDocument->beginStroke(settings, event.sources);
-            for (const StrokeSample& sample : event.stroke.samples) mDocument->extendStroke(sample);
-            mDocument->endStroke();
-        }
-        frame();  // the sculpt grows on screen, one stroke per frame
+        replayEvent(event);
+        frame();  // the sculpt grows on screen, one event per frame
+    }
+}
+
+void SculptApp::replayEvent(const ScriptEvent& event)
+{
+    const FieldImage& field = mDocument->session().field();
+    switch (event.kind) {
+    case ScriptEvent::Kind::Undo: mDocument->undo(); return;
+    case ScriptEvent::Kind::Redo: mDocument->redo(); return;
+    case ScriptEvent::Kind::Mask: mDocument->editMask(event.maskOperation, event.maskTimes); return;
+    case ScriptEvent::Kind::MaskSelection: {
+        FieldImage copy = field.deepCopy();
+        applyMaskSelection(copy, event.maskSelection, nullptr);
+        mDocument->replaceMask(copy.maskPtr(), std::string("mask ") + maskSelectionName(event.maskSelection.kind),
+                               event);
+        return;
+    }
+    case ScriptEvent::Kind::Drain: mDocument->drillHoles({event.hole}); return;
+    case ScriptEvent::Kind::Cut: {
+        const std::string label = prismModeName(event.prismMode);
+        FieldImage result = applyPrism(field, event.prism, event.prismMode);
+        refuseEmptyResult(result, mOptions.strokes.string(), label);
+        mDocument->replaceField(std::move(result), label, event);
+        return;
+    }
+    case ScriptEvent::Kind::Stroke: {
+        Stroke settings = event.stroke;
+        settings.samples.clear();
+        mDocument->beginStroke(settings, event.sources);
+        for (const StrokeSample& sample : event.stroke.samples) mDocument->extendStroke(sample);
+        mDocument->endStroke();
+        return;
+    }
     }
 }
 

@@ -189,14 +189,30 @@ public:
 
     /// A mask operation on the sculpted piece, one undo step (the status bar says when it changed nothing).
     void editMask(MaskOperation operation);
-    /// Cut tools (app_cut.cpp): a gesture on the screen cuts through the model along the view
-    /// (Ctrl: fills), a job landing as one undo step. None: the brush again.
-    void setCutTool(std::optional<CutGesture::Shape> shape) { mCutTool = shape; }
+    /// Cut and mask gestures (app_cut.cpp): a gesture on the screen cuts through the model along
+    /// the view (Ctrl: fills), or with `masks` masks the clay it covers (Ctrl: unmasks), a job
+    /// landing as one undo step. None: the brush again.
+    void setCutTool(std::optional<CutGesture::Shape> shape, bool masks = false)
+    {
+        mCutTool = shape;
+        mGestureMasks = masks;
+    }
     std::optional<CutGesture::Shape> cutTool() const { return mCutTool; }
+    bool gestureMasks() const { return mGestureMasks; }
     /// How deep a cut reaches from the surface under its first point (0: all the way through).
     double& cutDepth() { return mCutDepth; }
     /// Keeps only (or deletes) the island under the pointer, as a job; says so when none is there.
     void editIslandUnderPointer(bool keep);
+    /// Mask selections (app_masks.cpp), each a job landing as one undo step: the island under
+    /// the pointer, the cavities (concave within creaseRadius(); 0: four voxels), the walls
+    /// thinner than the print check's threshold.
+    void maskIslandUnderPointer();
+    void maskCavities();
+    void maskThinWalls();
+    double& creaseRadius() { return mCreaseRadius; }
+    /// Drills a drain hole at the pointer through the wall to the hollow behind it, one undo step
+    /// (radius: the Hollow dialog's); says so when no hollow lies behind.
+    void drillDrainHoleUnderPointer();
     /// The print check the clay shows (View > Print Check): wall thickness or overhang, and their
     /// thresholds; its grids are filled in each frame.
     SurfaceTint& printCheck() { return mCheck; }
@@ -308,6 +324,9 @@ private:
     /// Cuts (or fills) with the finished gesture's prism, as a job.
     void finishCut();
     void drawCutOutline() const;
+    /// One event of the stroke script the command line replays (--strokes), as the window makes it.
+    void replayEvent(const ScriptEvent& event);
+    void selectMask(const MaskSelection& selection, const std::string& label);
     /// Opens the document at `path` as a job; the old one stays if it fails.
     void startOpen(const std::filesystem::path& path, const std::string& grid = {});
     /// The open job itself: a large model shows its preview first (OpenPreview), then fills in.
@@ -392,6 +411,8 @@ private:
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     bool mPiecesMode = false, mPushPieces = false;
     double mCutDepth = 0.0;
+    bool mGestureMasks = false;  // the gesture tool masks instead of cutting
+    double mCreaseRadius = 0.0;
     SurfaceTint mCheck;
     std::optional<PieceGesture> mGesture;       // G, R or S under way
     openvdb::Mat4d mGestureShown;               // the placement it shows (stopped at contact)

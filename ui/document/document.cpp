@@ -197,25 +197,51 @@ void Document::replaceField(FieldImage result, const std::string& label, std::op
     session().replaceField(std::move(result));
     ++mRevision;
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    if (scripted && mActive == 0) {
-        mLog.events.push_back(std::move(*scripted));
-    } else if (mUnscripted.empty()) {
-        mUnscripted = label;
-    }
+    if (scripted) logEdit(std::move(*scripted), label);
+    else if (mUnscripted.empty()) mUnscripted = label;
+}
+
+void Document::logEdit(ScriptEvent event, const std::string& label)
+{
+    // The stroke log replays the first piece only: an edit of another leaves it incomplete.
+    if (mActive == 0) mLog.events.push_back(std::move(event));
+    else if (mUnscripted.empty()) mUnscripted = label + " on piece '" + mPieces[mActive].look.name + "'";
 }
 
 bool Document::editMask(MaskOperation operation, int times)
 {
     if (!session().editMask(operation, times)) return false;
     ++mRevision;
-    recordStep(std::string(maskOperationName(operation)) + " mask", {{mPieces[mActive].session}, {}, {}});
-    if (mActive != 0 && mUnscripted.empty()) mUnscripted = "a mask edit on piece '" + mPieces[mActive].look.name + "'";
+    const std::string label = std::string(maskOperationName(operation)) + " mask";
+    recordStep(label, {{mPieces[mActive].session}, {}, {}});
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::Mask;
     event.maskOperation = operation;
     event.maskTimes = times;
-    mLog.events.push_back(std::move(event));
+    logEdit(std::move(event), label);
     return true;
+}
+
+void Document::replaceMask(openvdb::FloatGrid::Ptr mask, const std::string& label, ScriptEvent scripted)
+{
+    session().replaceMask(std::move(mask));
+    ++mRevision;
+    recordStep(label, {{mPieces[mActive].session}, {}, {}});
+    logEdit(std::move(scripted), label);
+}
+
+void Document::drillHoles(const std::vector<DrainHole>& holes)
+{
+    session().drillHoles(holes);
+    ++mRevision;
+    const std::string label = holes.size() == 1 ? "drain hole" : std::to_string(holes.size()) + " drain holes";
+    recordStep(label, {{mPieces[mActive].session}, {}, {}});
+    for (const DrainHole& hole : holes) {
+        ScriptEvent event;
+        event.kind = ScriptEvent::Kind::Drain;
+        event.hole = hole;
+        logEdit(std::move(event), label);
+    }
 }
 
 void Document::setLooks(std::vector<PieceLook> looks, const std::string& label)

@@ -130,12 +130,19 @@ public:
     /// A mask operation on the active piece (SculptSession::editMask), one undo step; the stroke
     /// log carries it. False if it changed nothing (no step then).
     bool editMask(MaskOperation operation, int times = 1);
+    /// A mask selection's result on the active piece (SculptSession::replaceMask), one undo step
+    /// named `label`, in the stroke log as `scripted`.
+    void replaceMask(openvdb::FloatGrid::Ptr mask, const std::string& label, ScriptEvent scripted);
+    /// Drain holes drilled into the active piece (SculptSession::drillHoles), one undo step.
+    void drillHoles(const std::vector<DrainHole>& holes);
 
     /// Labels of the strokes that can be undone (oldest first) and redone (next first).
     const std::vector<std::string>& undoLabels() const { return mUndoLabels; }
     const std::vector<std::string>& redoLabels() const { return mRedoLabels; }
 
 private:
+    /// Puts an edit of the active piece in the stroke log (only the first piece's replay).
+    void logEdit(ScriptEvent event, const std::string& label);
     /// What one undo step changed: one journal step of each of `sessions`, and, if the pieces
     /// changed, their list before and after.
     struct StepScope {

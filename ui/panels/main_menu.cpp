@@ -27,22 +27,45 @@ void commandTooltip(const SculptApp& app, Command command)
 namespace {
 
 /// View > Print Check: colour thin walls or overhangs, with their thresholds.
+/// The wall thickness under which the print check flags (and Mask Thin Walls masks).
+void thicknessField(SurfaceTint& check, const char* tooltip)
+{
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputDouble("thinner than", &check.thinnerThan, 0.1, 1.0, "%.3g"))
+        check.thinnerThan = std::max(check.thinnerThan, 1e-3);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
 void printCheckMenu(SurfaceTint& check)
 {
     if (!ImGui::BeginMenu("Print Check")) return;
     for (SurfaceTint::Check c : {SurfaceTint::Check::None, SurfaceTint::Check::Thickness, SurfaceTint::Check::Overhang})
         if (ImGui::MenuItem(checkName(c), nullptr, check.check == c)) check.check = c;
     ImGui::Separator();
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::InputDouble("thinner than", &check.thinnerThan, 0.1, 1.0, "%.3g"))
-        check.thinnerThan = std::max(check.thinnerThan, 1e-3);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Walls thinner than this (world units) show red");
+    thicknessField(check, "Walls thinner than this (world units) show red");
     ImGui::SetNextItemWidth(120);
     if (ImGui::InputDouble("steeper than", &check.steeperThan, 1.0, 5.0, "%.3g"))
         check.steeperThan = std::clamp(check.steeperThan, 1.0, 89.0);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Faces overhanging closer to facing down than this (degrees; print direction +z) show blue");
     ImGui::EndMenu();
+}
+
+/// The mask selections and their settings: a crease radius (0: four voxels) and the print
+/// check's thickness threshold.
+void selectionItems(SculptApp& app)
+{
+    commandMenuItem(app, Command::MaskIsland);
+    commandMenuItem(app, Command::MaskCavities);
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::InputDouble("crease radius", &app.creaseRadius(), 0.1, 1.0,
+                           app.creaseRadius() > 0.0 ? "%.3g" : "4 voxels"))
+        app.creaseRadius() = std::max(app.creaseRadius(), 0.0);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Creases curving inwards this tightly or more are masked fully, wider ones in part");
+    commandMenuItem(app, Command::MaskThinWalls);
+    thicknessField(app.printCheck(), "Walls thinner than this (world units) are masked (and show red in the "
+                                     "print check)");
 }
 
 }  // namespace
@@ -87,17 +110,20 @@ void drawMainMenu(SculptApp& app)
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Mask")) {
-        item(Command::ToolMask);
+        for (Command c : {Command::ToolMask, Command::ToolBoxMask, Command::ToolLassoMask}) item(c);
         ImGui::Separator();
         for (Command c : {Command::InvertMask, Command::ClearMask, Command::BlurMask, Command::SharpenMask,
                           Command::GrowMask, Command::ShrinkMask})
             item(c);
+        ImGui::Separator();
+        selectionItems(app);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Filters")) {
         item(Command::SmoothModel);
         item(Command::OffsetModel);
         item(Command::HollowModel);
+        item(Command::DrillDrainHole);
         item(Command::RemoveIslands);
         item(Command::KeepIsland);
         item(Command::DeleteIsland);

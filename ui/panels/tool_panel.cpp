@@ -34,26 +34,35 @@ void toolPalette(SculptApp& app)
         commandTooltip(app, kTools[i].command);
         if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
     }
-    constexpr std::pair<CutGesture::Shape, Command> kCuts[] = {{CutGesture::Shape::Lasso, Command::ToolLassoCut},
-                                                               {CutGesture::Shape::Box, Command::ToolBoxCut},
-                                                               {CutGesture::Shape::Line, Command::ToolLineCut}};
-    for (const auto& [shape, command] : kCuts) {
-        const bool current = app.cutTool() == shape;
+    struct Gesture {
+        CutGesture::Shape shape;
+        bool masks;
+        Command command;
+    };
+    constexpr Gesture kGestures[] = {{CutGesture::Shape::Lasso, false, Command::ToolLassoCut},
+                                     {CutGesture::Shape::Box, false, Command::ToolBoxCut},
+                                     {CutGesture::Shape::Line, false, Command::ToolLineCut},
+                                     {CutGesture::Shape::Lasso, true, Command::ToolLassoMask},
+                                     {CutGesture::Shape::Box, true, Command::ToolBoxMask}};
+    for (int i = 0; i < int(std::size(kGestures)); ++i) {
+        const Gesture& g = kGestures[i];
+        const bool current = app.cutTool() == g.shape && app.gestureMasks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(commandRow(command).label, ImVec2(68, 0))) app.execute(command);
+        if (ImGui::Button(commandRow(g.command).label, ImVec2(68, 0))) app.execute(g.command);
         if (current) ImGui::PopStyleColor();
-        commandTooltip(app, command);
-        if (command != Command::ToolLineCut) ImGui::SameLine();
+        commandTooltip(app, g.command);
+        if (i % 3 != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();
     }
     if (app.cutTool()) {
         ImGui::PushItemWidth(130);
         float depth = float(app.cutDepth());
-        if (ImGui::DragFloat("cut depth", &depth, 0.1f, 0.0f, 1e4f, depth > 0.0f ? "%.3g" : "through")) {
+        if (ImGui::DragFloat("depth", &depth, 0.1f, 0.0f, 1e4f, depth > 0.0f ? "%.3g" : "through")) {
             app.cutDepth() = std::max(0.0f, depth);
         }
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
-                "How far behind the surface under the first point the cut reaches (0: all the way through)");
+                "How far behind the surface under the first point the cut or mask reaches (0: all the way "
+                "through)");
         ImGui::PopItemWidth();
     }
 }

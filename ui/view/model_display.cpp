@@ -198,7 +198,9 @@ void ModelDisplay::collectTwins()
             chunk.coarse->SetVisibility(false);
             mRenderer->AddActor(chunk.coarse);
         }
-        setMesh(chunk.coarse, polyDataOf(twin.mesh));
+        vtkSmartPointer<vtkPolyData> coarse = polyDataOf(twin.mesh);
+        if (mTint.any()) tintPoints(*coarse, twin.mesh, mTint);  // the grids as they are now, as a new chunk's
+        setMesh(chunk.coarse, coarse);
         mLastBytes += bytesOf(twin.mesh);
         chunk.coarseTriangles = twin.mesh.triangles.size();
         mTwinBytes += bytesOf(twin.mesh) - chunk.twinBytes;

@@ -3,6 +3,7 @@
 // on, and finds the grids of streamed files, which carry no offsets.
 
 #include "core/base/errors.h"
+#include "core/field/csg_combine.h"
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
 #include "core/io/vdb_layout.h"
@@ -14,7 +15,6 @@
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
-#include <openvdb/tools/Composite.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include <cstring>
@@ -142,8 +142,8 @@ TEST_F(VdbTreeCheck, RefusesTwoTopLevelNodesAtOneOrigin)
     // Two spheres in two top-level nodes (4096 voxels wide): the second moved onto the first is
     // what OpenVDB's root reader leaks.
     auto grid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(5.0f, {2048, 2048, 2048}, 1.0f);
-    openvdb::tools::csgUnion(*grid,
-                             *openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(5.0f, {6144, 6144, 6144}, 1.0f));
+    combineWhole(*grid, *openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(5.0f, {6144, 6144, 6144}, 1.0f),
+                 CsgOperation::Union);
     grid->setName("surface");
     ASSERT_EQ(grid->tree().root().childCount(), 2u);
     TempDir dir;

@@ -12,9 +12,11 @@
 
 // Clang and GCC mangle this signature differently (the dependent Ptr inside the allocator), so
 // the sanitizer tree (clang) cannot link against the instantiation in Debian's GCC-built
-// libopenvdb; instantiating it here serves both compilers.
+// libopenvdb: clang instantiates it here (GCC links Debian's; instantiating it costs a minute).
+#ifdef __clang__
 template void openvdb::tools::extractActiveVoxelSegmentMasks<openvdb::BoolTree>(const openvdb::BoolTree&,
                                                                                 std::vector<openvdb::BoolTree::Ptr>&);
+#endif
 
 namespace sculpt {
 namespace {

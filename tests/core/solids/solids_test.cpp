@@ -2,37 +2,27 @@
 
 #include "core/base/errors.h"
 #include "core/field/central_difference.h"
-#include "core/mesh/incremental_mesher.h"
+#include "core/field/grid_checksum.h"
+#include "core/field/leaf_journal.h"
 #include "core/primitives/analytic_shapes.h"
-#include "core/primitives/sdf_rasterizer.h"
 #include "core/solids/hollow.h"
 #include "core/solids/islands.h"
 #include "core/solids/prism_cut.h"
 #include "core/solids/wall_thickness.h"
-#include "tests/support/mesh_checks.h"
+#include "tests/support/solid_shapes.h"
 
 #include <gtest/gtest.h>
 #include <openvdb/tools/LevelSetMeasure.h>
-
-#include <random>
 
 namespace sculpt {
 namespace {
 
 using openvdb::Vec3d;
-
-struct Topology {
-    std::size_t shells;
-    long euler;
-    bool closedManifold;
-};
-
-Topology topologyOf(const FieldImage& field)
-{
-    const TriangleMesh mesh = meshLevelSet(field);
-    const test::MeshTopology t = test::meshTopology(mesh);
-    return {test::shellTriangleCounts(mesh).size(), long(t.eulerCharacteristic()), t.closedManifold()};
-}
+using test::ballsAndSpecks;
+using test::frontSquare;
+using test::plateWithFin;
+using test::Topology;
+using test::topologyOf;
 
 double volumeOf(const FieldImage& field) { return openvdb::tools::levelSetVolume(field.grid()); }
 
@@ -73,6 +63,32 @@ TEST(Hollow, ADrainHoleJoinsTheCavityToTheOutside)
     EXPECT_NEAR(closed - volumeOf(shell.field), M_PI * 1.5 * 1.5 * 2.0, 0.35 * M_PI * 1.5 * 1.5 * 2.0);
 }
 
+TEST(Hollow, AHoleDrilledWhereClickedJoinsTheCavityAndUndoesBitForBit)
+{
+    const FieldImage ball = makeSphere(10.0, 0.5);
+    HollowOptions options;
+    options.thicknessWorld = 2.0;
+    FieldImage shell = hollow(ball, options).field;
+    ASSERT_EQ(topologyOf(shell).shells, 2u);
+    // Clicked on the side (x = 10, outward normal +x): straight in through the wall of 2.
+    const std::optional<DrainHole> hole = drainHoleAt(shell, Vec3d(10, 0, 0), Vec3d(1, 0, 0), 1.0, 20.0);
+    ASSERT_TRUE(hole.has_value());
+    EXPECT_NEAR(hole->from.x(), 11.0, 1e-9);
+    EXPECT_NEAR(hole->to.x(), 10.0 - 2.0 - 1.0, 0.5);
+    const std::uint64_t before = gridChecksum(shell.grid());
+    LeafJournal journal;
+    cutDrainHoles(shell, {*hole}, &journal);
+    const Topology t = topologyOf(shell);
+    EXPECT_TRUE(t.closedManifold);
+    EXPECT_EQ(t.shells, 1u);
+    EXPECT_EQ(t.euler, 2);
+    journal.swap(shell);
+    EXPECT_EQ(gridChecksum(shell.grid()), before);
+    // A solid ball has no cavity behind its wall: nothing to drain.
+    EXPECT_FALSE(drainHoleAt(ball, Vec3d(10, 0, 0), Vec3d(1, 0, 0), 1.0, 5.0).has_value());
+    EXPECT_THROW(cutDrainHoles(shell, {{Vec3d(0.0), Vec3d(1.0), -1.0}}), InputError);
+}
+
 TEST(Hollow, WallsThinnerThanAVoxelStillMeshClosedAndMedialAndOutsideShellsHoldTheirVolumes)
 {
     const double h = 0.5;
@@ -95,30 +111,6 @@ TEST(Hollow, WallsThinnerThanAVoxelStillMeshClosedAndMedialAndOutsideShellsHoldT
     closed.side = ShellSide::Inside;
     closed.closingWorld = 1.0;  // a ball's cavity has no narrow part: the closing changes nothing much
     EXPECT_NEAR(volumeOf(hollow(ball, closed).field), shellVolume(8.0, 10.0), 0.02 * shellVolume(8.0, 10.0));
-}
-
-/// Two balls of radius 5 and twenty specks of radius 0.4 (0.27 mm^3 each) scattered around them.
-FieldImage ballsAndSpecks()
-{
-    std::vector<std::pair<Vec3d, double>> balls{{Vec3d(-8, 0, 0), 5.0}, {Vec3d(8, 0, 0), 5.0}};
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> coordinate(-18.0, 18.0);
-    while (balls.size() < 22) {
-        const Vec3d p(coordinate(random), coordinate(random), coordinate(random));
-        const bool apart = std::all_of(balls.begin(), balls.end(),
-                                       [&](const auto& b) { return (p - b.first).length() > b.second + 2.5; });
-        if (apart) balls.push_back({p, 0.4});
-    }
-    AnalyticSdf sdf;
-    sdf.distance = [balls](const Vec3d& p) {
-        double d = std::numeric_limits<double>::infinity();
-        for (const auto& [centre, radius] : balls) d = std::min(d, (p - centre).length() - radius);
-        return d;
-    };
-    sdf.bounds = openvdb::BBoxd(Vec3d(-20.0), Vec3d(20.0));
-    sdf.surfaceArea = 2 * 4 * M_PI * 25 + 20 * 4 * M_PI * 0.16;
-    sdf.description = "two balls and twenty specks";
-    return rasterizeSdf(sdf, 0.2);
 }
 
 TEST(Islands, RemovingThoseUnderACubicMillimetreLeavesTheTwoBallsBitForBit)
@@ -161,15 +153,6 @@ TEST(Islands, KeepingTheOneUnderAPointAndItsComplementUniteIntoTheInput)
     for (auto it = field.grid().cbeginValueOn(); it; ++it)
         differ += std::min(a.getValue(it.getCoord()), b.getValue(it.getCoord())) != *it;
     EXPECT_EQ(differ, 0u);
-}
-
-/// The front view: looking down -z from far along +z, parallel rays.
-ViewPrism frontSquare(double x0, double y0, double x1, double y1)
-{
-    ViewPrism prism;
-    prism.viewFromWorld.setTranslation(Vec3d(0.0, 0.0, -100.0));  // the eye at z = 100
-    prism.polygon = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-    return prism;
 }
 
 /// The ball of radius r less the column x > a, y > b (along z), by the midpoint rule.
@@ -246,31 +229,6 @@ TEST(PrismCut, AFillSlabAddsItsBoxAndAPerspectivePyramidCutsWhatTheEyeSees)
     EXPECT_GT(removed, 0.8 * 10.0 * 10.0 * 16.0);
     EXPECT_LT(removed, 10.0 * 10.0 * 20.0);
     EXPECT_THROW(applyPrism(ball, frontSquare(-1, -1, 1, 1), PrismMode::Fill), InputError) << "a fill needs a depth";
-}
-
-/// A box of half extents `half` centred at `centre`: its exact signed distance.
-double boxDistance(const Vec3d& p, const Vec3d& centre, const Vec3d& half)
-{
-    const Vec3d q(std::abs(p.x() - centre.x()) - half.x(), std::abs(p.y() - centre.y()) - half.y(),
-                  std::abs(p.z() - centre.z()) - half.z());
-    const Vec3d out(std::max(q.x(), 0.0), std::max(q.y(), 0.0), std::max(q.z(), 0.0));
-    return out.length() + std::min(std::max({q.x(), q.y(), q.z()}), 0.0);
-}
-
-/// A plate 20 x 20 x 2 (z from -1 to 1) with a fin 0.6 thick and 4 high standing on it at x = 0;
-/// its near edge (y < -6) chamfered at 45 degrees underneath.
-FieldImage plateWithFin(double h)
-{
-    AnalyticSdf sdf;
-    sdf.distance = [](const Vec3d& p) {
-        const double plate = std::max(boxDistance(p, Vec3d(0, 0, 0), Vec3d(10, 10, 1)),
-                                      (-(p.y() + 6.0) - (p.z() + 1.0) - 3.0) / std::sqrt(2.0));
-        return std::min(plate, boxDistance(p, Vec3d(0, 0, 3), Vec3d(0.3, 8, 2)));
-    };
-    sdf.bounds = openvdb::BBoxd(Vec3d(-10, -10, -1), Vec3d(10, 10, 5));
-    sdf.surfaceArea = 2 * 400 + 80 + 2 * 64;
-    sdf.description = "plate with a fin";
-    return rasterizeSdf(sdf, h);
 }
 
 TEST(WallThickness, APlateReadsItsThicknessAndOnlyItsThinFinIsFlagged)

@@ -11,6 +11,7 @@
 #include "core/motion/surface_flows.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/scan/scan_readers.h"
+#include "core/solids/hollow.h"
 #include "sculpt/session/import_preview.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/shape_import.h"
@@ -462,6 +463,65 @@ TEST(StrokeScript, MaskStrokesMaskActionsAndCutsReplayBitForBit)
     EXPECT_EQ(a.history().undoCount(), 0u);
 }
 
+TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEach)
+{
+    HollowOptions options;
+    options.thicknessWorld = 2.0;
+    const FieldImage shell = hollow(makeSphere(20.0, 0.5), options).field;  // walls at r = 18 and 20
+    StrokeScript script;
+    ScriptEvent drain;
+    drain.kind = ScriptEvent::Kind::Drain;
+    drain.hole = {Vec3d(21, 0, 0), Vec3d(16, 0, 0), 1.5};
+    script.events.push_back(drain);
+    const auto selection = [&](MaskSelectionKind kind, bool erase, const std::function<void(MaskSelection&)>& set) {
+        ScriptEvent event;
+        event.kind = ScriptEvent::Kind::MaskSelection;
+        event.maskSelection.kind = kind;
+        event.maskSelection.erase = erase;
+        set(event.maskSelection);
+        script.events.push_back(event);
+    };
+    const auto frontBox = [](double x0) {
+        ViewPrism prism;
+        prism.viewFromWorld.setTranslation(Vec3d(0.0, 0.0, -100.0));
+        prism.polygon = {{x0, -30.0}, {30.0, -30.0}, {30.0, 30.0}, {x0, 30.0}};
+        return prism;
+    };
+    // Mask x > 5, unmask x > 10, mask every wall (all are thinner than 3), unmask the inner one
+    // (a hollow of radius 18: concave), unmask the whole island: each changes the mask.
+    selection(MaskSelectionKind::Prism, false, [&](MaskSelection& m) { m.prism = frontBox(5.0); });
+    selection(MaskSelectionKind::Prism, true, [&](MaskSelection& m) { m.prism = frontBox(10.0); });
+    selection(MaskSelectionKind::Thin, false, [](MaskSelection& m) { m.thicknessWorld = 3.0; });
+    selection(MaskSelectionKind::Cavity, true, [](MaskSelection& m) { m.creaseRadiusWorld = 30.0; });
+    selection(MaskSelectionKind::Island, true, [](MaskSelection& m) { m.point = Vec3d(0.0, 20.0, 0.0); });
+    const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
+    ASSERT_EQ(back.events.size(), script.events.size());
+    EXPECT_EQ(back.events[0].hole.to, drain.hole.to);
+    EXPECT_EQ(back.events[2].maskSelection.prism.polygon, frontBox(10.0).polygon);
+    EXPECT_TRUE(back.events[2].maskSelection.erase);
+    EXPECT_EQ(back.events[3].maskSelection.thicknessWorld, 3.0);
+    EXPECT_EQ(back.events[4].maskSelection.creaseRadiusWorld, 30.0);
+    EXPECT_EQ(back.events[5].maskSelection.point, Vec3d(0.0, 20.0, 0.0));
+
+    SculptSession a(shell.deepCopy()), b(shell.deepCopy());
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> states{{checksumOf(a), 0}};
+    const auto maskOf = [](const SculptSession& s) { return s.field().mask() ? gridChecksum(*s.field().mask()) : 0; };
+    for (std::size_t i = 0; i < script.events.size(); ++i) {
+        replayScript(a, StrokeScript{{script.events[i]}}, "original");
+        states.emplace_back(checksumOf(a), maskOf(a));
+        EXPECT_NE(states[i + 1], states[i]) << "event " << i << " changed something";
+    }
+    const ReplayReport done = replayScript(b, back, "written");
+    EXPECT_EQ(done.drains, 1u);
+    EXPECT_EQ(done.maskOperations, 5u);
+    EXPECT_EQ(std::make_pair(checksumOf(b), maskOf(b)), states.back());
+    for (std::size_t i = script.events.size(); i > 0; --i) {
+        ASSERT_TRUE(a.undo());
+        EXPECT_EQ(std::make_pair(checksumOf(a), maskOf(a)), states[i - 1]) << "undoing event " << i - 1;
+    }
+    EXPECT_EQ(a.history().undoCount(), 0u);
+}
+
 TEST(StrokeScript, ErrorsNameTheEventAndTheField)
 {
     const std::string ok = R"("samples": [[1, 2, 3]])";
@@ -483,8 +543,9 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
               "s.json: events[0] ('add' stroke): field 'samples[0].pressure' must be in (0, 1] (got 2)");
     EXPECT_EQ(parseError(R"([{"tool": "add", "radius": 1, "samples": []}])"),
               "s.json: events[0] ('add' stroke): field 'samples' is empty: a stroke needs at least one");
-    EXPECT_EQ(parseError(R"([{"action": "again"}])"),
-              "s.json: events[0]: field 'action' is \"again\" (expected \"undo\", \"redo\", \"mask\" or \"cut\")");
+    EXPECT_EQ(
+        parseError(R"([{"action": "again"}])"),
+        "s.json: events[0]: field 'action' is \"again\" (expected \"undo\", \"redo\", \"mask\", \"cut\" or \"drain\")");
     EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
               "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
     EXPECT_EQ(parseError(R"([{"tool": "follow", "radius": 1, )" + ok + "}]"),
