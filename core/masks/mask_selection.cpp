@@ -46,13 +46,18 @@ Selected prismSelection(const FieldImage& field, const ViewPrism& prism)
     // farther; the margin doubles that for a perspective prism, whose distance is not exact.
     const double halfDiagonal = 0.5 * std::sqrt(3.0) * 8.0 * h;
     const double margin = 2.0 * (halfDiagonal + field.grid().background() + h);
+    openvdb::CoordBBox leafBox;
+    field.grid().tree().evalLeafBoundingBox(leafBox);
+    openvdb::BBoxd box = field.grid().transform().indexToWorld(leafBox);
+    box.expand(margin);
+    const PrismDistance distance(prism, 2.0 * margin, box);
     Selected selected;
     for (const openvdb::Coord& origin : maskDomain(field)) {
         const openvdb::Vec3d centre = field.grid().transform().indexToWorld(origin.asVec3d() + openvdb::Vec3d(3.5));
-        if (prism.distance(centre) <= margin) selected.leaves.push_back(origin);
+        if (distance(centre) <= margin) selected.leaves.push_back(origin);
     }
-    selected.degree = [&prism](const openvdb::Coord& ijk, const MaskSite& site) {
-        return prism.distance(site.footWorld(ijk)) <= 0.0 ? 1.0 : 0.0;
+    selected.degree = [distance](const openvdb::Coord& ijk, const MaskSite& site) {
+        return distance(site.footWorld(ijk)) <= 0.0 ? 1.0 : 0.0;
     };
     return selected;
 }

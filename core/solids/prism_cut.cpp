@@ -14,20 +14,164 @@ namespace {
 
 constexpr EnumNames<PrismMode, 2> kModes{{{PrismMode::Cut, "cut"}, {PrismMode::Fill, "fill"}}};
 
-/// Signed distance from q to the closed polygon (negative inside, by the even-odd rule).
+/// Signed distance from q to the closed polygon (negative inside, by the even-odd rule). The
+/// nearest edge is found by squared distance: one square root per point, not per edge (this runs
+/// for every voxel of a cut's band).
 double polygonDistance(const std::vector<openvdb::Vec2d>& polygon, const openvdb::Vec2d& q)
 {
-    double nearest = std::numeric_limits<double>::infinity();
+    double nearest2 = std::numeric_limits<double>::infinity();
     bool inside = false;
     for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const openvdb::Vec2d a = polygon[j], b = polygon[i], ab = b - a;
-        const double t = std::clamp((q - a).dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
-        nearest = std::min(nearest, (q - (a + ab * t)).length());
+        const openvdb::Vec2d a = polygon[j], b = polygon[i], ab = b - a, aq = q - a;
+        const double t = std::clamp(aq.dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
+        nearest2 = std::min(nearest2, (aq - ab * t).lengthSqr());
         if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < a.x() + (q.y() - a.y()) / (b.y() - a.y()) * ab.x())
             inside = !inside;
     }
+    const double nearest = std::sqrt(nearest2);
     return inside ? -nearest : nearest;
 }
+
+/// The prism's distance at `world` (mirrors, slab, perspective), its polygon's read by
+/// `across(q, capPlane)`: q in the view plane, the cap in the plane's units there.
+template <typename Across>
+double sweptDistance(const ViewPrism& prism, const openvdb::Vec3d& world, const Across& across, double capWorld)
+{
+    double best = std::numeric_limits<double>::infinity();
+    for (int m = 0; m < 8; ++m) {
+        if (((m & 1) && !prism.mirror[0]) || ((m & 2) && !prism.mirror[1]) || ((m & 4) && !prism.mirror[2])) continue;
+        const openvdb::Vec3d p(m & 1 ? -world.x() : world.x(), m & 2 ? -world.y() : world.y(),
+                               m & 4 ? -world.z() : world.z());
+        const openvdb::Vec3d v = prism.viewFromWorld.transform(p);
+        const double depth = -v.z();
+        const double slab = std::max(prism.nearDepth - depth, depth - prism.farDepth);
+        double side;
+        if (!prism.perspective) {
+            side = across({v.x(), v.y()}, capWorld);
+        } else if (depth > 1e-9) {
+            side = across({v.x() / depth, v.y() / depth}, capWorld / depth) * depth;
+        } else {
+            side = -depth + 1e-9;  // behind the eye: outside, by about the distance to its plane
+        }
+        best = std::min(best, std::max(side, slab));
+    }
+    return best;
+}
+
+}  // namespace
+
+/// The polygon's edges binned on a grid of square cells, by rows (for the even-odd count along
+/// +x) and by cells (for the edges near a point). At most kMaxCells cells a side: a half-plane's
+/// polygon reaches far beyond what is cut.
+class EdgeBins {
+public:
+    EdgeBins(const std::vector<openvdb::Vec2d>& polygon, double cell) : mPolygon(polygon)
+    {
+        openvdb::Vec2d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+        for (const openvdb::Vec2d& p : polygon) lo = minComponent(lo, p), hi = maxComponent(hi, p);
+        mOrigin = lo;
+        mCell = std::max({cell, (hi.x() - lo.x()) / kMaxCells, (hi.y() - lo.y()) / kMaxCells, 1e-12});
+        mColumns = int((hi.x() - lo.x()) / mCell) + 1;
+        mRows = int((hi.y() - lo.y()) / mCell) + 1;
+        mRowEdges.resize(std::size_t(mRows));
+        mCellEdges.resize(std::size_t(mRows) * std::size_t(mColumns));
+        for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) add(polygon[j], polygon[i], j);
+    }
+
+    /// The signed distance from q to the polygon where it is under `cap`; else at least `cap`, of
+    /// the right sign (even-odd).
+    double distance(const openvdb::Vec2d& q, double cap) const
+    {
+        const bool inside = isInside(q);
+        const int c0 = column(q.x() - cap), c1 = column(q.x() + cap), r0 = row(q.y() - cap), r1 = row(q.y() + cap);
+        double nearest2 = cap * cap;
+        if (double(c1 - c0 + 1) * double(r1 - r0 + 1) > double(mPolygon.size())) {
+            for (std::size_t e = 0; e < mPolygon.size(); ++e) nearest2 = std::min(nearest2, edgeDistance2(e, q));
+        } else {
+            for (int r = std::max(r0, 0); r <= std::min(r1, mRows - 1); ++r)
+                for (int c = std::max(c0, 0); c <= std::min(c1, mColumns - 1); ++c)
+                    for (const std::uint32_t e : mCellEdges[std::size_t(r) * std::size_t(mColumns) + std::size_t(c)])
+                        nearest2 = std::min(nearest2, edgeDistance2(e, q));
+        }
+        const double nearest = std::sqrt(nearest2);
+        return inside ? -nearest : nearest;
+    }
+
+private:
+    static constexpr double kMaxCells = 2048.0;
+
+    int column(double x) const
+    {
+        return int(std::clamp(std::floor((x - mOrigin.x()) / mCell), -1.0, double(mColumns)));
+    }
+    int row(double y) const { return int(std::clamp(std::floor((y - mOrigin.y()) / mCell), -1.0, double(mRows))); }
+
+    /// Edge e runs from vertex e to the next.
+    std::pair<openvdb::Vec2d, openvdb::Vec2d> edge(std::size_t e) const
+    {
+        return {mPolygon[e], mPolygon[(e + 1) % mPolygon.size()]};
+    }
+
+    double edgeDistance2(std::size_t e, const openvdb::Vec2d& q) const
+    {
+        const auto [a, b] = edge(e);
+        const openvdb::Vec2d ab = b - a, aq = q - a;
+        const double t = std::clamp(aq.dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
+        return (aq - ab * t).lengthSqr();
+    }
+
+    bool isInside(const openvdb::Vec2d& q) const
+    {
+        const int r = row(q.y());
+        if (r < 0 || r >= mRows) return false;
+        bool inside = false;
+        for (const std::uint32_t e : mRowEdges[std::size_t(r)]) {
+            const auto [a, b] = edge(e);
+            if ((a.y() > q.y()) != (b.y() > q.y()) &&
+                q.x() < a.x() + (q.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x()))
+                inside = !inside;
+        }
+        return inside;
+    }
+
+    /// Files edge (a, b) (number e) under every row its y-range meets and every cell it passes.
+    void add(const openvdb::Vec2d& a, const openvdb::Vec2d& b, std::size_t e)
+    {
+        const int r0 = std::max(row(std::min(a.y(), b.y())), 0), r1 = std::min(row(std::max(a.y(), b.y())), mRows - 1);
+        for (int r = r0; r <= r1; ++r) {
+            mRowEdges[std::size_t(r)].push_back(std::uint32_t(e));
+            // The part of the edge within the row's band of y: its x-range, clipped.
+            const double y0 = mOrigin.y() + r * mCell, y1 = y0 + mCell;
+            double x0 = a.x(), x1 = b.x();
+            if (b.y() != a.y()) {
+                const auto xAt = [&](double y) { return a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y()); };
+                const double ya = std::clamp(y0, std::min(a.y(), b.y()), std::max(a.y(), b.y()));
+                const double yb = std::clamp(y1, std::min(a.y(), b.y()), std::max(a.y(), b.y()));
+                x0 = xAt(ya), x1 = xAt(yb);
+            }
+            const int c0 = std::max(column(std::min(x0, x1)), 0), c1 = std::min(column(std::max(x0, x1)), mColumns - 1);
+            for (int c = c0; c <= c1; ++c)
+                mCellEdges[std::size_t(r) * std::size_t(mColumns) + std::size_t(c)].push_back(std::uint32_t(e));
+        }
+    }
+
+    static openvdb::Vec2d minComponent(const openvdb::Vec2d& a, const openvdb::Vec2d& b)
+    {
+        return {std::min(a.x(), b.x()), std::min(a.y(), b.y())};
+    }
+    static openvdb::Vec2d maxComponent(const openvdb::Vec2d& a, const openvdb::Vec2d& b)
+    {
+        return {std::max(a.x(), b.x()), std::max(a.y(), b.y())};
+    }
+
+    std::vector<openvdb::Vec2d> mPolygon;
+    openvdb::Vec2d mOrigin{0.0};
+    double mCell = 1.0;
+    int mColumns = 1, mRows = 1;
+    std::vector<std::vector<std::uint32_t>> mRowEdges, mCellEdges;
+};
+
+namespace {
 
 /// The distance to the box `bounds` (negative inside).
 double boxDistance(const openvdb::BBoxd& bounds, const openvdb::Vec3d& p)
@@ -57,25 +201,34 @@ void validatePrism(const ViewPrism& prism)
 
 double ViewPrism::distance(const openvdb::Vec3d& world) const
 {
-    double best = std::numeric_limits<double>::infinity();
-    for (int m = 0; m < 8; ++m) {
-        if (((m & 1) && !mirror[0]) || ((m & 2) && !mirror[1]) || ((m & 4) && !mirror[2])) continue;
-        const openvdb::Vec3d p(m & 1 ? -world.x() : world.x(), m & 2 ? -world.y() : world.y(),
-                               m & 4 ? -world.z() : world.z());
-        const openvdb::Vec3d v = viewFromWorld.transform(p);
-        const double depth = -v.z();
-        const double slab = std::max(nearDepth - depth, depth - farDepth);
-        double across;
-        if (!perspective) {
-            across = polygonDistance(polygon, {v.x(), v.y()});
-        } else if (depth > 1e-9) {
-            across = polygonDistance(polygon, {v.x() / depth, v.y() / depth}) * depth;
-        } else {
-            across = -depth + 1e-9;  // behind the eye: outside, by about the distance to its plane
-        }
-        best = std::min(best, std::max(across, slab));
+    return sweptDistance(
+        *this, world, [this](const openvdb::Vec2d& q, double) { return polygonDistance(polygon, q); },
+        std::numeric_limits<double>::infinity());
+}
+
+PrismDistance::PrismDistance(const ViewPrism& prism, double capWorld, const openvdb::BBoxd& box)
+    : mPrism(prism), mCap(capWorld)
+{
+    // Cells as wide as the cap where it is narrowest in the view plane: at the farthest depth of
+    // the box's corners and their mirror images.
+    double farthest = 1e-9;
+    for (int corner = 0; corner < 8; ++corner) {
+        const openvdb::Vec3d p(corner & 1 ? box.max().x() : box.min().x(), corner & 2 ? box.max().y() : box.min().y(),
+                               corner & 4 ? box.max().z() : box.min().z());
+        for (int m = 0; m < 8; ++m)
+            farthest = std::max(farthest, -prism.viewFromWorld
+                                               .transform(openvdb::Vec3d(m & 1 ? -p.x() : p.x(), m & 2 ? -p.y() : p.y(),
+                                                                         m & 4 ? -p.z() : p.z()))
+                                               .z());
     }
-    return best;
+    const double cell = prism.perspective ? capWorld / farthest : capWorld;
+    mBins = std::make_shared<const EdgeBins>(prism.polygon, cell);
+}
+
+double PrismDistance::operator()(const openvdb::Vec3d& world) const
+{
+    return sweptDistance(
+        mPrism, world, [this](const openvdb::Vec2d& q, double cap) { return mBins->distance(q, cap); }, mCap);
 }
 
 std::vector<openvdb::Vec2d> halfPlanePolygon(const openvdb::Vec2d& a, const openvdb::Vec2d& b, double reach)
@@ -99,8 +252,11 @@ FieldImage applyPrism(const FieldImage& field, const ViewPrism& prism, PrismMode
     const double grow = 2.0 * field.grid().background() +
                         (mode == PrismMode::Fill ? std::min(prism.farDepth, reach.extents().length()) : 0.0);
     reach.expand(grow);
+    // Exact within a band and a leaf's diagonal (what the rasterizer reads), a sign beyond.
+    const double leafDiagonal = std::sqrt(3.0) * 8.0 * field.voxelSize();
+    const PrismDistance distance(prism, 2.0 * (field.grid().background() + leafDiagonal), reach);
     AnalyticSdf sdf;
-    sdf.distance = [&](const openvdb::Vec3d& p) { return std::max(prism.distance(p), boxDistance(reach, p)); };
+    sdf.distance = [&](const openvdb::Vec3d& p) { return std::max(distance(p), boxDistance(reach, p)); };
     sdf.bounds = reach;
     const openvdb::Vec3d e = reach.extents();
     sdf.surfaceArea = 2.0 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,24 @@ struct ViewPrism {
 /// @throws InputError for a polygon of fewer than three vertices or not finite, or a slab that is
 ///         empty.
 void validatePrism(const ViewPrism& prism);
+
+class EdgeBins;
+
+/// A prism's distance for many points within a box (every voxel of a cut's band): exact where it
+/// is under `capWorld`, beyond that a value of the right sign at least `capWorld` from zero. The
+/// polygon's edges are binned in cells about the cap wide (at the box's farthest depth, for a
+/// perspective prism), so a point reads the few edges near it and those crossing its row instead
+/// of every edge. Cheap to copy; read from any thread.
+class PrismDistance {
+public:
+    PrismDistance(const ViewPrism& prism, double capWorld, const openvdb::BBoxd& box);
+    double operator()(const openvdb::Vec3d& world) const;
+
+private:
+    ViewPrism mPrism;
+    double mCap;
+    std::shared_ptr<const EdgeBins> mBins;
+};
 
 /// The half-plane to the right of the line from a to b (view-plane coordinates, as the polygon's),
 /// as a polygon reaching `reach` beyond both: a line gesture's prism.

@@ -33,8 +33,8 @@ void runHollow(HollowCommandOptions o)
         f = applyFilter(std::move(f), o.filter, o.input.path, p);
     });
     const FieldMeasures after = measureField(field);
-    std::cout << "wrote " << o.output << ": a " << o.side << " shell of " << o.filter.hollow.thicknessWorld << " "
-              << field.units() << ", volume " << before << " -> " << after.volume << " " << field.units() << "^3, "
+    std::cout << "wrote " << o.output << ": a shell of " << o.filter.hollow.thicknessWorld << " " << field.units()
+              << " (" << o.side << "), volume " << before << " -> " << after.volume << " " << field.units() << "^3, "
               << after.components << (after.components == 1 ? " surface" : " surfaces") << "\n";
 }
 

@@ -97,6 +97,19 @@ std::shared_ptr<const FieldImage> parseTarget(const json& j, const std::string& 
     return target;
 }
 
+/// The value field `key` names (`fallback` when absent), read by `fromName` (an enum's names);
+/// an unknown name is reported with `where`.
+template <typename FromName>
+auto namedValue(const json& j, const char* key, const std::string& fallback, const std::string& where,
+                FromName fromName)
+{
+    try {
+        return fromName(textOr(j, key, fallback, where));
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+}
+
 Stroke parseStroke(const json& j, const std::string& where, ParseContext& context)
 {
     onlyFields(j,
@@ -105,12 +118,8 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
                where);
     Stroke stroke;
     BrushSettings& brush = stroke.brush;
-    try {
-        brush.tool = brushToolFromName(textOr(j, "tool", "", where));
-        brush.falloff = falloffFromName(textOr(j, "falloff", falloffName(brush.falloff), where));
-    } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what(), e.remedy());
-    }
+    brush.tool = namedValue(j, "tool", "", where, brushToolFromName);
+    brush.falloff = namedValue(j, "falloff", falloffName(brush.falloff), where, falloffFromName);
     brush.radiusWorld = number(j, "radius", where);
     brush.strength = numberOr(j, "strength", brush.strength, where);
     brush.keepVolume = flagOr(j, "keep_volume", false, where);
@@ -142,11 +151,7 @@ ScriptEvent parseMaskEvent(const json& j, const std::string& where)
     onlyFields(j, {"action", "operation", "times"}, where);
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::Mask;
-    try {
-        event.maskOperation = maskOperationFromName(textOr(j, "operation", "", where));
-    } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what());
-    }
+    event.maskOperation = namedValue(j, "operation", "", where, maskOperationFromName);
     const double times = numberOr(j, "times", 1.0, where);
     if (!(times >= 1.0 && times <= 1000.0) || times != std::floor(times))
         throw InputError(where + ": field 'times' must be a whole number from 1 to 1000 (got " + j["times"].dump() +
@@ -193,11 +198,7 @@ ScriptEvent parseCutEvent(const json& j, const std::string& where)
     onlyFields(j, {"action", "mode", "view", "perspective", "polygon", "near", "far", "symmetry"}, where);
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::Cut;
-    try {
-        event.prismMode = prismModeFromName(textOr(j, "mode", "cut", where));
-    } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what());
-    }
+    event.prismMode = namedValue(j, "mode", "cut", where, prismModeFromName);
     event.prism = parsePrism(j, where);
     return event;
 }
@@ -207,11 +208,7 @@ ScriptEvent parseMaskSelection(const json& j, const std::string& where)
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::MaskSelection;
     MaskSelection& selection = event.maskSelection;
-    try {
-        selection.kind = maskSelectionFromName(textOr(j, "select", "", where));
-    } catch (const InputError& e) {
-        throw InputError(where + ": " + e.what());
-    }
+    selection.kind = namedValue(j, "select", "", where, maskSelectionFromName);
     switch (selection.kind) {
     case MaskSelectionKind::Prism:
         onlyFields(j, {"action", "select", "erase", "view", "perspective", "polygon", "near", "far", "symmetry"},

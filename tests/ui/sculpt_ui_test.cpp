@@ -48,6 +48,15 @@ CommandResult play(const TempDir& dir, const UiEvents& events, const std::string
 
 std::string checksumOfFile(const fs::path& path) { return formatChecksum(gridChecksum(readFieldImage(path).grid())); }
 
+/// `sculpt apply` of the window's stroke log (strokes.json) on `start` writes the grid the window
+/// reported.
+void expectApplyGives(const TempDir& dir, const std::string& start, const std::string& checksum)
+{
+    const CommandResult apply = runSculpt("apply " + start + " strokes.json -o applied.vdb", dir.path().string());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), checksum);
+}
+
 TEST(SculptUi, TheOpeningViewShowsTheClayBall)
 {
     TempDir dir;
@@ -581,9 +590,7 @@ TEST(SculptUi, LassoAndLineCutsAreOneUndoStepEachAndReplayWithSculptApply)
     EXPECT_EQ(reports["redone"]["checksum"], reports["lassoed"]["checksum"]);
     EXPECT_EQ(reports["lined"]["undo"], 2);
     EXPECT_LT(reports["lined"]["volume"].get<double>(), reports["lassoed"]["volume"].get<double>());
-    const CommandResult apply = runSculpt("apply ball.vdb strokes.json -o applied.vdb", dir.path().string());
-    ASSERT_EQ(apply.exitCode, 0) << apply.err;
-    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), reports["lined"]["checksum"]);
+    expectApplyGives(dir, "ball.vdb", reports["lined"]["checksum"]);
 }
 
 TEST(SculptUi, ABoxMaskAndADrainHoleDrilledAtThePointerAreOneUndoStepEachAndReplayWithSculptApply)
@@ -610,9 +617,7 @@ TEST(SculptUi, ABoxMaskAndADrainHoleDrilledAtThePointerAreOneUndoStepEachAndRepl
     EXPECT_EQ(reports["drilled"]["shells"], 1) << "the hole joins the hollow to the outside";
     EXPECT_EQ(reports["undone"]["checksum"], reports["masked"]["checksum"]);
     EXPECT_EQ(reports["redone"]["checksum"], reports["drilled"]["checksum"]);
-    const CommandResult apply = runSculpt("apply shell.vdb strokes.json -o applied.vdb", dir.path());
-    ASSERT_EQ(apply.exitCode, 0) << apply.err;
-    EXPECT_EQ(checksumOfFile(dir / "applied.vdb"), reports["drilled"]["checksum"]);
+    expectApplyGives(dir, "shell.vdb", reports["drilled"]["checksum"]);
 }
 
 TEST(SculptUi, FiltersLandAsOneUndoStepEachWithTheGridTheCommandLineWrites)

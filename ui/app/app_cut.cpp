@@ -42,7 +42,8 @@ void SculptApp::finishCut()
         MaskSelection selection;
         selection.prism = *prism;
         selection.erase = ctrl;
-        return selectMask(selection, std::string(ctrl ? "unmask" : "mask") + slab);
+        const char* shape = mCut.shape() == CutGesture::Shape::Box ? " box" : " lasso";
+        return selectMask(selection, std::string(ctrl ? "unmask" : "mask") + shape + slab);
     }
     ScriptEvent event;
     event.kind = ScriptEvent::Kind::Cut;

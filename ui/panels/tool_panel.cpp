@@ -48,10 +48,11 @@ void toolPalette(SculptApp& app)
         const Gesture& g = kGestures[i];
         const bool current = app.cutTool() == g.shape && app.gestureMasks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(commandRow(g.command).label, ImVec2(68, 0))) app.execute(g.command);
+        // Three cuts to a row, the two masks (longer names) on one of their own.
+        if (ImGui::Button(commandRow(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
         if (current) ImGui::PopStyleColor();
         commandTooltip(app, g.command);
-        if (i % 3 != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();
+        if (i != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();
     }
     if (app.cutTool()) {
         ImGui::PushItemWidth(130);

@@ -14,6 +14,8 @@
 #include <gtest/gtest.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 
+#include <random>
+
 namespace sculpt {
 namespace {
 
@@ -229,6 +231,43 @@ TEST(PrismCut, AFillSlabAddsItsBoxAndAPerspectivePyramidCutsWhatTheEyeSees)
     EXPECT_GT(removed, 0.8 * 10.0 * 10.0 * 16.0);
     EXPECT_LT(removed, 10.0 * 10.0 * 20.0);
     EXPECT_THROW(applyPrism(ball, frontSquare(-1, -1, 1, 1), PrismMode::Fill), InputError) << "a fill needs a depth";
+}
+
+TEST(PrismCut, TheBinnedDistanceIsEveryEdgesUnderItsCapAndHasItsSignBeyond)
+{
+    // A star-shaped lasso crossing itself (a pentagram: even-odd leaves its centre outside), seen
+    // in parallel and in perspective, mirrored across x.
+    ViewPrism prism = frontSquare(0, 0, 1, 1);
+    prism.polygon.clear();
+    for (int i = 0; i < 5; ++i) {
+        const double a = 2.0 * M_PI * (2 * i) / 5.0;
+        prism.polygon.emplace_back(3.0 + 12.0 * std::cos(a), 12.0 * std::sin(a));
+    }
+    prism.mirror = {true, false, false};
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> coordinate(-20.0, 20.0);
+    const openvdb::BBoxd box(Vec3d(-20.0), Vec3d(20.0));
+    for (const bool perspective : {false, true}) {
+        ViewPrism seen = prism;
+        seen.perspective = perspective;
+        if (perspective)
+            for (openvdb::Vec2d& p : seen.polygon) p *= 1.0 / 100.0;  // tangents at depth 100
+        const double cap = 1.5;
+        const PrismDistance binned(seen, cap, box);
+        std::size_t near = 0;
+        for (int i = 0; i < 20000; ++i) {
+            const Vec3d p(coordinate(random), coordinate(random), coordinate(random));
+            const double exact = seen.distance(p), fast = binned(p);
+            if (std::abs(exact) < cap) {
+                EXPECT_EQ(fast, exact) << p;
+                ++near;
+            } else {
+                EXPECT_GE(std::abs(fast), cap - 1e-12) << p;
+                EXPECT_EQ(fast < 0.0, exact < 0.0) << p;
+            }
+        }
+        EXPECT_GT(near, 1000u);
+    }
 }
 
 TEST(WallThickness, APlateReadsItsThicknessAndOnlyItsThinFinIsFlagged)
