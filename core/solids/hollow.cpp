@@ -39,21 +39,11 @@ void validate(const HollowOptions& o, double voxelSize)
                          Remedy::CoarserVoxelSize);
 }
 
-/// The level set at `iso` of `grid` (whose band reaches it), a narrow band of the field's width
-/// grown outwards by `extraOutsideWorld`.
-openvdb::FloatGrid::Ptr levelSetAt(const openvdb::FloatGrid& grid, double iso, double halfWidthVoxels,
-                                   double extraOutsideWorld = 0.0)
+/// The level set at `iso` of `grid` (whose band reaches it), with a band `outsideVoxels` out and
+/// `insideVoxels` in: OpenVDB's levelSetRebuild (meshes the iso-surface, voxelizes it again).
+openvdb::FloatGrid::Ptr rebuiltAt(const openvdb::FloatGrid& grid, double iso, double outsideVoxels, double insideVoxels)
 {
-    const double h = grid.transform().voxelSize()[0];
-    return openvdb::tools::levelSetRebuild(grid, float(iso), float(halfWidthVoxels + extraOutsideWorld / h),
-                                           float(halfWidthVoxels));
-}
-
-/// The surface's distance field, `insideWorld` deep and `outsideWorld` out beyond the band.
-openvdb::FloatGrid::Ptr widened(const FieldImage& field, double insideWorld, double outsideWorld)
-{
-    const double h = field.voxelSize(), w = field.halfWidthVoxels();
-    return openvdb::tools::levelSetRebuild(field.grid(), 0.0f, float(w + outsideWorld / h), float(w + insideWorld / h));
+    return openvdb::tools::levelSetRebuild(grid, float(iso), float(outsideVoxels), float(insideVoxels));
 }
 
 /// The lowest point along `up` of each cavity: each connected part of the cavity's mesh (a part
@@ -101,12 +91,15 @@ HollowResult hollow(const FieldImage& field, const HollowOptions& o, const openv
     const bool inside = o.side == ShellSide::Inside, outside = o.side == ShellSide::Outside;
     const double inner = inside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;   // cavity depth
     const double outer = outside ? t : o.side == ShellSide::Medial ? t / 2 : 0.0;  // outer wall's rise
-    const openvdb::FloatGrid::Ptr wide = widened(field, inner + c + field.voxelSize(), outer + field.voxelSize());
+    const double h = field.voxelSize();
+    // The surface's distances behind both walls (and a voxel more), then each wall as a band.
+    const openvdb::FloatGrid::Ptr wide = rebuiltAt(field.grid(), 0.0, w + (outer + h) / h, w + (inner + c + h) / h);
     report(progress, 0.4);
-    openvdb::FloatGrid::Ptr cavity = inner > 0.0 ? levelSetAt(*wide, -(inner + c), w, c) : field.grid().deepCopy();
-    if (c > 0.0 && inner > 0.0) cavity = levelSetAt(*cavity, c, w);
+    openvdb::FloatGrid::Ptr cavity =
+        inner > 0.0 ? rebuiltAt(*wide, -(inner + c), w + c / h, w) : field.grid().deepCopy();
+    if (c > 0.0 && inner > 0.0) cavity = rebuiltAt(*cavity, c, w, w);
     report(progress, 0.7);
-    openvdb::FloatGrid::Ptr shell = outer > 0.0 ? levelSetAt(*wide, outer, w) : field.grid().deepCopy();
+    openvdb::FloatGrid::Ptr shell = outer > 0.0 ? rebuiltAt(*wide, outer, w, w) : field.grid().deepCopy();
     const std::vector<openvdb::Vec3d> bottoms = bottomsOf(cavity, upward);
     combineWhole(*shell, *cavity, CsgOperation::Difference);
     shell->setName(field.grid().getName());

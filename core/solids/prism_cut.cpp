@@ -14,22 +14,38 @@ namespace {
 
 constexpr EnumNames<PrismMode, 2> kModes{{{PrismMode::Cut, "cut"}, {PrismMode::Fill, "fill"}}};
 
-/// Signed distance from q to the closed polygon (negative inside, by the even-odd rule). The
-/// nearest edge is found by squared distance: one square root per point, not per edge (this runs
-/// for every voxel of a cut's band).
+/// Squared distance from q to the segment from a to b.
+double segmentDistance2(const openvdb::Vec2d& a, const openvdb::Vec2d& b, const openvdb::Vec2d& q)
+{
+    const openvdb::Vec2d ab = b - a, aq = q - a;
+    const double t = std::clamp(aq.dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
+    return (aq - ab * t).lengthSqr();
+}
+
+/// Whether the segment from a to b crosses the ray from q along +x (the even-odd rule's count).
+bool crossesRay(const openvdb::Vec2d& a, const openvdb::Vec2d& b, const openvdb::Vec2d& q)
+{
+    return (a.y() > q.y()) != (b.y() > q.y()) && q.x() < a.x() + (q.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x());
+}
+
+/// Signed distance from q to the closed polygon (negative inside, by the even-odd rule), every
+/// edge read. The nearest edge is found by squared distance: one square root per point.
 double polygonDistance(const std::vector<openvdb::Vec2d>& polygon, const openvdb::Vec2d& q)
 {
     double nearest2 = std::numeric_limits<double>::infinity();
     bool inside = false;
     for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-        const openvdb::Vec2d a = polygon[j], b = polygon[i], ab = b - a, aq = q - a;
-        const double t = std::clamp(aq.dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
-        nearest2 = std::min(nearest2, (aq - ab * t).lengthSqr());
-        if ((a.y() > q.y()) != (b.y() > q.y()) && q.x() < a.x() + (q.y() - a.y()) / (b.y() - a.y()) * ab.x())
-            inside = !inside;
+        nearest2 = std::min(nearest2, segmentDistance2(polygon[j], polygon[i], q));
+        inside ^= crossesRay(polygon[j], polygon[i], q);
     }
     const double nearest = std::sqrt(nearest2);
     return inside ? -nearest : nearest;
+}
+
+/// `p` mirrored across the planes x = 0, y = 0, z = 0 that bits 0, 1, 2 of `m` pick.
+openvdb::Vec3d mirrored(const openvdb::Vec3d& p, int m)
+{
+    return {m & 1 ? -p.x() : p.x(), m & 2 ? -p.y() : p.y(), m & 4 ? -p.z() : p.z()};
 }
 
 /// The prism's distance at `world` (mirrors, slab, perspective), its polygon's read by
@@ -40,9 +56,7 @@ double sweptDistance(const ViewPrism& prism, const openvdb::Vec3d& world, const 
     double best = std::numeric_limits<double>::infinity();
     for (int m = 0; m < 8; ++m) {
         if (((m & 1) && !prism.mirror[0]) || ((m & 2) && !prism.mirror[1]) || ((m & 4) && !prism.mirror[2])) continue;
-        const openvdb::Vec3d p(m & 1 ? -world.x() : world.x(), m & 2 ? -world.y() : world.y(),
-                               m & 4 ? -world.z() : world.z());
-        const openvdb::Vec3d v = prism.viewFromWorld.transform(p);
+        const openvdb::Vec3d v = prism.viewFromWorld.transform(mirrored(world, m));
         const double depth = -v.z();
         const double slab = std::max(prism.nearDepth - depth, depth - prism.farDepth);
         double side;
@@ -65,7 +79,7 @@ double sweptDistance(const ViewPrism& prism, const openvdb::Vec3d& world, const 
 /// polygon reaches far beyond what is cut.
 class EdgeBins {
 public:
-    EdgeBins(const std::vector<openvdb::Vec2d>& polygon, double cell) : mPolygon(polygon)
+    EdgeBins(const std::vector<openvdb::Vec2d>& polygon, double cell)
     {
         openvdb::Vec2d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
         for (const openvdb::Vec2d& p : polygon) lo = minComponent(lo, p), hi = maxComponent(hi, p);
@@ -75,7 +89,10 @@ public:
         mRows = int((hi.y() - lo.y()) / mCell) + 1;
         mRowEdges.resize(std::size_t(mRows));
         mCellEdges.resize(std::size_t(mRows) * std::size_t(mColumns));
-        for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) add(polygon[j], polygon[i], j);
+        for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+            mEdges.emplace_back(polygon[j], polygon[i]);
+            add(polygon[j], polygon[i], mEdges.size() - 1);
+        }
     }
 
     /// The signed distance from q to the polygon where it is under `cap`; else at least `cap`, of
@@ -85,8 +102,8 @@ public:
         const bool inside = isInside(q);
         const int c0 = column(q.x() - cap), c1 = column(q.x() + cap), r0 = row(q.y() - cap), r1 = row(q.y() + cap);
         double nearest2 = cap * cap;
-        if (double(c1 - c0 + 1) * double(r1 - r0 + 1) > double(mPolygon.size())) {
-            for (std::size_t e = 0; e < mPolygon.size(); ++e) nearest2 = std::min(nearest2, edgeDistance2(e, q));
+        if (double(c1 - c0 + 1) * double(r1 - r0 + 1) > double(mEdges.size())) {
+            for (std::size_t e = 0; e < mEdges.size(); ++e) nearest2 = std::min(nearest2, edgeDistance2(e, q));
         } else {
             for (int r = std::max(r0, 0); r <= std::min(r1, mRows - 1); ++r)
                 for (int c = std::max(c0, 0); c <= std::min(c1, mColumns - 1); ++c)
@@ -106,18 +123,9 @@ private:
     }
     int row(double y) const { return int(std::clamp(std::floor((y - mOrigin.y()) / mCell), -1.0, double(mRows))); }
 
-    /// Edge e runs from vertex e to the next.
-    std::pair<openvdb::Vec2d, openvdb::Vec2d> edge(std::size_t e) const
-    {
-        return {mPolygon[e], mPolygon[(e + 1) % mPolygon.size()]};
-    }
-
     double edgeDistance2(std::size_t e, const openvdb::Vec2d& q) const
     {
-        const auto [a, b] = edge(e);
-        const openvdb::Vec2d ab = b - a, aq = q - a;
-        const double t = std::clamp(aq.dot(ab) / std::max(ab.lengthSqr(), 1e-300), 0.0, 1.0);
-        return (aq - ab * t).lengthSqr();
+        return segmentDistance2(mEdges[e].first, mEdges[e].second, q);
     }
 
     bool isInside(const openvdb::Vec2d& q) const
@@ -125,12 +133,8 @@ private:
         const int r = row(q.y());
         if (r < 0 || r >= mRows) return false;
         bool inside = false;
-        for (const std::uint32_t e : mRowEdges[std::size_t(r)]) {
-            const auto [a, b] = edge(e);
-            if ((a.y() > q.y()) != (b.y() > q.y()) &&
-                q.x() < a.x() + (q.y() - a.y()) / (b.y() - a.y()) * (b.x() - a.x()))
-                inside = !inside;
-        }
+        for (const std::uint32_t e : mRowEdges[std::size_t(r)])
+            inside ^= crossesRay(mEdges[e].first, mEdges[e].second, q);
         return inside;
     }
 
@@ -164,7 +168,7 @@ private:
         return {std::max(a.x(), b.x()), std::max(a.y(), b.y())};
     }
 
-    std::vector<openvdb::Vec2d> mPolygon;
+    std::vector<std::pair<openvdb::Vec2d, openvdb::Vec2d>> mEdges;
     openvdb::Vec2d mOrigin{0.0};
     double mCell = 1.0;
     int mColumns = 1, mRows = 1;
@@ -215,11 +219,7 @@ PrismDistance::PrismDistance(const ViewPrism& prism, double capWorld, const open
     for (int corner = 0; corner < 8; ++corner) {
         const openvdb::Vec3d p(corner & 1 ? box.max().x() : box.min().x(), corner & 2 ? box.max().y() : box.min().y(),
                                corner & 4 ? box.max().z() : box.min().z());
-        for (int m = 0; m < 8; ++m)
-            farthest = std::max(farthest, -prism.viewFromWorld
-                                               .transform(openvdb::Vec3d(m & 1 ? -p.x() : p.x(), m & 2 ? -p.y() : p.y(),
-                                                                         m & 4 ? -p.z() : p.z()))
-                                               .z());
+        for (int m = 0; m < 8; ++m) farthest = std::max(farthest, -prism.viewFromWorld.transform(mirrored(p, m)).z());
     }
     const double cell = prism.perspective ? capWorld / farthest : capWorld;
     mBins = std::make_shared<const EdgeBins>(prism.polygon, cell);
