@@ -1,7 +1,7 @@
 #include "core/tracking/mesh_tracker.h"
 
 #include "core/mesh/incremental_mesher.h"
-#include "core/tracking/surface_projection.h"
+#include "core/tracking/edge_hold.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -35,13 +35,13 @@ void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
     mMemory = {};
     for (int i = 0; i < mOptions.seedSteps; ++i)
         advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, mOptions.seedLongestEdges * mEdge, true},
-                relaxation(mOptions.gain, mOptions.conjugateGradientSteps));
+                relaxation(mOptions.gain, mOptions.conjugateGradientSteps), false);
 }
 
 TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement)
 {
     TrackingStep report =
-        advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps));
+        advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps), true);
     const TriangleMesh mc = meshLevelSet(field);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
@@ -49,10 +49,10 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
     if (report.surgery.kind != SurgeryKind::None) {
         // The cut's new vertices and long edges: onto the surface and into [e, 2e]. Its fans are
         // far from the rest shape, where the co-rotational linearisation overshoots and folds
-        // them: they relax a gentler fraction of the way.
+        // them: they relax a gentler fraction of the way, their edges left to the remesher.
         const RelaxOptions settling = relaxation(mOptions.settleGain, mOptions.settleConjugateGradientSteps);
         for (int i = 0; i < kSettleSteps; ++i) {
-            const TrackingStep settle = advance(field, {}, {mEdge}, settling);
+            const TrackingStep settle = advance(field, {}, {mEdge}, settling, false);
             report.splits += settle.splits;
             report.collapses += settle.collapses;
             report.quasiCritical = settle.quasiCritical;
@@ -68,7 +68,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
 }
 
 TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<Vec3d(const Vec3d&)>& displacement,
-                                  const RemeshLimits& limits, const RelaxOptions& relaxation)
+                                  const RemeshLimits& limits, const RelaxOptions& relaxation, bool holding)
 {
     if (displacement)
         for (Vec3d& p : mMesh.positions) p += displacement(p);
@@ -80,11 +80,13 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     // Relaxed before it is judged, a stretch spreads over the triangles around it instead of
     // splitting the one edge it reached first (a third fewer edge changes, sphere -> box).
     relax(field, relaxation);
+    if (holding) holdEdges(field);
     const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
     project(field);
     relax(field, relaxation);
+    if (holding) holdEdges(field);
     report.quasiCritical = flagged();
     return report;
 }
@@ -108,13 +110,27 @@ void MeshTracker::project(const FieldImage& field)
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mMesh.positions.size(), 1024),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                           const FieldProbe probe(field.grid());
-                          for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                              const Projection p = projectOntoSurface(probe, mMesh.positions[v]);
-                              mMesh.positions[v] = p.position;
-                              mQuasiCritical[v] = p.quasiCritical;
-                              if (p.gradient.length() > 1e-12) mNormals[v] = p.gradient.unit();
-                          }
+                          for (std::size_t v = range.begin(); v != range.end(); ++v) projectVertex(probe, v);
                       });
+}
+
+void MeshTracker::projectVertex(const FieldProbe& probe, std::size_t v)
+{
+    const Projection p = projectOntoSurface(probe, mMesh.positions[v]);
+    mMesh.positions[v] = p.position;
+    mQuasiCritical[v] = p.quasiCritical;
+    if (p.gradient.length() > 1e-12) mNormals[v] = p.gradient.unit();
+}
+
+void MeshTracker::holdEdges(const FieldImage& field)
+{
+    EdgeHold hold(mMesh, mNormals, mQuasiCritical, mMemory, mEdge);
+    const FieldProbe probe(field.grid());
+    for (int sweep = 0; sweep < EdgeHold::kSweeps; ++sweep) {
+        const std::vector<std::uint32_t> moved = hold.sweep();
+        if (moved.empty()) return;
+        for (const std::uint32_t v : moved) projectVertex(probe, v);
+    }
 }
 
 std::vector<std::uint8_t> MeshTracker::invertedTriangles() const

@@ -6,8 +6,9 @@
 /// Seeded from the welded marching-cubes mesh and relaxed on the field, it then follows the
 /// field step by step: each step moves the vertices by any known displacement, projects them
 /// back onto phi = 0 (surface_projection.h), unfolds inverted triangles, slides the vertices
-/// along the surface towards equilateral triangles (corotated_triangles.h), changes edges outside
-/// [e, 2e] locally (edge_remesher.h) and slides and projects again. Where the surface's topology
+/// along the surface towards equilateral triangles (corotated_triangles.h), slides edges leaving
+/// [e, 2e] back where the triangles around them have room (edge_hold.h), changes the others
+/// locally (edge_remesher.h) and slides and projects again. Where the surface's topology
 /// changes the mesh is cut and closed there (topology_surgery.h) or seeded again. Vertices keep their ids while they
 /// exist; connectivity changes only where an edge leaves its range, so a sequence that only
 /// moves keeps its vertex count and triangles. Call step() after every evolution step, not only
@@ -16,6 +17,7 @@
 #include "core/field/field_image.h"
 #include "core/tracking/corotated_triangles.h"
 #include "core/tracking/edge_remesher.h"
+#include "core/tracking/surface_projection.h"
 #include "core/tracking/topology_surgery.h"
 
 #include <functional>
@@ -92,9 +94,11 @@ public:
 private:
     /// Seeds from the marching-cubes mesh `mc` of `field` (ids after every id used) and relaxes it.
     void seed(const FieldImage& field, const TriangleMesh& mc);
-    /// The step without the topology check.
+    /// The step without the topology check; `holding`: edges leaving [e, 2e] are slid back
+    /// where there is room (edge_hold.h) before the remesher sees them (not while seeding, whose
+    /// band is another, nor while a cut settles).
     TrackingStep advance(const FieldImage& field, const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& move,
-                         const RemeshLimits& limits, const RelaxOptions& relaxation);
+                         const RemeshLimits& limits, const RelaxOptions& relaxation, bool holding);
     /// The triangles at rest at restEdges e, relaxed with this gain and these steps.
     RelaxOptions relaxation(double gain, int conjugateGradientSteps) const;
     /// One quasi-static step of the triangles along the surface, then back onto it.
@@ -102,6 +106,9 @@ private:
     /// Projects every vertex (each judged afresh: a quasi-critical one stays where it is),
     /// keeping grad phi's direction per vertex.
     void project(const FieldImage& field);
+    void projectVertex(const FieldProbe& probe, std::size_t v);
+    /// Sweeps of EdgeHold, the moved vertices projected after each.
+    void holdEdges(const FieldImage& field);
     std::vector<std::uint8_t> invertedTriangles() const;
     /// Moves the vertex of each inverted triangle nearest its opposite edge across that edge.
     void unfold(const std::vector<std::uint8_t>& inverted);
