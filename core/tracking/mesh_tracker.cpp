@@ -26,12 +26,22 @@ Vec3d normalOf(const TrackedMesh& mesh, const std::array<std::uint32_t, 3>& t)
 MeshTracker::MeshTracker(const FieldImage& field, const TrackerOptions& options)
     : mOptions(options), mEdge(options.edgeVoxels * field.voxelSize())
 {
-    seed(field, meshLevelSet(field));
+    seed(field, resolvableSurface(field));
 }
 
-void MeshTracker::seed(const FieldImage& field, const TriangleMesh& mc)
+TrackedMesh MeshTracker::resolvableSurface(const FieldImage& field) const
 {
-    mMesh = TrackedMesh::of(mc, mMesh.nextId);
+    TrackedMesh surface = TrackedMesh::of(meshLevelSet(field));
+    surface.dropShellsUnder(kResolvableEdges * mEdge);
+    return surface;
+}
+
+void MeshTracker::seed(const FieldImage& field, const TrackedMesh& surface)
+{
+    const std::uint32_t firstId = mMesh.nextId;
+    mMesh = surface;
+    for (std::uint32_t& id : mMesh.ids) id += firstId;
+    mMesh.nextId += firstId;
     mMemory = {};
     for (int i = 0; i < mOptions.seedSteps; ++i)
         advance(field, {}, {mEdge, mOptions.seedShortestEdges * mEdge, mOptions.seedLongestEdges * mEdge, true},
@@ -42,9 +52,16 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
 {
     TrackingStep report =
         advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps), true);
-    const TriangleMesh mc = meshLevelSet(field);
+    const TrackedMesh mc = resolvableSurface(field);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
+    // A part that shrank under the resolution has left the ground truth: it leaves the mesh too.
+    report.vanishedShells = mMesh.dropShellsUnder(kResolvableEdges * mEdge);
+    if (report.vanishedShells > 0) {
+        project(field);  // the per-vertex normals and flags, renumbered
+        report.quasiCritical = flagged();
+        if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
+    }
     report.surgery = operateOnTopology(mMesh, mNormals, mQuasiCritical, field, truth);
     if (report.surgery.kind != SurgeryKind::None) {
         // The cut's new vertices and long edges: onto the surface and into [e, 2e]. Its fans are

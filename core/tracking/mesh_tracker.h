@@ -66,23 +66,35 @@ struct TrackingStep {
     /// The surface's topology changed where surgery could not follow: the mesh was seeded again
     /// from the marching-cubes mesh (new vertex ids, stage 1), a new segment begins.
     bool reseeded = false;
+    /// Shells that shrank under MeshTracker::kResolvableEdges e across, dropped with their
+    /// vertices (the rest keep their ids); a new segment begins.
+    std::size_t vanishedShells = 0;
 };
 
 class MeshTracker {
 public:
     /// Steps on the same field after a surgery, before the step returns.
     static constexpr int kSettleSteps = 4;
+    /// Shells under this many e across on every side are below the mesh's resolution: a closed
+    /// mesh with edges of at least e holds only a handful of triangles there. The marching-cubes
+    /// specks that parts thinner than a voxel leave as they move (one voxel across, eight
+    /// triangles, appearing and vanishing from step to step) are neither seeded nor counted in
+    /// the ground truth, and a tracked shell under it is dropped once the truth has lost it.
+    static constexpr double kResolvableEdges = 2.0;
 
-    /// Seeds from `field`'s welded marching-cubes mesh, relaxed options.seedSteps steps on it.
+    /// Seeds from `field`'s welded marching-cubes mesh (its resolvable shells), relaxed
+    /// options.seedSteps steps on it.
     explicit MeshTracker(const FieldImage& field, const TrackerOptions& options = {});
 
     /// One step on `field` as it is now. `displacement`, where given, moves each vertex first
-    /// (a known velocity times the step: a rigid move, a grab). Then the marching-cubes mesh's
-    /// Euler characteristic and shell count, the ground truth, are compared with the tracked
-    /// mesh's: when they differ, the mesh is cut and closed where they do (topology_surgery.h,
-    /// then settled kSettleSteps steps), or, where that fails, seeded again. Quasi-critical
-    /// points alone change nothing: they stay where they were until the field shows them a
-    /// surface again or a topology event cuts them away. Deterministic: the same mesh whatever the thread count.
+    /// (a known velocity times the step: a rigid move, a grab). Then the Euler characteristic and
+    /// shell count of the marching-cubes mesh's resolvable shells, the ground truth, are compared
+    /// with the tracked mesh's: when they differ, tracked shells under the resolution are dropped
+    /// first (a part shrunk away), then, if they still differ, the mesh is cut and closed where
+    /// they do (topology_surgery.h, then settled kSettleSteps steps), or, where that fails, seeded
+    /// again. Quasi-critical points alone change nothing: they stay where they were until the
+    /// field shows them a surface again or a topology event cuts them away. Deterministic: the
+    /// same mesh whatever the thread count.
     /// Cost: the projections and the relaxation are O(vertices); the check meshes the field.
     TrackingStep step(const FieldImage& field,
                       const std::function<openvdb::Vec3d(const openvdb::Vec3d&)>& displacement = {});
@@ -92,8 +104,12 @@ public:
     double edgeLength() const { return mEdge; }
 
 private:
-    /// Seeds from the marching-cubes mesh `mc` of `field` (ids after every id used) and relaxes it.
-    void seed(const FieldImage& field, const TriangleMesh& mc);
+    /// The welded marching-cubes mesh of `field` without the shells under kResolvableEdges e,
+    /// ids from 0: the ground truth of the topology and what a seed starts from.
+    TrackedMesh resolvableSurface(const FieldImage& field) const;
+    /// Seeds from `surface` (resolvableSurface of `field`; its ids moved after every id used)
+    /// and relaxes it.
+    void seed(const FieldImage& field, const TrackedMesh& surface);
     /// The step without the topology check; `holding`: edges leaving [e, 2e] are slid back
     /// where there is room (edge_hold.h) before the remesher sees them (not while seeding, whose
     /// band is another, nor while a cut settles).

@@ -49,6 +49,32 @@ void TrackedMesh::dropUnusedVertices()
         for (std::uint32_t& v : t) v = index[v];
 }
 
+std::size_t TrackedMesh::dropShellsUnder(double extent)
+{
+    UnionFind shells(positions.size());
+    for (const auto& t : triangles) {
+        shells.join(t[0], t[1]);
+        shells.join(t[1], t[2]);
+    }
+    std::vector<openvdb::BBoxd> box(positions.size());  // per shell, at its root
+    for (const auto& t : triangles)
+        for (const std::uint32_t v : t) box[shells.find(v)].expand(positions[v]);
+    std::vector<std::uint8_t> under(positions.size(), 0);  // per shell, at its root
+    std::size_t dropped = 0;
+    for (std::uint32_t v = 0; v < positions.size(); ++v) {
+        if (shells.find(v) != v || box[v].empty()) continue;
+        const openvdb::Vec3d sides = box[v].extents();
+        under[v] = std::max({sides.x(), sides.y(), sides.z()}) < extent;
+        dropped += under[v];
+    }
+    if (dropped == 0) return 0;
+    triangles.erase(std::remove_if(triangles.begin(), triangles.end(),
+                                   [&](const std::array<std::uint32_t, 3>& t) { return under[shells.find(t[0])]; }),
+                    triangles.end());
+    dropUnusedVertices();
+    return dropped;
+}
+
 namespace {
 
 template <typename Triangles>

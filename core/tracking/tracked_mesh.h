@@ -28,6 +28,9 @@ struct TrackedMesh {
     TriangleMesh triangleMesh() const;
     /// Drops the vertices no triangle uses, renumbering the rest in order (ids stay with them).
     void dropUnusedVertices();
+    /// Drops the shells (triangles joined by shared vertices) whose bounding box is under
+    /// `extent` on every side, and their vertices; returns how many shells it dropped.
+    std::size_t dropShellsUnder(double extent);
 };
 
 /// An undirected edge between two vertex ids, as one key (smaller id in the high half).

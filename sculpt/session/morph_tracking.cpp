@@ -11,6 +11,7 @@ void TrackingTally::add(const TrackingStep& s)
     quasiCritical += s.quasiCritical.size();
     surgeries += s.surgery.kind != SurgeryKind::None;
     reseeds += s.reseeded;
+    vanished += s.vanishedShells;
 }
 
 void MorphTracking::frame(const FieldImage& field)

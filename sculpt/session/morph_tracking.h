@@ -15,6 +15,7 @@ namespace sculpt {
 struct TrackingTally {
     std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0;
     std::size_t surgeries = 0, reseeds = 0;  ///< topology events cut and closed (stage 2), seeded again (stage 1)
+    std::size_t vanished = 0;                ///< shells shrunk under the tracked mesh's resolution, dropped
     void add(const TrackingStep& s);
 };
 

@@ -381,6 +381,72 @@ TEST(MeshTracker, FollowsTwoBallsPartingByCappingBothSidesOfTheNeck)
     expectSurgery(run, SurgeryKind::Cap);
 }
 
+/// A big ball of radius 6 at (-8, 0, 0) and a small one of radius `small` at (6, 0, 0) (none
+/// when negative).
+FieldImage bigAndSmallBall(double small, double h)
+{
+    AnalyticSdf sdf;
+    const Vec3d big(-8.0, 0.0, 0.0), little(6.0, 0.0, 0.0);
+    sdf.distance = [=](const Vec3d& p) { return std::min((p - big).length() - 6.0, (p - little).length() - small); };
+    sdf.bounds = openvdb::BBoxd(Vec3d(-14.0, -6.0, -6.0), Vec3d(6.0 + small, 6.0, 6.0));
+    sdf.surfaceArea = 4.0 * M_PI * (36.0 + small * small);
+    sdf.description = "a big and a small ball";
+    return rasterizeSdf(sdf, h);
+}
+
+TEST(TrackedMesh, DropsTheShellsUnderAnExtentKeepingTheOthersAndTheirIds)
+{
+    const double h = 0.5;
+    TrackedMesh mesh = TrackedMesh::of(meshLevelSet(bigAndSmallBall(0.6, h)));
+    ASSERT_EQ(surfaceTopology(mesh.triangles, mesh.positions.size()).shells, 2u);
+    const TrackedMesh before = mesh;
+    EXPECT_EQ(mesh.dropShellsUnder(3.0 * h), 1u);
+    EXPECT_EQ((SurfaceTopology{2, 1}), surfaceTopology(mesh.triangles, mesh.positions.size()));
+    std::size_t bigBefore = 0;
+    for (const Vec3d& p : before.positions) bigBefore += p.x() < 0.0;
+    EXPECT_EQ(mesh.positions.size(), bigBefore);
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+        EXPECT_NEAR((mesh.positions[v] - Vec3d(-8.0, 0.0, 0.0)).length(), 6.0, h);
+        const auto was = std::find(before.ids.begin(), before.ids.end(), mesh.ids[v]);
+        ASSERT_NE(was, before.ids.end());
+        EXPECT_EQ(before.positions[std::size_t(was - before.ids.begin())], mesh.positions[v]);
+    }
+    EXPECT_EQ(mesh.dropShellsUnder(3.0 * h), 0u);
+}
+
+// A small ball shrinking away beside a big one, a tenth of a voxel a step: its tracked shell
+// is dropped once it is under the mesh's resolution (2e across), the marching-cubes speck it
+// leaves is not counted, and the big ball goes on with every vertex id: no seed again.
+TEST(MeshTracker, DropsASmallBallShrinkingAwayAndKeepsTheBigOnesIds)
+{
+    const double h = 0.5;
+    MeshTracker tracker(bigAndSmallBall(2.0, h));
+    const TrackedMesh first = tracker.mesh();
+    std::vector<std::uint32_t> bigIds;
+    for (std::size_t v = 0; v < first.positions.size(); ++v)
+        if (first.positions[v].x() < 0.0) bigIds.push_back(first.ids[v]);
+    std::size_t vanished = 0, reseeds = 0, surgeries = 0;
+    for (int k = 1; k <= 36; ++k) {
+        const FieldImage field = bigAndSmallBall(2.0 - 0.05 * k, h);
+        const TrackingStep s = tracker.step(field);
+        vanished += s.vanishedShells;
+        reseeds += s.reseeded;
+        surgeries += s.surgery.kind != SurgeryKind::None;
+        const TrackedMesh& mesh = tracker.mesh();
+        EXPECT_EQ(surfaceTopology(mesh.triangles, mesh.positions.size()).shells, vanished > 0 ? 1u : 2u);
+        EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold()) << "step " << k;
+    }
+    EXPECT_EQ(vanished, 1u);
+    EXPECT_EQ(reseeds, 0u);
+    EXPECT_EQ(surgeries, 0u);
+    const TrackedMesh& last = tracker.mesh();
+    std::vector<std::uint32_t> lastIds = last.ids;
+    std::sort(lastIds.begin(), lastIds.end());
+    std::sort(bigIds.begin(), bigIds.end());
+    EXPECT_EQ(lastIds, bigIds);
+    expectWellShaped(last, bigAndSmallBall(-1.0, h), tracker.edgeLength());  // the big ball alone
+}
+
 TEST(SurfaceProjection, BringsPointsNearASphereOntoItAndFlagsTheCentre)
 {
     const double r = 10.0, h = 0.5;
