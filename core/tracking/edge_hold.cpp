@@ -16,19 +16,11 @@ constexpr double kSmallestAngleDegrees = 20.0;
 
 EdgeHold::EdgeHold(TrackedMesh& mesh, const std::vector<Vec3d>& normals, const std::vector<std::uint8_t>& fixed,
                    const EdgeMemory& memory, double edge)
-    : mMesh(mesh), mNormals(normals), mFixed(fixed), mMemory(memory), mEdge(edge)
+    : mMesh(mesh), mNormals(normals), mFixed(fixed), mMemory(memory), mEdge(edge),
+      mStars(VertexStars::of(mesh.triangles, mesh.positions.size()))
 {
-    const std::size_t n = mesh.positions.size();
-    mStarStart.assign(n + 1, 0);
-    for (const auto& tri : mesh.triangles)
-        for (const std::uint32_t v : tri) ++mStarStart[v + 1];
-    for (std::size_t v = 0; v < n; ++v) mStarStart[v + 1] += mStarStart[v];
-    mStar.resize(mStarStart.back());
-    std::vector<std::uint32_t> fill(mStarStart.begin(), mStarStart.end() - 1);
-    for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t)
-        for (const std::uint32_t v : mesh.triangles[t]) mStar[fill[v]++] = t;
-    mWellShaped.resize(n);
-    for (std::uint32_t v = 0; v < n; ++v) mWellShaped[v] = wellShapedAround(v, mesh.positions[v]);
+    mWellShaped.resize(mesh.positions.size());
+    for (std::uint32_t v = 0; v < mWellShaped.size(); ++v) mWellShaped[v] = wellShapedAround(v, mesh.positions[v]);
 }
 
 std::vector<std::uint32_t> EdgeHold::sweep()
@@ -63,8 +55,8 @@ std::vector<std::uint32_t> EdgeHold::sweep()
 
 bool EdgeHold::wellShapedAround(std::uint32_t v, const Vec3d& at) const
 {
-    for (std::uint32_t i = mStarStart[v]; i < mStarStart[v + 1]; ++i) {
-        const auto& t = mMesh.triangles[mStar[i]];
+    for (std::uint32_t i = mStars.start[v]; i < mStars.start[v + 1]; ++i) {
+        const auto& t = mMesh.triangles[mStars.list[i]];
         Vec3d p[3];
         for (int k = 0; k < 3; ++k) p[k] = t[k] == v ? at : mMesh.positions[t[k]];
         if ((p[1] - p[0]).cross(p[2] - p[0]).dot(mNormals[v]) <= 0.0) return false;

@@ -51,8 +51,8 @@ private:
     const std::vector<std::uint8_t>& mFixed;
     const EdgeMemory& mMemory;
     const double mEdge;
-    std::vector<std::uint32_t> mStarStart, mStar;  ///< each vertex's triangles
-    std::vector<std::uint8_t> mWellShaped;         ///< per vertex, as the hold began
+    const VertexStars mStars;
+    std::vector<std::uint8_t> mWellShaped;  ///< per vertex, as the hold began
 };
 
 }  // namespace sculpt

@@ -198,25 +198,13 @@ private:
         return mCounts.collapses > before;
     }
 
-    /// Each vertex's triangles, alive ones, as offsets into one list.
-    void buildStar()
-    {
-        mStarStart.assign(mMesh.positions.size() + 1, 0);
-        for (std::size_t t = 0; t < mMesh.triangles.size(); ++t)
-            if (!mDeadTriangle[t])
-                for (const std::uint32_t v : mMesh.triangles[t]) ++mStarStart[v + 1];
-        for (std::size_t v = 0; v < mMesh.positions.size(); ++v) mStarStart[v + 1] += mStarStart[v];
-        mStar.assign(mStarStart.back(), 0);
-        std::vector<std::uint32_t> fill(mStarStart.begin(), mStarStart.end() - 1);
-        for (std::uint32_t t = 0; t < mMesh.triangles.size(); ++t)
-            if (!mDeadTriangle[t])
-                for (const std::uint32_t v : mMesh.triangles[t]) mStar[fill[v]++] = t;
-    }
+    /// Each vertex's alive triangles.
+    void buildStar() { mStars = VertexStars::of(mMesh.triangles, mMesh.positions.size(), &mDeadTriangle); }
     std::vector<std::uint32_t> star(std::uint32_t v) const
     {
         std::vector<std::uint32_t> list;
-        for (std::uint32_t i = mStarStart[v]; i < mStarStart[v + 1]; ++i)
-            if (!mDeadTriangle[mStar[i]]) list.push_back(mStar[i]);
+        for (std::uint32_t i = mStars.start[v]; i < mStars.start[v + 1]; ++i)
+            if (!mDeadTriangle[mStars.list[i]]) list.push_back(mStars.list[i]);
         return list;
     }
     std::vector<std::uint32_t> neighbours(std::uint32_t v) const
@@ -303,7 +291,7 @@ private:
     const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
     std::vector<std::uint8_t> mDeadTriangle;
-    std::vector<std::uint32_t> mStarStart, mStar;
+    VertexStars mStars;
     RemeshCounts mCounts;
 };
 

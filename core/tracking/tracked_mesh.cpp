@@ -49,6 +49,24 @@ void TrackedMesh::dropUnusedVertices()
         for (std::uint32_t& v : t) v = index[v];
 }
 
+VertexStars VertexStars::of(const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices,
+                            const std::vector<std::uint8_t>* skip)
+{
+    const auto kept = [&](std::size_t t) { return !skip || !(*skip)[t]; };
+    VertexStars stars;
+    stars.start.assign(vertices + 1, 0);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+        if (kept(t))
+            for (const std::uint32_t v : triangles[t]) ++stars.start[v + 1];
+    for (std::size_t v = 0; v < vertices; ++v) stars.start[v + 1] += stars.start[v];
+    stars.list.assign(stars.start.back(), 0);
+    std::vector<std::uint32_t> fill(stars.start.begin(), stars.start.end() - 1);
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+        if (kept(t))
+            for (const std::uint32_t v : triangles[t]) stars.list[fill[v]++] = t;
+    return stars;
+}
+
 std::size_t TrackedMesh::dropShellsUnder(double extent)
 {
     UnionFind shells(positions.size());

@@ -33,6 +33,16 @@ struct TrackedMesh {
     std::size_t dropShellsUnder(double extent);
 };
 
+/// Each vertex's triangles, as offsets into one list: vertex v's are list[start[v] .. start[v + 1]),
+/// in triangle order.
+struct VertexStars {
+    std::vector<std::uint32_t> start, list;
+
+    /// Over `triangles` of a mesh of `vertices` vertices, leaving out those `skip` marks (#F, when given).
+    static VertexStars of(const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices,
+                          const std::vector<std::uint8_t>* skip = nullptr);
+};
+
 /// An undirected edge between two vertex ids, as one key (smaller id in the high half).
 inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
 {
