@@ -21,8 +21,8 @@ struct Edge {
 class Remesher {
 public:
     Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
-             const RemeshLimits& limits)
-        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(limits.edge),
+             const std::vector<std::uint8_t>& pinned, const RemeshLimits& limits)
+        : mMesh(mesh), mMemory(memory), mInverted(inverted), mPinned(pinned), mE(limits.edge),
           mShortest(limits.shortest > 0.0 ? limits.shortest : limits.edge),
           mLongest(limits.longest > 0.0 ? limits.longest : 2.0 * limits.edge), mFlips(limits.flips)
     {
@@ -64,12 +64,14 @@ private:
         const auto it = mMemory.lengths.find(key(e.a, e.b));
         return it == mMemory.lengths.end() ? 0.0 : e.length - it->second;
     }
-    /// Changed at the last step, or already in this one.
+    /// Changed at the last step, or already in this one, or at a pinned vertex.
     bool frozen(const Edge& e) const
     {
         const std::uint64_t k = key(e.a, e.b);
-        return mMemory.frozen.count(k) > 0 || mFrozenNext.count(k) > 0;
+        return mMemory.frozen.count(k) > 0 || mFrozenNext.count(k) > 0 || pinned(e.a) || pinned(e.b);
     }
+    /// Vertices made by this pass come after the pinned list: never pinned.
+    bool pinned(std::uint32_t v) const { return v < mPinned.size() && mPinned[v]; }
 
     bool splitPass()
     {
@@ -226,6 +228,9 @@ private:
         std::vector<std::uint32_t> common;
         std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
         if (common.size() != 2) return false;  // the link condition: the result stays a 2-manifold
+        // Two ends of valence 3 are a tetrahedron, whose collapse passes the vertex test and
+        // leaves two triangles back to back.
+        if (na.size() == 3 && nb.size() == 3) return false;
         const Vec3d m = 0.5 * (mMesh.positions[a] + mMesh.positions[b]);
         for (const std::uint32_t v : {a, b}) {
             for (const std::uint32_t w : v == a ? na : nb)
@@ -287,6 +292,7 @@ private:
     TrackedMesh& mMesh;
     EdgeMemory& mMemory;
     std::vector<std::uint8_t> mInverted;
+    const std::vector<std::uint8_t>& mPinned;
     const double mE, mShortest, mLongest;
     const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
@@ -298,9 +304,9 @@ private:
 }  // namespace
 
 RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
-                       const RemeshLimits& limits)
+                       const std::vector<std::uint8_t>& pinned, const RemeshLimits& limits)
 {
-    return Remesher(mesh, memory, inverted, limits).run();
+    return Remesher(mesh, memory, inverted, pinned, limits).run();
 }
 
 }  // namespace sculpt

@@ -480,6 +480,81 @@ TEST(MeshTracker, DropsASmallBallShrinkingAwayAndKeepsTheBigOnesIds)
     expectWellShaped(last, bigAndSmallBall(-1.0, h), tracker.edgeLength());  // the big ball alone
 }
 
+/// A regular tetrahedron of edge `edge` with its first corner at `at`, facing outwards; ids from `firstId`.
+TrackedMesh tetrahedron(const Vec3d& at, double edge, std::uint32_t firstId)
+{
+    TriangleMesh mesh;
+    const double s = edge / std::sqrt(8.0);
+    for (const Vec3d& c : {Vec3d(1, 1, 1), Vec3d(1, -1, -1), Vec3d(-1, 1, -1), Vec3d(-1, -1, 1)}) {
+        const Vec3d p = at + (c - Vec3d(1, 1, 1)) * s;
+        mesh.positions.push_back({float(p.x()), float(p.y()), float(p.z())});
+    }
+    mesh.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+    return TrackedMesh::of(mesh, firstId);
+}
+
+// A tetrahedron with edges under e passes the link condition on every edge (its two ends share
+// exactly the two opposite vertices), but collapsing one leaves two triangles back to back: a
+// shell that is no surface. Beside another shell (a lone one of four vertices is never
+// collapsed), it must stay as it is.
+TEST(EdgeRemesher, NeverCollapsesATetrahedronIntoTwoTrianglesBackToBack)
+{
+    TrackedMesh mesh = tetrahedron(Vec3d(0.0), 0.5, 0);
+    const TrackedMesh other = tetrahedron(Vec3d(10.0, 0.0, 0.0), 1.5, 4);
+    for (std::uint32_t v = 0; v < 4; ++v)
+        mesh.positions.push_back(other.positions[v]), mesh.ids.push_back(other.ids[v]);
+    for (const auto& t : other.triangles) mesh.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+    mesh.nextId = 8;
+    const TrackedMesh before = mesh;
+    EdgeMemory memory;
+    const RemeshCounts counts = alterMesh(mesh, memory, {}, {}, {1.0});
+    EXPECT_EQ(counts.collapses, 0u);
+    EXPECT_EQ(mesh.ids, before.ids);
+    EXPECT_EQ(mesh.triangles, before.triangles);
+    EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold());
+}
+
+/// Each edge of `mesh` between two vertices `marked`, as a key of vertex ids.
+std::set<std::uint64_t> edgesWithin(const TrackedMesh& mesh, const std::vector<std::uint8_t>& marked)
+{
+    std::set<std::uint64_t> edges;
+    for (const auto& t : mesh.triangles)
+        for (int k = 0; k < 3; ++k) {
+            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
+            if (marked[a] && marked[b]) edges.insert(edgeKey(mesh.ids[a], mesh.ids[b]));
+        }
+    return edges;
+}
+
+// Pinned vertices (the tracker pins its quasi-critical points and their neighbours) keep their
+// ids and positions and the edges among them stay, while elsewhere the edges of the same
+// lengths are split and collapsed.
+TEST(EdgeRemesher, LeavesTheEdgesAtPinnedVerticesAlone)
+{
+    const double h = 0.5, e = 0.3;  // marching-cubes edges, under a voxel: some under e, some over 2e
+    TrackedMesh mesh = TrackedMesh::of(meshLevelSet(makeSphere(8.0, h)));
+    std::vector<std::uint8_t> pinned(mesh.positions.size(), 0);
+    for (std::size_t v = 0; v < pinned.size(); ++v) pinned[v] = mesh.positions[v].z() > 2.0;
+    const TrackedMesh before = mesh;
+    const std::set<std::uint64_t> pinnedEdges = edgesWithin(mesh, pinned);
+    EdgeMemory memory;
+    const RemeshCounts counts = alterMesh(mesh, memory, {}, pinned, {e});
+    EXPECT_GT(counts.splits, 100u);
+    EXPECT_GT(counts.collapses, 100u);
+    std::map<std::uint32_t, std::uint32_t> indexOf;
+    for (std::uint32_t v = 0; v < mesh.ids.size(); ++v) indexOf[mesh.ids[v]] = v;
+    std::vector<std::uint8_t> stillPinned(mesh.positions.size(), 0);
+    for (std::size_t v = 0; v < pinned.size(); ++v) {
+        if (!pinned[v]) continue;
+        const auto it = indexOf.find(before.ids[v]);
+        ASSERT_NE(it, indexOf.end()) << "pinned vertex " << before.ids[v] << " collapsed";
+        EXPECT_EQ(mesh.positions[it->second], before.positions[v]);
+        stillPinned[it->second] = 1;
+    }
+    EXPECT_EQ(edgesWithin(mesh, stillPinned), pinnedEdges);
+    EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold());
+}
+
 TEST(SurfaceProjection, BringsPointsNearASphereOntoItAndFlagsTheCentre)
 {
     const double r = 10.0, h = 0.5;
