@@ -21,8 +21,8 @@ struct Edge {
 class Remesher {
 public:
     Remesher(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
-             const std::vector<std::uint8_t>& pinned, const RemeshLimits& limits)
-        : mMesh(mesh), mMemory(memory), mInverted(inverted), mPinned(pinned), mE(limits.edge),
+             const RemeshLimits& limits)
+        : mMesh(mesh), mMemory(memory), mInverted(inverted), mE(limits.edge),
           mShortest(limits.shortest > 0.0 ? limits.shortest : limits.edge),
           mLongest(limits.longest > 0.0 ? limits.longest : 2.0 * limits.edge), mFlips(limits.flips)
     {
@@ -64,14 +64,12 @@ private:
         const auto it = mMemory.lengths.find(key(e.a, e.b));
         return it == mMemory.lengths.end() ? 0.0 : e.length - it->second;
     }
-    /// Changed at the last step, or already in this one, or at a pinned vertex.
+    /// Changed at the last step, or already in this one.
     bool frozen(const Edge& e) const
     {
         const std::uint64_t k = key(e.a, e.b);
-        return mMemory.frozen.count(k) > 0 || mFrozenNext.count(k) > 0 || pinned(e.a) || pinned(e.b);
+        return mMemory.frozen.count(k) > 0 || mFrozenNext.count(k) > 0;
     }
-    /// Vertices made by this pass come after the pinned list: never pinned.
-    bool pinned(std::uint32_t v) const { return v < mPinned.size() && mPinned[v]; }
 
     bool splitPass()
     {
@@ -292,7 +290,6 @@ private:
     TrackedMesh& mMesh;
     EdgeMemory& mMemory;
     std::vector<std::uint8_t> mInverted;
-    const std::vector<std::uint8_t>& mPinned;
     const double mE, mShortest, mLongest;
     const bool mFlips;
     std::unordered_set<std::uint64_t> mFrozenNext;
@@ -304,9 +301,9 @@ private:
 }  // namespace
 
 RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
-                       const std::vector<std::uint8_t>& pinned, const RemeshLimits& limits)
+                       const RemeshLimits& limits)
 {
-    return Remesher(mesh, memory, inverted, pinned, limits).run();
+    return Remesher(mesh, memory, inverted, limits).run();
 }
 
 }  // namespace sculpt

@@ -9,10 +9,10 @@
 /// text swaps the two rules; its figure is the one followed here.) An edge a change made is
 /// frozen for the next step, so a split and a collapse never chase each other. A collapse is
 /// refused when it would make the mesh non-manifold (the two ends share neighbours other than
-/// the two opposite vertices, or the shell is a tetrahedron), turn a triangle over, or make an edge longer than the split
-/// length (2e); an edge of an inverted triangle is never split; edges at pinned vertices are
-/// left as they are. Changes are made in passes over independent edges (no two touching the
-/// same triangle), the longest split and the shortest collapsed first.
+/// the two opposite vertices, or the shell is a tetrahedron), turn a triangle over, or make an
+/// edge longer than the split length (2e); an edge of an inverted triangle is never split.
+/// Changes are made in passes over independent edges (no two touching the same triangle), the
+/// longest split and the shortest collapsed first.
 /// Seeding also flips edges towards valence 6 (never while tracking: a flip changes connectivity).
 
 #include "core/tracking/tracked_mesh.h"
@@ -44,10 +44,9 @@ struct RemeshLimits {
 };
 
 /// One ALTERMESH pass over `mesh` (closed, 2-manifold). `inverted` marks triangles (#F) whose
-/// normal opposes grad phi; `pinned` (#V, or empty) vertices whose edges are neither split nor
-/// collapsed. New vertices lie on edge midpoints, off the surface: project them after. Updates
-/// `memory` for the next step.
+/// normal opposes grad phi. New vertices lie on edge midpoints, off the surface: project them
+/// after. Updates `memory` for the next step.
 RemeshCounts alterMesh(TrackedMesh& mesh, EdgeMemory& memory, const std::vector<std::uint8_t>& inverted,
-                       const std::vector<std::uint8_t>& pinned, const RemeshLimits& limits);
+                       const RemeshLimits& limits);
 
 }  // namespace sculpt

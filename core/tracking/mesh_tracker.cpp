@@ -75,14 +75,10 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
             report.quasiCritical = settle.quasiCritical;
         }
         const std::vector<std::uint8_t> inverted = invertedTriangles();
-        if (std::find(inverted.begin(), inverted.end(), 1) == inverted.end()) {
-            mLastCut = report.surgery;
-            return report;
-        }
+        if (std::find(inverted.begin(), inverted.end(), 1) == inverted.end()) return report;
         report.surgery = {};  // it left the mesh folded: stage 1 after all
     }
     seed(field, mc);
-    mLastCut = {};
     report.reseeded = true;
     report.quasiCritical = flagged();  // the new mesh's
     return report;
@@ -102,8 +98,7 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     // splitting the one edge it reached first (a third fewer edge changes, sphere -> box).
     relax(field, relaxation);
     if (holding) holdEdges(field);
-    const RemeshCounts counts =
-        alterMesh(mMesh, mMemory, inverted, holding ? quasiCriticalRings() : std::vector<std::uint8_t>{}, limits);
+    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
     project(field);
@@ -153,19 +148,6 @@ void MeshTracker::holdEdges(const FieldImage& field)
         if (moved.empty()) return;
         for (const std::uint32_t v : moved) projectVertex(probe, v);
     }
-}
-
-std::vector<std::uint8_t> MeshTracker::quasiCriticalRings() const
-{
-    const double cutReach = mLastCut.radius + 3.0 * mEdge;
-    const auto pins = [&](std::uint32_t v) {
-        return mQuasiCritical[v] &&
-               (mLastCut.kind == SurgeryKind::None || (mMesh.positions[v] - mLastCut.centre).length() > cutReach);
-    };
-    std::vector<std::uint8_t> ring(mMesh.positions.size(), 0);
-    for (const auto& tri : mMesh.triangles)
-        if (pins(tri[0]) || pins(tri[1]) || pins(tri[2])) ring[tri[0]] = ring[tri[1]] = ring[tri[2]] = 1;
-    return ring;
 }
 
 std::vector<std::uint8_t> MeshTracker::invertedTriangles() const

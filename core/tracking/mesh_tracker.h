@@ -125,13 +125,6 @@ private:
     void projectVertex(const FieldProbe& probe, std::size_t v);
     /// Sweeps of EdgeHold, the moved vertices projected after each.
     void holdEdges(const FieldImage& field);
-    /// The quasi-critical vertices and their neighbours (#V): the remesher leaves their edges
-    /// alone while tracking. Where the field shows no surface (a part thinner than a voxel) the
-    /// triangles there fold and unfold from step to step; remeshing them changed edges at nearly
-    /// every step of elephant -> camel's last frames and made more of the flags it chased. Not
-    /// near the last cut: its caps wait in the gap as quasi-critical points while the parts draw
-    /// apart, and need the remesher's collapses to follow (pinned, they fold).
-    std::vector<std::uint8_t> quasiCriticalRings() const;
     std::vector<std::uint8_t> invertedTriangles() const;
     /// Moves the vertex of each inverted triangle nearest its opposite edge across that edge.
     void unfold(const std::vector<std::uint8_t>& inverted);
@@ -143,7 +136,6 @@ private:
     EdgeMemory mMemory;
     std::vector<openvdb::Vec3d> mNormals;
     std::vector<std::uint8_t> mQuasiCritical;
-    Surgery mLastCut;  ///< the last topology surgery since the seed, if any
 };
 
 }  // namespace sculpt

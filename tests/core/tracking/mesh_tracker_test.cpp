@@ -507,51 +507,10 @@ TEST(EdgeRemesher, NeverCollapsesATetrahedronIntoTwoTrianglesBackToBack)
     mesh.nextId = 8;
     const TrackedMesh before = mesh;
     EdgeMemory memory;
-    const RemeshCounts counts = alterMesh(mesh, memory, {}, {}, {1.0});
+    const RemeshCounts counts = alterMesh(mesh, memory, {}, {1.0});
     EXPECT_EQ(counts.collapses, 0u);
     EXPECT_EQ(mesh.ids, before.ids);
     EXPECT_EQ(mesh.triangles, before.triangles);
-    EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold());
-}
-
-/// Each edge of `mesh` between two vertices `marked`, as a key of vertex ids.
-std::set<std::uint64_t> edgesWithin(const TrackedMesh& mesh, const std::vector<std::uint8_t>& marked)
-{
-    std::set<std::uint64_t> edges;
-    for (const auto& t : mesh.triangles)
-        for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = t[k], b = t[(k + 1) % 3];
-            if (marked[a] && marked[b]) edges.insert(edgeKey(mesh.ids[a], mesh.ids[b]));
-        }
-    return edges;
-}
-
-// Pinned vertices (the tracker pins its quasi-critical points and their neighbours) keep their
-// ids and positions and the edges among them stay, while elsewhere the edges of the same
-// lengths are split and collapsed.
-TEST(EdgeRemesher, LeavesTheEdgesAtPinnedVerticesAlone)
-{
-    const double h = 0.5, e = 0.3;  // marching-cubes edges, under a voxel: some under e, some over 2e
-    TrackedMesh mesh = TrackedMesh::of(meshLevelSet(makeSphere(8.0, h)));
-    std::vector<std::uint8_t> pinned(mesh.positions.size(), 0);
-    for (std::size_t v = 0; v < pinned.size(); ++v) pinned[v] = mesh.positions[v].z() > 2.0;
-    const TrackedMesh before = mesh;
-    const std::set<std::uint64_t> pinnedEdges = edgesWithin(mesh, pinned);
-    EdgeMemory memory;
-    const RemeshCounts counts = alterMesh(mesh, memory, {}, pinned, {e});
-    EXPECT_GT(counts.splits, 100u);
-    EXPECT_GT(counts.collapses, 100u);
-    std::map<std::uint32_t, std::uint32_t> indexOf;
-    for (std::uint32_t v = 0; v < mesh.ids.size(); ++v) indexOf[mesh.ids[v]] = v;
-    std::vector<std::uint8_t> stillPinned(mesh.positions.size(), 0);
-    for (std::size_t v = 0; v < pinned.size(); ++v) {
-        if (!pinned[v]) continue;
-        const auto it = indexOf.find(before.ids[v]);
-        ASSERT_NE(it, indexOf.end()) << "pinned vertex " << before.ids[v] << " collapsed";
-        EXPECT_EQ(mesh.positions[it->second], before.positions[v]);
-        stillPinned[it->second] = 1;
-    }
-    EXPECT_EQ(edgesWithin(mesh, stillPinned), pinnedEdges);
     EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold());
 }
 
