@@ -53,7 +53,9 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
     TrackingStep report =
         advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps), true);
     const TrackedMesh mc = resolvableSurface(field);
+    report.folded = double(report.inverted) > kLostFoldedShare * double(mMesh.triangles.size());
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
+    if (report.folded) return reseed(field, mc, report);
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
     // A part that shrank under the resolution has left the ground truth: it leaves the mesh too.
     report.vanishedShells = mMesh.dropShellsUnder(kResolvableEdges * mEdge);
@@ -78,7 +80,12 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
         if (std::find(inverted.begin(), inverted.end(), 1) == inverted.end()) return report;
         report.surgery = {};  // it left the mesh folded: stage 1 after all
     }
-    seed(field, mc);
+    return reseed(field, mc, report);
+}
+
+TrackingStep MeshTracker::reseed(const FieldImage& field, const TrackedMesh& surface, TrackingStep report)
+{
+    seed(field, surface);
     report.reseeded = true;
     report.quasiCritical = flagged();  // the new mesh's
     return report;

@@ -12,6 +12,7 @@ void TrackingTally::add(const TrackingStep& s)
     surgeries += s.surgery.kind != SurgeryKind::None;
     reseeds += s.reseeded;
     vanished += s.vanishedShells;
+    folds += s.folded;
 }
 
 void MorphTracking::frame(const FieldImage& field)

@@ -16,6 +16,7 @@ struct TrackingTally {
     std::size_t steps = 0, splits = 0, collapses = 0, inverted = 0, quasiCritical = 0;
     std::size_t surgeries = 0, reseeds = 0;  ///< topology events cut and closed (stage 2), seeded again (stage 1)
     std::size_t vanished = 0;                ///< shells shrunk under the tracked mesh's resolution, dropped
+    std::size_t folds = 0;                   ///< of the reseeds, those of a mesh that had folded (not topology)
     void add(const TrackingStep& s);
 };
 

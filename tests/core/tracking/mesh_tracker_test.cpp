@@ -514,6 +514,36 @@ TEST(EdgeRemesher, NeverCollapsesATetrahedronIntoTwoTrianglesBackToBack)
     EXPECT_TRUE(test::meshTopology(mesh.triangleMesh()).closedManifold());
 }
 
+/// A pseudo-random move of up to `amplitude` along each axis, a function of the point alone.
+Vec3d scramble(const Vec3d& p, double amplitude)
+{
+    const auto noise = [&](double a, double b, double c) {
+        const double x = std::sin(p.x() * a + p.y() * b + p.z() * c) * 43758.5453;
+        return 2.0 * (x - std::floor(x)) - 1.0;
+    };
+    return amplitude * Vec3d(noise(12.99, 78.23, 37.72), noise(39.35, 11.13, 83.15), noise(73.16, 52.24, 9.46));
+}
+
+// Folds over more than 1% of the triangles feed themselves (unfolding and remeshing among them
+// fold more): such a mesh has lost the surface and is seeded again, well shaped. A light jitter
+// is followed in place.
+TEST(MeshTracker, SeedsAgainAMeshFoldedOverMoreThanOnePercentOfItsTriangles)
+{
+    const FieldImage field = makeSphere(8.0, 0.5);
+    for (const double amplitude : {0.1, 1.5}) {
+        MeshTracker tracker(field);
+        const double e = tracker.edgeLength();
+        const std::size_t triangles = tracker.mesh().triangles.size();
+        const TrackingStep s = tracker.step(field, [&](const Vec3d& p) { return scramble(p, amplitude * e); });
+        const bool lost = double(s.inverted) > MeshTracker::kLostFoldedShare * double(triangles);
+        EXPECT_EQ(lost, amplitude > 1.0) << s.inverted << " of " << triangles << " triangles folded";
+        EXPECT_EQ(s.folded, lost);
+        EXPECT_EQ(s.reseeded, lost);
+        for (int k = 0; k < 4; ++k) EXPECT_EQ(tracker.step(field).inverted, 0u) << "amplitude " << amplitude;
+        expectWellShaped(tracker.mesh(), field, e);
+    }
+}
+
 TEST(SurfaceProjection, BringsPointsNearASphereOntoItAndFlagsTheCentre)
 {
     const double r = 10.0, h = 0.5;
