@@ -54,8 +54,8 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
         advance(field, displacement, {mEdge}, relaxation(mOptions.gain, mOptions.conjugateGradientSteps), true);
     const TrackedMesh mc = resolvableSurface(field);
     report.folded = double(report.inverted) > kLostFoldedShare * double(mMesh.triangles.size());
-    const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (report.folded) return reseed(field, mc, report);
+    const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
     if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
     // A part that shrank under the resolution has left the ground truth: it leaves the mesh too.
     report.vanishedShells = mMesh.dropShellsUnder(kResolvableEdges * mEdge);

@@ -54,9 +54,9 @@ void printTracking(const MorphTracking& tracking, const std::string& directory)
         "tracked mesh: %zu segments of constant connectivity in %s (segment_0000.ply/.pc2/.glb/.usda ...); over %zu "
         "steps %zu splits, %zu collapses, %zu inverted triangles unfolded, %zu quasi-critical points; topology "
         "events: %zu cut and closed, %zu seeded again, %zu shells vanished under the resolution; seeded again "
-        "after folding over 1%% of its triangles: %zu\n",
+        "after folding over %g%% of its triangles: %zu\n",
         sequence.segments().size(), directory.c_str(), t.steps, t.splits, t.collapses, t.inverted, t.quasiCritical,
-        t.surgeries, t.reseeds - t.folds, t.vanished, t.folds);
+        t.surgeries, t.reseeds - t.folds, t.vanished, 100.0 * MeshTracker::kLostFoldedShare, t.folds);
     for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
         const TrackedSegment& segment = sequence.segments()[s];
         double angle = 180.0, shortest = 1e30, longest = 0.0;
