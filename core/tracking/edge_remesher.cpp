@@ -173,6 +173,7 @@ private:
         mInverted.resize(mMesh.triangles.size(), 0);
         for (const std::uint32_t v : {a, b, c, d}) mFrozenNext.insert(key(m, v));
         ++mCounts.splits;
+        mCounts.edits.push_back({MeshEdit::Kind::Split, mMesh.ids[a], mMesh.ids[b], mMesh.ids[m]});
     }
 
     bool collapsePass()
@@ -248,6 +249,7 @@ private:
         for (const std::uint32_t w : keep == a ? na : nb)
             if (w != gone) mFrozenNext.insert(key(keep, w));
         ++mCounts.collapses;
+        mCounts.edits.push_back({MeshEdit::Kind::Collapse, mMesh.ids[keep], mMesh.ids[gone], 0});
         return true;
     }
 

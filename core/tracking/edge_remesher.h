@@ -30,6 +30,7 @@ struct EdgeMemory {
 
 struct RemeshCounts {
     std::size_t splits = 0, collapses = 0, flips = 0;
+    std::vector<MeshEdit> edits;  ///< the splits and collapses, in order (flips are not listed)
 };
 
 /// How a pass treats the mesh: tracking keeps connectivity unless an edge leaves [e, 2e];

@@ -74,6 +74,7 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
             const TrackingStep settle = advance(field, {}, {mEdge}, settling, false);
             report.splits += settle.splits;
             report.collapses += settle.collapses;
+            report.edits.insert(report.edits.end(), settle.edits.begin(), settle.edits.end());
             report.quasiCritical = settle.quasiCritical;
         }
         const std::vector<std::uint8_t> inverted = invertedTriangles();
@@ -105,9 +106,10 @@ TrackingStep MeshTracker::advance(const FieldImage& field, const std::function<V
     // splitting the one edge it reached first (a third fewer edge changes, sphere -> box).
     relax(field, relaxation);
     if (holding) holdEdges(field);
-    const RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
+    RemeshCounts counts = alterMesh(mMesh, mMemory, inverted, limits);
     report.splits = counts.splits;
     report.collapses = counts.collapses;
+    report.edits = std::move(counts.edits);
     project(field);
     relax(field, relaxation);
     if (holding) holdEdges(field);

@@ -58,7 +58,8 @@ struct QuasiCriticalPoint {
 /// What one step did.
 struct TrackingStep {
     std::size_t splits = 0, collapses = 0;
-    std::size_t inverted = 0;  ///< triangles facing against grad phi when the step began
+    std::vector<MeshEdit> edits;  ///< the splits and collapses, in order
+    std::size_t inverted = 0;     ///< triangles facing against grad phi when the step began
     std::vector<QuasiCriticalPoint> quasiCritical;
     /// The surface's topology changed and the mesh was cut and closed there (stage 2): the
     /// vertices away from the event keep their ids; connectivity changed, a new segment begins.

@@ -18,7 +18,8 @@ void TrackingTally::add(const TrackingStep& s)
 void MorphTracking::frame(const FieldImage& field)
 {
     if (!mTracker) mTracker.emplace(field);
-    mSequence.add(mTracker->mesh());
+    mSequence.add(mTracker->mesh(), mEditsSinceFrame);
+    mEditsSinceFrame.clear();
     mFrames.push_back({measureQuality(mTracker->mesh()), mFlaggedSinceFrame, mSequence.segments().size() - 1});
     mFlaggedSinceFrame = 0;
 }
@@ -28,6 +29,7 @@ void MorphTracking::step(const FieldImage& field)
     const TrackingStep report = mTracker->step(field);
     mTally.add(report);
     mFlaggedSinceFrame += report.quasiCritical.size();
+    mEditsSinceFrame.insert(mEditsSinceFrame.end(), report.edits.begin(), report.edits.end());
 }
 
 TriangleMesh MorphTracking::frameMesh(int index) const

@@ -49,6 +49,7 @@ private:
     std::vector<TrackedFrame> mFrames;
     TrackingTally mTally;
     std::size_t mFlaggedSinceFrame = 0;
+    std::vector<MeshEdit> mEditsSinceFrame;  ///< what the sequence replays to keep the segment going
 };
 
 }  // namespace sculpt

@@ -1,0 +1,167 @@
+// A tracked sequence keeps one segment while the tracker only splits and collapses edges: each
+// frame of it is exactly the tracked surface of that frame (the tracker's vertices where they
+// are, the others on its surface: at an edge's midpoint before a split, on their keeper after a
+// collapse), closed and 2-manifold; a new segment starts where merged vertices would pass a
+// tenth of the segment's, or where the edits do not replay (a mesh seeded again).
+
+#include "core/primitives/analytic_shapes.h"
+#include "core/primitives/sdf_rasterizer.h"
+#include "core/tracking/mesh_tracker.h"
+#include "core/tracking/tracked_sequence.h"
+#include "tests/support/mesh_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace sculpt {
+namespace {
+
+constexpr double kVoxel = 0.5;
+
+/// A capsule around the x axis: the points within `radius` of the segment from -half to half.
+FieldImage capsule(double half, double radius)
+{
+    AnalyticSdf sdf;
+    sdf.distance = [=](const openvdb::Vec3d& p) {
+        return (p - openvdb::Vec3d(std::clamp(p.x(), -half, half), 0.0, 0.0)).length() - radius;
+    };
+    sdf.bounds =
+        openvdb::BBoxd(openvdb::Vec3d(-half - radius, -radius, -radius), openvdb::Vec3d(half + radius, radius, radius));
+    sdf.surfaceArea = 4.0 * M_PI * radius * (radius + half);
+    sdf.description = "capsule";
+    return rasterizeSdf(sdf, kVoxel);
+}
+
+/// A capsule going through `shapes` ({half length, radius}), a quarter voxel a step at most,
+/// tracked; a frame every four steps, kept as the tracker had it and in two sequences: with the
+/// edits and without.
+struct CapsuleRun {
+    std::vector<TrackedMesh> frames;
+    TrackedSequence sequence, plain;
+    std::size_t splits = 0, collapses = 0, reseeds = 0;
+};
+
+CapsuleRun trackCapsule(const std::vector<std::array<double, 2>>& shapes)
+{
+    CapsuleRun run;
+    MeshTracker tracker(capsule(shapes[0][0], shapes[0][1]));
+    std::vector<MeshEdit> edits;
+    const auto frame = [&] {
+        run.frames.push_back(tracker.mesh());
+        run.sequence.add(tracker.mesh(), edits);
+        run.plain.add(tracker.mesh());
+        edits.clear();
+    };
+    frame();
+    int steps = 0;
+    for (std::size_t k = 1; k < shapes.size(); ++k) {
+        const std::array<double, 2> from = shapes[k - 1], to = shapes[k];
+        const double farthest = std::max(std::abs(to[0] - from[0]), std::abs(to[1] - from[1]));
+        const int n = int(std::ceil(farthest / (0.25 * kVoxel)));
+        for (int i = 1; i <= n; ++i) {
+            const double t = double(i) / n;
+            const TrackingStep s =
+                tracker.step(capsule(from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])));
+            edits.insert(edits.end(), s.edits.begin(), s.edits.end());
+            run.splits += s.splits;
+            run.collapses += s.collapses;
+            run.reseeds += s.reseeded;
+            if (++steps % 4 == 0) frame();
+        }
+    }
+    if (steps % 4 != 0) frame();
+    return run;
+}
+
+/// Frame `j` of `segment` is the surface of `truth`: the same positions for the same ids, the
+/// same area and volume, closed and 2-manifold of the same Euler characteristic.
+void expectTheTrackedSurface(const TrackedSegment& segment, std::size_t j, const TrackedMesh& truth)
+{
+    std::unordered_map<std::uint32_t, std::size_t> index;
+    for (std::size_t v = 0; v < truth.ids.size(); ++v) index[truth.ids[v]] = v;
+    std::size_t found = 0;
+    for (std::size_t v = 0; v < segment.ids.size(); ++v) {
+        const auto it = index.find(segment.ids[v]);
+        if (it == index.end()) continue;
+        ++found;
+        const openvdb::Vec3d& p = truth.positions[it->second];
+        ASSERT_EQ(segment.positions[j][v], (std::array<float, 3>{float(p.x()), float(p.y()), float(p.z())}));
+    }
+    EXPECT_EQ(found, truth.ids.size());
+    const TriangleMesh mine = segment.frameMesh(j), theirs = truth.triangleMesh();
+    const test::MeshTopology topology = test::meshTopology(mine);
+    EXPECT_TRUE(topology.closedManifold());
+    EXPECT_EQ(topology.eulerCharacteristic(), test::meshTopology(theirs).eulerCharacteristic());
+    EXPECT_NEAR(test::meshArea(mine), test::meshArea(theirs), 1e-5 * test::meshArea(theirs));
+    EXPECT_NEAR(test::meshVolume(mine), test::meshVolume(theirs), 1e-5 * test::meshVolume(theirs));
+}
+
+void expectEveryFrameTheTrackedSurface(const CapsuleRun& run)
+{
+    ASSERT_EQ(run.sequence.frameCount(), int(run.frames.size()));
+    for (const TrackedSegment& segment : run.sequence.segments())
+        for (std::size_t j = 0; j < segment.positions.size(); ++j) {
+            SCOPED_TRACE("frame " + std::to_string(segment.firstFrame + int(j)));
+            expectTheTrackedSurface(segment, j, run.frames[std::size_t(segment.firstFrame) + j]);
+        }
+}
+
+// A ball drawn out into a capsule, then thinned: edges split at the ends and collapse around the
+// middle; without the edits every frame after a change starts a segment, with them the run is one.
+TEST(TrackedSequence, KeepsOneSegmentThroughSplitsAndCollapsesEachFrameTheTrackedSurface)
+{
+    const CapsuleRun run = trackCapsule({{0.0, 9.0}, {10.0, 6.0}, {10.0, 5.0}});
+    EXPECT_EQ(run.reseeds, 0u);
+    EXPECT_GT(run.splits, 0u);
+    EXPECT_GT(run.collapses, 0u);
+    EXPECT_GT(run.plain.segments().size(), 2u);
+    ASSERT_EQ(run.sequence.segments().size(), 1u);
+    EXPECT_GT(run.sequence.segments()[0].ids.size(), run.frames.front().ids.size());
+    expectEveryFrameTheTrackedSurface(run);
+}
+
+// A capsule shortened into a ball, two fifths of its area gone: merged vertices would pile up, so
+// a segment ends before they pass a tenth of its vertices and the next starts from the tracked
+// mesh as it is; still fewer segments than frames with collapses.
+TEST(TrackedSequence, StartsASegmentBeforeMergedVerticesPassATenth)
+{
+    const CapsuleRun run = trackCapsule({{10.0, 6.0}, {0.0, 6.0}});
+    EXPECT_EQ(run.reseeds, 0u);
+    ASSERT_GT(run.collapses, 0u);
+    EXPECT_GT(run.sequence.segments().size(), 1u);
+    EXPECT_LT(run.sequence.segments().size(), run.plain.segments().size());
+    for (const TrackedSegment& segment : run.sequence.segments()) {
+        const TrackedMesh& last = run.frames[std::size_t(segment.firstFrame) + segment.positions.size() - 1];
+        const std::unordered_set<std::uint32_t> kept(last.ids.begin(), last.ids.end());
+        std::size_t merged = 0;
+        for (const std::uint32_t id : segment.ids) merged += kept.count(id) == 0;
+        EXPECT_LE(double(merged), TrackedSequence::kMostMerged * double(segment.ids.size()));
+    }
+    expectEveryFrameTheTrackedSurface(run);
+}
+
+// Edits that are not this mesh's (another seed's ids) do not replay: a new segment, as the
+// frame of a mesh seeded again starts one.
+TEST(TrackedSequence, StartsASegmentWhereTheEditsDoNotReplay)
+{
+    const TrackedMesh ball = MeshTracker(makeSphere(8.0, kVoxel)).mesh();
+    TrackedSequence sequence;
+    sequence.add(ball);
+    sequence.add(ball);
+    EXPECT_EQ(sequence.segments().size(), 1u);
+    sequence.add(ball, {{MeshEdit::Kind::Collapse, ball.nextId, ball.nextId + 1, 0}});
+    EXPECT_EQ(sequence.segments().size(), 2u);
+    TrackedMesh reseeded = ball;
+    for (std::uint32_t& id : reseeded.ids) id += ball.nextId;
+    sequence.add(reseeded);
+    ASSERT_EQ(sequence.segments().size(), 3u);
+    EXPECT_EQ(sequence.segments().back().ids, reseeded.ids);
+    EXPECT_EQ(sequence.frameCount(), 4);
+}
+
+}  // namespace
+}  // namespace sculpt
