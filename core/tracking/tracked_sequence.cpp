@@ -11,6 +11,8 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
+constexpr std::size_t kLongestFan = 64;  // flat triangles walked around a vertex, at most
+
 /// The same triangle starting at its smallest vertex (orientation kept), to compare lists.
 Triangle canonical(const Triangle& t)
 {
@@ -42,7 +44,9 @@ public:
 
     std::vector<Triangle> triangles;
     std::vector<std::uint32_t> ids, keeper;
-    std::vector<std::array<std::uint32_t, 2>> bornOn;  ///< per vertex a split added, its edge's ends
+    /// Per vertex a split added, where it was before: the midpoint of these two (the same one twice
+    /// where the split edge had merged two).
+    std::vector<std::array<std::uint32_t, 2>> bornOn;
 
 private:
     /// The index of the vertex of this id when it is not merged into another.
@@ -75,6 +79,10 @@ private:
     {
         for (int k = 0; k < 3; ++k) mHalfEdges[halfEdgeKey(triangles[t][k], triangles[t][(k + 1) % 3])] = t;
     }
+    void unlinkHalfEdges(std::uint32_t t)
+    {
+        for (int k = 0; k < 3; ++k) mHalfEdges.erase(halfEdgeKey(triangles[t][k], triangles[t][(k + 1) % 3]));
+    }
 
     std::uint32_t opposite(std::uint32_t t, std::uint32_t x, std::uint32_t y) const
     {
@@ -83,33 +91,62 @@ private:
         return x;
     }
 
-    /// As the remesher splits: (x, y, c) becomes (x, m, c) and (m, y, c); (y, x, d) becomes
-    /// (y, m, d) and (m, x, d). Only where both sides of the tracked edge are one edge here (not
-    /// where a collapse merged two edges into it).
+    /// As the remesher splits edge a -> b of (a, b, c) and b -> a of (b, a, d): (a, m, c), (m, b, c),
+    /// (b, m, d) and (m, a, d). Here the two triangles hold x1 -> y1 and y2 -> x2; where
+    /// collapses merged edges into (a, b), triangles of no area lie between them, around an end
+    /// they share.
     bool split(std::uint32_t aId, std::uint32_t bId, std::uint32_t bornId)
     {
         const auto a = kept(aId), b = kept(bId);
         if (!a || !b || mIndex.count(bornId)) return false;
         const auto ab = halfEdge(*a, *b), ba = halfEdge(*b, *a);
-        if (!ab || !ba || ab->first != ba->second || ab->second != ba->first) return false;
-        const std::uint32_t x = ab->first, y = ab->second;
-        const std::uint32_t t1 = mHalfEdges.at(halfEdgeKey(x, y)), t2 = mHalfEdges.at(halfEdgeKey(y, x));
-        const std::uint32_t c = opposite(t1, x, y), d = opposite(t2, x, y);
+        if (!ab || !ba) return false;
+        if (ab->second == ba->first) return splitAround(ab->first, ab->second, ba->second, bornId);
+        if (ab->first == ba->second) return splitAround(ba->first, ab->first, ab->second, bornId);  // b <-> a
+        return false;
+    }
+
+    /// Splits (x1, y, c) and (y, x2, d), and the flat triangles around y between them, with a new
+    /// vertex m: (x1, m, c), (m, y, c), (y, m, d), (m, x2, d), and y replaced by m in the flat
+    /// ones. In the frames before, m is at the midpoint of (x1, y) when that is one edge
+    /// (x1 = x2), else at y, where every triangle keeps its shape or has none.
+    bool splitAround(std::uint32_t x1, std::uint32_t y, std::uint32_t x2, std::uint32_t bornId)
+    {
+        const std::uint32_t t1 = mHalfEdges.at(halfEdgeKey(x1, y)), t2 = mHalfEdges.at(halfEdgeKey(y, x2));
+        const auto flats = flatTrianglesAround(y, x1, t2);
+        if (!flats) return false;
+        const std::uint32_t c = opposite(t1, x1, y), d = opposite(t2, y, x2);
         const auto m = std::uint32_t(ids.size());
         ids.push_back(bornId);
         keeper.push_back(m);
         mRiders.push_back({m});
         mIndex[bornId] = m;
-        bornOn.push_back({x, y});
-        mHalfEdges.erase(halfEdgeKey(x, y));
-        mHalfEdges.erase(halfEdgeKey(y, x));
-        triangles[t1] = {x, m, c};
+        bornOn.push_back({flats->empty() ? x1 : y, y});
+        std::vector<std::uint32_t> changed = *flats;
+        changed.insert(changed.end(), {t1, t2, std::uint32_t(triangles.size()), std::uint32_t(triangles.size() + 1)});
+        for (std::size_t k = 0; k + 2 < changed.size(); ++k) unlinkHalfEdges(changed[k]);
+        for (const std::uint32_t t : *flats) std::replace(triangles[t].begin(), triangles[t].end(), y, m);
+        triangles[t1] = {x1, m, c};
         triangles[t2] = {y, m, d};
         triangles.push_back({m, y, c});
-        triangles.push_back({m, x, d});
-        for (const std::uint32_t t : {t1, t2, std::uint32_t(triangles.size() - 2), std::uint32_t(triangles.size() - 1)})
-            linkHalfEdges(t);
+        triangles.push_back({m, x2, d});
+        for (const std::uint32_t t : changed) linkHalfEdges(t);
         return true;
+    }
+
+    /// The triangles around y from the one holding y -> x1 to t2 (not included), when all are flat.
+    std::optional<std::vector<std::uint32_t>> flatTrianglesAround(std::uint32_t y, std::uint32_t x1,
+                                                                  std::uint32_t t2) const
+    {
+        std::vector<std::uint32_t> flats;
+        for (std::uint32_t x = x1;;) {
+            const auto it = mHalfEdges.find(halfEdgeKey(y, x));
+            if (it == mHalfEdges.end()) return std::nullopt;
+            if (it->second == t2) return flats;
+            if (!flat(it->second) || flats.size() > kLongestFan) return std::nullopt;
+            flats.push_back(it->second);
+            x = opposite(it->second, y, x);
+        }
     }
 
     /// `goneId` and everything riding on it ride on `keptId` from now on.
@@ -197,7 +234,7 @@ bool TrackedSequence::extend(const TrackedMesh& frame, const std::vector<MeshEdi
     if (double(merged) > kMostMerged * double(replay.ids.size())) return false;
     const auto at = matchFrame(replay, frame);
     if (!at) return false;
-    // A vertex a split made was at its edge's midpoint in the frames before.
+    // A vertex a split made was at the midpoint of bornOn's two vertices in the frames before.
     for (auto& points : segment.positions)
         for (const auto& [x, y] : replay.bornOn)
             points.push_back({0.5f * (points[x][0] + points[y][0]), 0.5f * (points[x][1] + points[y][1]),

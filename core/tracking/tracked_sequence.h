@@ -7,8 +7,9 @@
 /// The tracker changes connectivity locally (edge_remesher.h): a split adds a vertex at an edge's
 /// midpoint, a collapse merges two vertices. Both are kept inside one segment the way Hoppe's
 /// geomorphs keep a progressive mesh's: a vertex a split makes is in the segment's frames before
-/// it too, at the midpoint of its edge there (its four triangles lie flat in the two they split),
-/// and a vertex a collapse removes stays, on the vertex it was merged into (its two triangles on
+/// it too, at the midpoint of its edge there (its four triangles lie flat in the two they split;
+/// where a collapse had merged two edges into the one split, on the end they share), and a
+/// vertex a collapse removes stays, on the vertex it was merged into (its two triangles on
 /// the edge lie flat, of no area). So every frame of a segment is exactly the tracked surface of
 /// that frame, and a morph that only grows and shrinks plays as one segment. A segment ends where
 /// the replayed edits do not give the frame's triangles (a topology event cut and closed the mesh

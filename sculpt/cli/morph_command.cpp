@@ -149,7 +149,9 @@ void addMorphCommand(CLI::App& app)
                     "also write a mesh that moves with the surface (vertices and triangles kept while they can\n"
                     "be) into this directory: per segment of constant connectivity a rest mesh (.ply), a point\n"
                     "cache (.pc2, Blender's Mesh Cache), a glTF with a shape key per frame (.glb) and a USD\n"
-                    "layer with points and velocities per frame (.usda, Blender's Mesh Sequence Cache)");
+                    "layer with points and velocities per frame (.usda, Blender's Mesh Sequence Cache). A\n"
+                    "vertex an edge split adds sits at the edge's midpoint in the segment's earlier frames, one\n"
+                    "a collapse removes rides on its neighbour after; topology events start a new segment");
     cmd->add_flag("--keep-volume", options->morph.keepVolume,
                   "keep each frame's volume on the straight line between the two shapes' volumes");
     cmd->add_flag("--align", options->morph.align,

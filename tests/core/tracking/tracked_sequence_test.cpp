@@ -144,6 +144,75 @@ TEST(TrackedSequence, StartsASegmentBeforeMergedVerticesPassATenth)
     expectEveryFrameTheTrackedSurface(run);
 }
 
+using Triangle = std::array<std::uint32_t, 3>;
+
+std::uint32_t indexOf(const TrackedMesh& mesh, std::uint32_t id)
+{
+    return std::uint32_t(std::find(mesh.ids.begin(), mesh.ids.end(), id) - mesh.ids.begin());
+}
+
+/// A triangle of `mesh` holding edge from -> to (indices), and its third vertex.
+std::pair<std::size_t, std::uint32_t> triangleOf(const TrackedMesh& mesh, std::uint32_t from, std::uint32_t to)
+{
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (int k = 0; k < 3; ++k)
+            if (mesh.triangles[t][k] == from && mesh.triangles[t][(k + 1) % 3] == to)
+                return {t, mesh.triangles[t][(k + 2) % 3]};
+    ADD_FAILURE() << "no edge " << from << " -> " << to;
+    return {0, from};
+}
+
+/// The remesher's collapse of `goneId` into `keptId` at their midpoint (edge_remesher.cpp), by hand.
+MeshEdit collapse(TrackedMesh& mesh, std::uint32_t keptId, std::uint32_t goneId)
+{
+    const std::uint32_t keep = indexOf(mesh, keptId), gone = indexOf(mesh, goneId);
+    mesh.positions[keep] = 0.5 * (mesh.positions[keep] + mesh.positions[gone]);
+    std::vector<Triangle> kept;
+    for (Triangle t : mesh.triangles) {
+        if (std::count(t.begin(), t.end(), keep) && std::count(t.begin(), t.end(), gone)) continue;
+        std::replace(t.begin(), t.end(), gone, keep);
+        kept.push_back(t);
+    }
+    mesh.triangles = kept;
+    mesh.dropUnusedVertices();
+    return {MeshEdit::Kind::Collapse, keptId, goneId, 0};
+}
+
+/// The remesher's split of edge a -> b at its midpoint, by hand.
+MeshEdit split(TrackedMesh& mesh, std::uint32_t aId, std::uint32_t bId)
+{
+    const std::uint32_t a = indexOf(mesh, aId), b = indexOf(mesh, bId), m = std::uint32_t(mesh.ids.size());
+    const auto [t1, c] = triangleOf(mesh, a, b);
+    const auto [t2, d] = triangleOf(mesh, b, a);
+    mesh.positions.push_back(0.5 * (mesh.positions[a] + mesh.positions[b]));
+    mesh.ids.push_back(mesh.nextId++);
+    mesh.triangles[t1] = {a, m, c};
+    mesh.triangles[t2] = {b, m, d};
+    mesh.triangles.push_back({m, b, c});
+    mesh.triangles.push_back({m, a, d});
+    return {MeshEdit::Kind::Split, aId, bId, mesh.ids.back()};
+}
+
+// A collapse merges the edges (k, c) and (g, c) of the triangle (k, g, c) into one; a split of
+// that edge, either way round, then splits the flat triangle between them too, its vertex at c
+// before: one segment, each frame the tracked surface.
+TEST(TrackedSequence, KeepsTheSegmentWhenASplitFollowsACollapseOnTheEdgesItMerged)
+{
+    CapsuleRun run;
+    TrackedMesh mesh = MeshTracker(makeSphere(8.0, kVoxel)).mesh();
+    run.frames.push_back(mesh);
+    run.sequence.add(mesh);
+    for (const bool forwards : {true, false}) {
+        const Triangle t = mesh.triangles[forwards ? 0 : mesh.triangles.size() / 2];
+        const std::uint32_t k = mesh.ids[t[0]], g = mesh.ids[t[1]], c = mesh.ids[t[2]];
+        const std::vector<MeshEdit> edits{collapse(mesh, k, g), forwards ? split(mesh, k, c) : split(mesh, c, k)};
+        run.frames.push_back(mesh);
+        run.sequence.add(mesh, edits);
+    }
+    ASSERT_EQ(run.sequence.segments().size(), 1u);
+    expectEveryFrameTheTrackedSurface(run);
+}
+
 // Edits that are not this mesh's (another seed's ids) do not replay: a new segment, as the
 // frame of a mesh seeded again starts one.
 TEST(TrackedSequence, StartsASegmentWhereTheEditsDoNotReplay)
