@@ -2,7 +2,7 @@
 // Run: build/tests/bench/tracking_bench
 //
 // BM_TrackingClayBall : the clay ball (radius 50, voxel 0.5, `sculpt new`'s default) following a
-//                       box of the same area for 24 evolution steps.
+//                       box of the same area for 24 evolution steps (a frame before and after).
 // BM_TrackingMorph/P  : CGAL's meshes (libcgal-demo), P = 0 elephant -> camel: the whole
 //                       `sculpt morph --frames 3 --align --tracked` motion at the target's longest
 //                       side / 256 (both passes: every step is tracked).
@@ -10,7 +10,8 @@
 // topology check); check_ms, that check alone (the welded marching-cubes mesh, which the tracker
 // builds inside its step); rebuild_ms, IncrementalMesher::rebuild of the same field (the reference:
 // re-meshing the whole model). Also the seeding (seed_s), vertices at the start and the end, the
-// worst smallest angle over the sequence, flagged points and segments.
+// worst smallest angle over the sequence, flagged points, steps that seeded the mesh again
+// (reseeds) and the segments a TrackedSequence of the frames makes of it (segments).
 
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
@@ -18,6 +19,7 @@
 #include "core/motion/morph.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/tracking/mesh_tracker.h"
+#include "core/tracking/tracked_sequence.h"
 #include "tests/support/cgal_data.h"
 
 #include <benchmark/benchmark.h>
@@ -64,7 +66,8 @@ public:
         IncrementalMesher mesher;
         mRebuild.push_back(millisecondsOf([&] { mesher.rebuild(field); }));
         mFlagged += report.quasiCritical.size();
-        mSegments += report.reseeded;
+        mReseeds += report.reseeded;
+        mEdits.insert(mEdits.end(), report.edits.begin(), report.edits.end());
         const TrackedMesh& mesh = mTracker->mesh();
         for (const auto& t : mesh.triangles)
             mWorstAngle = std::min(
@@ -72,6 +75,12 @@ public:
     }
 
     bool seeded() const { return mTracker.has_value(); }
+
+    void frame()
+    {
+        mSequence.add(mTracker->mesh(), mEdits);
+        mEdits.clear();
+    }
 
     void report(benchmark::State& state) const
     {
@@ -85,14 +94,17 @@ public:
         state.counters["vertices_last"] = double(mTracker->mesh().positions.size());
         state.counters["worst_angle_deg"] = mWorstAngle;
         state.counters["flagged"] = double(mFlagged);
-        state.counters["segments"] = double(mSegments);
+        state.counters["reseeds"] = double(mReseeds);
+        state.counters["segments"] = double(mSequence.segments().size());
     }
 
 private:
     std::optional<MeshTracker> mTracker;
     std::vector<double> mTrack, mCheck, mRebuild;
     double mSeedSeconds = 0.0, mWorstAngle = 180.0;
-    std::size_t mFirstVertices = 0, mFlagged = 0, mSegments = 1;
+    std::size_t mFirstVertices = 0, mFlagged = 0, mReseeds = 0;
+    std::vector<MeshEdit> mEdits;  // since the last frame
+    TrackedSequence mSequence;
 };
 
 void BM_TrackingClayBall(benchmark::State& state)
@@ -103,6 +115,7 @@ void BM_TrackingClayBall(benchmark::State& state)
         FieldImage field = makeSphere(radius, h);
         StepLog log;
         log.seed(field);
+        log.frame();
         MotionTerms terms;
         terms.target = TargetTerm{box.gridPtr(), 1.0, 0.0};
         LevelSetEvolution evolution(field, terms);
@@ -110,6 +123,7 @@ void BM_TrackingClayBall(benchmark::State& state)
             evolution.step();
             log.step(field);
         }
+        log.frame();
         log.report(state);
     }
 }
@@ -132,6 +146,7 @@ void BM_TrackingMorph(benchmark::State& state)
             source, target, options,
             [&](const MorphFrame& frame) {
                 if (!log.seeded()) log.seed(frame.field);
+                log.frame();
             },
             {}, [&](const FieldImage& field) { log.step(field); });
         log.report(state);

@@ -240,8 +240,11 @@ void trackedMeshLine(MorphMode& mode)
     if (ImGui::Checkbox("tracked mesh", &shown)) mode.wire().setShown(shown);
     ImGui::SameLine();
     const double e = tracking.edgeLength();
-    ImGui::TextDisabled("segment %zu of %zu: %zu vertices, smallest angle %.1f deg, edges %.2f-%.2f e, %zu flagged",
-                        f.segment + 1, tracking.sequence().segments().size(), f.quality.vertices,
+    // A segment holds every vertex its frames have had (tracked_sequence.h); the quality is this frame's.
+    const std::vector<TrackedSegment>& segments = tracking.sequence().segments();
+    ImGui::TextDisabled("segment %zu of %zu, %zu vertices; this frame %zu, smallest angle %.1f deg, edges %.2f-%.2f e, "
+                        "%zu flagged",
+                        f.segment + 1, segments.size(), segments.at(f.segment).ids.size(), f.quality.vertices,
                         f.quality.smallestAngle, f.quality.shortestEdge / e, f.quality.longestEdge / e, f.flagged);
 }
 
