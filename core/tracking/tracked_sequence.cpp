@@ -11,7 +11,7 @@ namespace {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
-constexpr std::size_t kLongestFan = 64;  // flat triangles walked around a vertex, at most
+constexpr std::size_t kLongestChain = 64;  // flat triangles between the two sides of a split edge, at most
 
 /// The same triangle starting at its smallest vertex (orientation kept), to compare lists.
 Triangle canonical(const Triangle& t)
@@ -44,8 +44,9 @@ public:
 
     std::vector<Triangle> triangles;
     std::vector<std::uint32_t> ids, keeper;
-    /// Per vertex a split added, where it was before: the midpoint of these two (the same one twice
-    /// where the split edge had merged two).
+    /// The id of the next vertex only the segment has (TrackedSequence::kFirstExportOnlyId, down).
+    std::uint32_t nextExportOnlyId = 0;
+    /// Per vertex a split added, its edge's ends: it was at their midpoint in the frames before.
     std::vector<std::array<std::uint32_t, 2>> bornOn;
 
 private:
@@ -92,61 +93,81 @@ private:
     }
 
     /// As the remesher splits edge a -> b of (a, b, c) and b -> a of (b, a, d): (a, m, c), (m, b, c),
-    /// (b, m, d) and (m, a, d). Here the two triangles hold x1 -> y1 and y2 -> x2; where
-    /// collapses merged edges into (a, b), triangles of no area lie between them, around an end
-    /// they share.
+    /// (b, m, d) and (m, a, d). Where collapses merged edges into (a, b), flat triangles lie
+    /// between the two here, and every merged edge is split, by m or by a vertex riding on it.
     bool split(std::uint32_t aId, std::uint32_t bId, std::uint32_t bornId)
     {
         const auto a = kept(aId), b = kept(bId);
         if (!a || !b || mIndex.count(bornId)) return false;
-        const auto ab = halfEdge(*a, *b), ba = halfEdge(*b, *a);
-        if (!ab || !ba) return false;
-        if (ab->second == ba->first) return splitAround(ab->first, ab->second, ba->second, bornId);
-        if (ab->first == ba->second) return splitAround(ba->first, ab->first, ab->second, bornId);  // b <-> a
-        return false;
-    }
-
-    /// Splits (x1, y, c) and (y, x2, d), and the flat triangles around y between them, with a new
-    /// vertex m: (x1, m, c), (m, y, c), (y, m, d), (m, x2, d), and y replaced by m in the flat
-    /// ones. In the frames before, m is at the midpoint of (x1, y) when that is one edge
-    /// (x1 = x2), else at y, where every triangle keeps its shape or has none.
-    bool splitAround(std::uint32_t x1, std::uint32_t y, std::uint32_t x2, std::uint32_t bornId)
-    {
-        const std::uint32_t t1 = mHalfEdges.at(halfEdgeKey(x1, y)), t2 = mHalfEdges.at(halfEdgeKey(y, x2));
-        const auto flats = flatTrianglesAround(y, x1, t2);
-        if (!flats) return false;
-        const std::uint32_t c = opposite(t1, x1, y), d = opposite(t2, y, x2);
-        const auto m = std::uint32_t(ids.size());
-        ids.push_back(bornId);
-        keeper.push_back(m);
-        mRiders.push_back({m});
-        mIndex[bornId] = m;
-        bornOn.push_back({flats->empty() ? x1 : y, y});
-        std::vector<std::uint32_t> changed = *flats;
-        changed.insert(changed.end(), {t1, t2, std::uint32_t(triangles.size()), std::uint32_t(triangles.size() + 1)});
-        for (std::size_t k = 0; k + 2 < changed.size(); ++k) unlinkHalfEdges(changed[k]);
-        for (const std::uint32_t t : *flats) std::replace(triangles[t].begin(), triangles[t].end(), y, m);
-        triangles[t1] = {x1, m, c};
-        triangles[t2] = {y, m, d};
-        triangles.push_back({m, y, c});
-        triangles.push_back({m, x2, d});
-        for (const std::uint32_t t : changed) linkHalfEdges(t);
+        const auto first = halfEdge(*a, *b);
+        if (!first) return false;
+        // The half-edges x -> y along a -> b, from the triangle holding the first, across the flat
+        // triangles (each holding the last one's twin and the next), to the one holding b -> a.
+        std::vector<std::pair<std::uint32_t, std::uint32_t>> chain{*first};
+        std::vector<std::uint32_t> flats;
+        std::uint32_t last = 0;
+        for (;;) {
+            const auto [x, y] = chain.back();
+            const auto twin = mHalfEdges.find(halfEdgeKey(y, x));
+            if (twin == mHalfEdges.end()) return false;
+            last = twin->second;
+            if (!flat(last)) break;
+            if (flats.size() > kLongestChain) return false;
+            flats.push_back(last);
+            const std::uint32_t r = opposite(last, y, x);
+            if (keeper[r] == *b) chain.emplace_back(x, r);
+            else if (keeper[r] == *a) chain.emplace_back(r, y);
+            else return false;
+        }
+        splitChain(chain, flats, mHalfEdges.at(halfEdgeKey(chain[0].first, chain[0].second)), last, bornId);
         return true;
     }
 
-    /// The triangles around y from the one holding y -> x1 to t2 (not included), when all are flat.
-    std::optional<std::vector<std::uint32_t>> flatTrianglesAround(std::uint32_t y, std::uint32_t x1,
-                                                                  std::uint32_t t2) const
+    /// Splits each chain edge at its midpoint (the frames before), by m and by vertices riding on
+    /// m: t1 (x0, y0, c) into (x0, m0, c), (m0, y0, c); t2 (yk, xk, d) into (yk, mk, d), (mk, xk, d);
+    /// each flat triangle, split on its two chain edges, into three, all flat once they ride on m.
+    void splitChain(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& chain,
+                    const std::vector<std::uint32_t>& flats, std::uint32_t t1, std::uint32_t t2, std::uint32_t bornId)
     {
-        std::vector<std::uint32_t> flats;
-        for (std::uint32_t x = x1;;) {
-            const auto it = mHalfEdges.find(halfEdgeKey(y, x));
-            if (it == mHalfEdges.end()) return std::nullopt;
-            if (it->second == t2) return flats;
-            if (!flat(it->second) || flats.size() > kLongestFan) return std::nullopt;
-            flats.push_back(it->second);
-            x = opposite(it->second, y, x);
+        std::vector<std::uint32_t> m;
+        const auto m0 = std::uint32_t(ids.size());
+        for (const auto& [x, y] : chain) {
+            m.push_back(std::uint32_t(ids.size()));
+            ids.push_back(m.size() == 1 ? bornId : nextExportOnlyId--);
+            mIndex[ids.back()] = m.back();
+            keeper.push_back(m0);
+            mRiders.emplace_back();
+            mRiders[m0].push_back(m.back());
+            bornOn.push_back({x, y});
         }
+        for (const std::uint32_t t : flats) unlinkHalfEdges(t);
+        unlinkHalfEdges(t1);
+        unlinkHalfEdges(t2);
+        const std::size_t added = triangles.size();
+        const auto [x0, y0] = chain.front();
+        const auto [xk, yk] = chain.back();
+        const std::uint32_t c = opposite(t1, x0, y0), d = opposite(t2, yk, xk);
+        triangles[t1] = {x0, m.front(), c};
+        triangles.push_back({m.front(), y0, c});
+        triangles[t2] = {yk, m.back(), d};
+        triangles.push_back({m.back(), xk, d});
+        for (std::size_t j = 0; j < flats.size(); ++j) {
+            const auto [x, y] = chain[j];
+            const std::uint32_t f = flats[j], r = opposite(f, y, x), mA = m[j], mB = m[j + 1];
+            if (chain[j + 1].first == x) {  // (y, x, r) split on (y, x) and (x, r)
+                triangles[f] = {mA, x, mB};
+                triangles.push_back({y, mA, mB});
+                triangles.push_back({y, mB, r});
+            } else {  // split on (y, x) and (r, y)
+                triangles[f] = {mB, y, mA};
+                triangles.push_back({mA, x, r});
+                triangles.push_back({mA, r, mB});
+            }
+        }
+        for (const std::uint32_t t : flats) linkHalfEdges(t);
+        linkHalfEdges(t1);
+        linkHalfEdges(t2);
+        for (std::size_t t = added; t < triangles.size(); ++t) linkHalfEdges(std::uint32_t(t));
     }
 
     /// `goneId` and everything riding on it ride on `keptId` from now on.
@@ -227,6 +248,7 @@ bool TrackedSequence::extend(const TrackedMesh& frame, const std::vector<MeshEdi
 {
     TrackedSegment& segment = mSegments.back();
     Replay replay(segment, mKeeper);
+    replay.nextExportOnlyId = mNextExportOnlyId;
     for (const MeshEdit& edit : edits)
         if (!replay.apply(edit)) return false;
     std::size_t merged = 0;
@@ -234,7 +256,7 @@ bool TrackedSequence::extend(const TrackedMesh& frame, const std::vector<MeshEdi
     if (double(merged) > kMostMerged * double(replay.ids.size())) return false;
     const auto at = matchFrame(replay, frame);
     if (!at) return false;
-    // A vertex a split made was at the midpoint of bornOn's two vertices in the frames before.
+    // A vertex a split made was at its edge's midpoint in the frames before.
     for (auto& points : segment.positions)
         for (const auto& [x, y] : replay.bornOn)
             points.push_back({0.5f * (points[x][0] + points[y][0]), 0.5f * (points[x][1] + points[y][1]),
@@ -246,6 +268,7 @@ bool TrackedSequence::extend(const TrackedMesh& frame, const std::vector<MeshEdi
     segment.triangles = std::move(replay.triangles);
     segment.ids = std::move(replay.ids);
     mKeeper = std::move(replay.keeper);
+    mNextExportOnlyId = replay.nextExportOnlyId;
     return true;
 }
 

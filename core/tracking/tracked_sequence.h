@@ -7,14 +7,15 @@
 /// The tracker changes connectivity locally (edge_remesher.h): a split adds a vertex at an edge's
 /// midpoint, a collapse merges two vertices. Both are kept inside one segment the way Hoppe's
 /// geomorphs keep a progressive mesh's: a vertex a split makes is in the segment's frames before
-/// it too, at the midpoint of its edge there (its four triangles lie flat in the two they split;
-/// where a collapse had merged two edges into the one split, on the end they share), and a
-/// vertex a collapse removes stays, on the vertex it was merged into (its two triangles on
+/// it too, at the midpoint of its edge there (its four triangles lie flat in the two they split),
+/// and a vertex a collapse removes stays, on the vertex it was merged into (its two triangles on
 /// the edge lie flat, of no area). So every frame of a segment is exactly the tracked surface of
 /// that frame, and a morph that only grows and shrinks plays as one segment. A segment ends where
 /// the replayed edits do not give the frame's triangles (a topology event cut and closed the mesh
 /// or seeded it again), or where merged vertices would pass kMostMerged of its vertices (the
-/// surface shrank: a new segment drops them).
+/// surface shrank: a new segment drops them). Where collapses had merged edges into the one a
+/// split cuts, each of those edges is cut, by the new vertex or by a vertex riding on it that
+/// only the segment has (its id counts down from kFirstExportOnlyId, far above the tracker's).
 
 #include "core/mesh/triangle_mesh.h"
 #include "core/tracking/tracked_mesh.h"
@@ -38,6 +39,9 @@ class TrackedSequence {
 public:
     /// The largest share of a segment's vertices that may ride on others after collapses.
     static constexpr double kMostMerged = 0.1;
+    /// The ids of vertices only a segment has count down from here: far above the tracker's, and
+    /// within a signed 32-bit int (USD's primvar of ids).
+    static constexpr std::uint32_t kFirstExportOnlyId = 0x7fffffffu;
 
     /// Appends a frame, reached from the last one by `edits` (the tracker's splits and collapses
     /// since, in order); it joins the last segment when they replay onto it (see above).
@@ -54,6 +58,7 @@ private:
     std::vector<TrackedSegment> mSegments;
     /// Per vertex of the last segment: the vertex whose position it takes (itself unless merged).
     std::vector<std::uint32_t> mKeeper;
+    std::uint32_t mNextExportOnlyId = kFirstExportOnlyId;
     int mFrames = 0;
 };
 

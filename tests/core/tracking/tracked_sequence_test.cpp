@@ -194,22 +194,31 @@ MeshEdit split(TrackedMesh& mesh, std::uint32_t aId, std::uint32_t bId)
 }
 
 // A collapse merges the edges (k, c) and (g, c) of the triangle (k, g, c) into one; a split of
-// that edge, either way round, then splits the flat triangle between them too, its vertex at c
-// before: one segment, each frame the tracked surface.
-TEST(TrackedSequence, KeepsTheSegmentWhenASplitFollowsACollapseOnTheEdgesItMerged)
+// that edge, either way round, splits both, and the flat triangle between them, by the new
+// vertex and one riding on it (an id only the segment has); where the edge's other side
+// collapsed too (a chain of two flat triangles, around c and around g), by three. One segment,
+// each frame the tracked surface.
+TEST(TrackedSequence, KeepsTheSegmentWhenASplitFollowsCollapsesOnTheEdgesItMerged)
 {
     CapsuleRun run;
     TrackedMesh mesh = MeshTracker(makeSphere(8.0, kVoxel)).mesh();
     run.frames.push_back(mesh);
     run.sequence.add(mesh);
-    for (const bool forwards : {true, false}) {
-        const Triangle t = mesh.triangles[forwards ? 0 : mesh.triangles.size() / 2];
+    for (std::size_t variant = 0; variant < 3; ++variant) {
+        const Triangle t = mesh.triangles[variant * mesh.triangles.size() / 3];
         const std::uint32_t k = mesh.ids[t[0]], g = mesh.ids[t[1]], c = mesh.ids[t[2]];
-        const std::vector<MeshEdit> edits{collapse(mesh, k, g), forwards ? split(mesh, k, c) : split(mesh, c, k)};
+        std::vector<MeshEdit> edits{collapse(mesh, k, g)};
+        if (variant == 2) {  // the third vertex of the triangle holding c -> k merges into c
+            const std::uint32_t z = mesh.ids[triangleOf(mesh, indexOf(mesh, c), indexOf(mesh, k)).second];
+            edits.push_back(collapse(mesh, c, z));
+        }
+        edits.push_back(variant == 1 ? split(mesh, c, k) : split(mesh, k, c));
         run.frames.push_back(mesh);
         run.sequence.add(mesh, edits);
     }
     ASSERT_EQ(run.sequence.segments().size(), 1u);
+    const std::vector<std::uint32_t>& ids = run.sequence.segments()[0].ids;
+    EXPECT_EQ(std::count_if(ids.begin(), ids.end(), [&](std::uint32_t id) { return id >= mesh.nextId; }), 4);
     expectEveryFrameTheTrackedSurface(run);
 }
 
