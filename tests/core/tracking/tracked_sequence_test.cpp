@@ -36,18 +36,19 @@ FieldImage capsule(double half, double radius)
     return rasterizeSdf(sdf, kVoxel);
 }
 
-/// A capsule going through `shapes` ({half length, radius}), a quarter voxel a step at most,
-/// tracked; a frame every four steps, kept as the tracker had it and in two sequences: with the
-/// edits and without.
-struct CapsuleRun {
+/// Frames of a tracked mesh, kept as the tracker had them and in two sequences: with the edits
+/// and without.
+struct TrackedRun {
     std::vector<TrackedMesh> frames;
     TrackedSequence sequence, plain;
     std::size_t splits = 0, collapses = 0, reseeds = 0;
 };
 
-CapsuleRun trackCapsule(const std::vector<std::array<double, 2>>& shapes)
+/// A capsule going through `shapes` ({half length, radius}), a quarter voxel a step at most,
+/// tracked; a frame every four steps.
+TrackedRun trackCapsule(const std::vector<std::array<double, 2>>& shapes)
 {
-    CapsuleRun run;
+    TrackedRun run;
     MeshTracker tracker(capsule(shapes[0][0], shapes[0][1]));
     std::vector<MeshEdit> edits;
     const auto frame = [&] {
@@ -100,7 +101,7 @@ void expectTheTrackedSurface(const TrackedSegment& segment, std::size_t j, const
     EXPECT_NEAR(test::meshVolume(mine), test::meshVolume(theirs), 1e-5 * test::meshVolume(theirs));
 }
 
-void expectEveryFrameTheTrackedSurface(const CapsuleRun& run)
+void expectEveryFrameTheTrackedSurface(const TrackedRun& run)
 {
     ASSERT_EQ(run.sequence.frameCount(), int(run.frames.size()));
     for (const TrackedSegment& segment : run.sequence.segments())
@@ -114,7 +115,7 @@ void expectEveryFrameTheTrackedSurface(const CapsuleRun& run)
 // middle; without the edits every frame after a change starts a segment, with them the run is one.
 TEST(TrackedSequence, KeepsOneSegmentThroughSplitsAndCollapsesEachFrameTheTrackedSurface)
 {
-    const CapsuleRun run = trackCapsule({{0.0, 9.0}, {10.0, 6.0}, {10.0, 5.0}});
+    const TrackedRun run = trackCapsule({{0.0, 9.0}, {10.0, 6.0}, {10.0, 5.0}});
     EXPECT_EQ(run.reseeds, 0u);
     EXPECT_GT(run.splits, 0u);
     EXPECT_GT(run.collapses, 0u);
@@ -129,7 +130,7 @@ TEST(TrackedSequence, KeepsOneSegmentThroughSplitsAndCollapsesEachFrameTheTracke
 // mesh as it is; still fewer segments than frames with collapses.
 TEST(TrackedSequence, StartsASegmentBeforeMergedVerticesPassATenth)
 {
-    const CapsuleRun run = trackCapsule({{10.0, 6.0}, {0.0, 6.0}});
+    const TrackedRun run = trackCapsule({{10.0, 6.0}, {0.0, 6.0}});
     EXPECT_EQ(run.reseeds, 0u);
     ASSERT_GT(run.collapses, 0u);
     EXPECT_GT(run.sequence.segments().size(), 1u);
@@ -200,7 +201,7 @@ MeshEdit split(TrackedMesh& mesh, std::uint32_t aId, std::uint32_t bId)
 // each frame the tracked surface.
 TEST(TrackedSequence, KeepsTheSegmentWhenASplitFollowsCollapsesOnTheEdgesItMerged)
 {
-    CapsuleRun run;
+    TrackedRun run;
     TrackedMesh mesh = MeshTracker(makeSphere(8.0, kVoxel)).mesh();
     run.frames.push_back(mesh);
     run.sequence.add(mesh);
