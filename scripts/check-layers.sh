@@ -25,14 +25,16 @@ declare -A allowed=(
 )
 declare -A uiAllowed=(
   [input]=""
+  [commands]="input"
   [window]="input"
   [view]=""
   [document]=""
   [jobs]=""
   [sculpting]="view document input"
-  [panels]="app document modes"
-  [modes]="app document jobs panels sculpting view"
-  [app]="app document input jobs modes panels sculpting view window"
+  [tools]="commands document input jobs sculpting view"
+  [panels]="app commands document modes tools"
+  [modes]="app commands document jobs panels sculpting view"
+  [app]="app commands document input jobs modes panels sculpting tools view window"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }
@@ -58,7 +60,7 @@ grep -rlE '#include <vtk' core | grep -vE '^core/(scan|io)/' && fail "VTK includ
 grep -rlE '#include ("sculpt/cli/|"ui/|<CLI/)' sculpt/session && fail "the session includes the command line or the UI"
 grep -rlE '#include "sculpt/cli/' ui && fail "ui/ includes the command line"
 grep -rlE '#include <vtk' ui | grep -vE '^ui/(view|app)/' && fail "VTK included outside ui/view and ui/app"
-grep -rlE '#include <(imgui|backends/)' ui | grep -vE '^ui/(panels|app|input)/' && fail "ImGui outside ui/panels, ui/input, ui/app"
-grep -rlE '#include <GLFW' ui | grep -vE '^ui/(window|input|app|panels)/' && fail "GLFW outside ui/window, ui/input, ui/app, ui/panels"
+grep -rlE '#include <(imgui|backends/)' ui | grep -vE '^ui/(panels|tools|app|input)/' && fail "ImGui outside ui/panels, ui/tools, ui/input, ui/app"
+grep -rlE '#include <GLFW' ui | grep -vE '^ui/(window|input|app|panels|tools)/' && fail "GLFW outside ui/window, ui/input, ui/app, ui/panels, ui/tools"
 if ((failures > 0)); then exit 1; fi
 echo "check-layers: every include follows ARCHITECTURE.md"

@@ -1009,6 +1009,28 @@ TEST(SculptUi, BadInputIsOneLineAndExitTwo)
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+// A DISPLAY that names no usable X server: sculpt-ui says so in one line and exits 2, and the
+// README's first command (scripts/demo.sh) goes headless instead of stopping there.
+TEST(SculptUi, AnUnusableDisplayIsExitTwoAndTheDemoFallsBackToItsHeadlessRun)
+{
+    TempDir dir;
+    const std::string unusable = "DISPLAY=nowhere.invalid:0 ";  // no such host: never a server
+    const CommandResult run = runCommand(unusable + "'" SCULPT_UI_EXECUTABLE "'", dir.path().string());
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_NE(run.err.find("cannot open a window"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("DISPLAY=nowhere.invalid:0"), std::string::npos) << run.err;
+
+    const CommandResult demo =
+        runCommand(unusable + "SCULPT_DEMO_BUILD='" SCULPT_BUILD_DIR "' SCULPT_DEMO_OUT=" + shellQuoted(dir / "out") +
+                       " bash '" SCULPT_SOURCE_DIR "/scripts/demo.sh'",
+                   dir.path().string());
+    ASSERT_EQ(demo.exitCode, 0) << demo.out << demo.err;
+    EXPECT_NE(demo.out.find("runs headless under Xvfb instead"), std::string::npos) << demo.out;
+    for (const char* file : {"face.vdb", "face.ply", "face-ui.png", "clay-ui.png", "face.png"})
+        EXPECT_GT(fs::file_size(dir / "out" / file), 0u) << file;
+}
+
 }  // namespace
 }  // namespace sculpt::test
 

@@ -1,7 +1,7 @@
 // The window's command table, read without a window: one row per command, no key bound twice,
 // and the keys shown as menus and Help show them.
 
-#include "ui/app/commands.h"
+#include "ui/commands/commands.h"
 #include "ui/input/input_event.h"
 
 #include <GLFW/glfw3.h>

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 void SculptApp::execute(Command command)
 {
-    if (mStroke.active()) return;  // nothing interrupts a stroke
+    if (strokeActive()) return;  // nothing interrupts a stroke
     const std::string blocked = whyNot(command);
     if (blocked.empty()) commandRow(command).run(*this);
     else mDialogs.notice = blocked;

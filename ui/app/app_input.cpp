@@ -38,7 +38,7 @@ void SculptApp::handle(const InputEvent& event)
     switch (event.type) {
     case EventType::Resize: mViewport.resize(event.width, event.height); break;
     case EventType::Quit:
-        if (mDrag == Drag::Stroke) endStroke();  // closing the window ends the stroke, kept, then asks
+        mTools.current().finish();  // closing the window ends the stroke, kept, then asks
         execute(Command::Quit);
         break;
     case EventType::Screenshot: mPendingScreenshots.emplace_back(event.text); break;
@@ -65,7 +65,7 @@ void SculptApp::routeMouse(const InputEvent& event)
     const double dx = event.x - mMouseX, dy = event.y - mMouseY;
     if (event.type == EventType::MouseMove) mMouseX = event.x, mMouseY = event.y;
     if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
-    const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None;
+    const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && !mTools.current().holding();
     if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
     if (event.type == EventType::Wheel) zoomAtPointer(event);
     else if (event.type == EventType::MouseButton && event.press) pressButton(event);
@@ -88,61 +88,35 @@ void SculptApp::pressButton(const InputEvent& event)
         mDrag = Drag::None;  // a click keeps the new size
         return;
     }
-    if (mDrag == Drag::Piece) return endPieceGesture(event.button == kLeftButton);  // right drops it
-    if (mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt) && selectPieceAt(mMouseX, mMouseY)) return;
-    if (mCutTool && !mPiecesMode && !mMode && event.button == kLeftButton && !(event.mods & kAlt) && !busy())
-        return beginCut(event);
-    if (!mPiecesMode && event.button == kLeftButton && !(event.mods & kAlt)) {
-        if (const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY)) {  // a button event has no position
-            if (mMode && mMode->press(*hit)) {                                 // a primitive placed, say
+    Tool& tool = mTools.current();
+    if (tool.holding()) {  // a gesture that runs without a button (G, R, S): any press ends it
+        tool.press(event);
+        return;
+    }
+    if (event.button == kLeftButton && !(event.mods & kAlt)) {
+        if (mMode && tool.yieldsToMode()) {
+            const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);  // a button event has no position
+            if (hit && mMode->press(*hit)) {                                 // a primitive placed, say
                 mDrag = Drag::Mode;
                 return;
             }
-            if (!busy()) {
-                beginStroke(event, *hit);
-                return;
-            }
         }
+        if (tool.press(event)) return;
     }
     // Navigation: middle (Blender), right (SculptGL), Alt+left (touchpads), left off the model.
     mDrag = (event.mods & kShift) ? Drag::Pan : (event.mods & kControl) ? Drag::Zoom : Drag::Orbit;
 }
 
-void SculptApp::beginStroke(const InputEvent& event, const SurfaceHit& hit)
-{
-    try {
-        mPicker.freeze(mDocument->session().field(), mDocument->session().mesher()->version());
-        mStrokeMods = event.mods | mHeldMods;
-        mStroke.begin(*mDocument, mBrush, mStrokeMods, hit, mViewport.rayThrough(mMouseX, mMouseY), event.time, mMouseX,
-                      mMouseY);
-        mDrag = Drag::Stroke;
-        mMeasures.pendingSince = arrival(event);
-    } catch (const InputError& e) {
-        mPicker.thaw();
-        showError(e.what());
-    }
-}
-
 void SculptApp::releaseButton(const InputEvent& event)
 {
-    if (mDrag == Drag::Stroke && event.button == kLeftButton) endStroke();
-    if (mDrag == Drag::Cut && event.button == kLeftButton) finishCut();
-    if (mDrag != Drag::Radius && mDrag != Drag::Strength && mDrag != Drag::Piece) mDrag = Drag::None;
-}
-
-void SculptApp::endStroke()
-{
-    mStroke.end(*mDocument);
-    mPicker.thaw();
-    mDrag = Drag::None;
+    if (mTools.current().holding()) mTools.current().release(event);
+    if (mDrag != Drag::Radius && mDrag != Drag::Strength) mDrag = Drag::None;
 }
 
 void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
 {
+    if (mTools.current().holding()) return mTools.current().drag(event);
     switch (mDrag) {
-    case Drag::Stroke: extendStroke(event); break;
-    case Drag::Piece: pointPieceGesture(event.x, event.y); break;
-    case Drag::Cut: mCut.extend(event.x, event.y); break;
     case Drag::Mode:
         if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;
@@ -160,18 +134,10 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
     }
 }
 
-void SculptApp::extendStroke(const InputEvent& event)
+void SculptApp::awaitFrame(const InputEvent& event, std::size_t stamps)
 {
-    const std::optional<SurfaceHit> hit = pickAt(event.x, event.y);
-    try {
-        const std::size_t stamps =
-            mStroke.move(*mDocument, hit, mViewport.rayThrough(event.x, event.y), event.time, event.x, event.y);
-        mMeasures.stamps += stamps;
-        // From when the pointer got there (a replayed event: when it was due) to the frame showing it.
-        if (stamps > 0 && mMeasures.pendingSince < 0.0) mMeasures.pendingSince = arrival(event);
-    } catch (const InputError& e) {
-        showError(e.what());
-    }
+    mMeasures.stamps += stamps;
+    if (mMeasures.pendingSince < 0.0) mMeasures.pendingSince = arrival(event);
 }
 
 void SculptApp::trackModifiers(const InputEvent& event)
@@ -197,13 +163,13 @@ void SculptApp::routeKey(const InputEvent& event)
         mDrag = Drag::None;
         return;
     }
-    if (mDrag == Drag::Piece) {
-        if (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER || event.key == GLFW_KEY_ESCAPE)
-            return endPieceGesture(event.key != GLFW_KEY_ESCAPE);
-        return keyPieceGesture(event.key);
+    if (mTools.current().holding()) {  // a key during a stroke waits; G, R and S take theirs
+        mTools.current().key(event);
+        return;
     }
     if (mDrag != Drag::None) return;
-    std::optional<Command> command = mPiecesMode ? commandForKey(event.key, event.mods, Scope::Pieces) : std::nullopt;
+    const std::optional<Scope> toolScope = mTools.current().keyScope();
+    std::optional<Command> command = toolScope ? commandForKey(event.key, event.mods, *toolScope) : std::nullopt;
     if (!command) command = commandForKey(event.key, event.mods);
     if (command) execute(*command);
 }

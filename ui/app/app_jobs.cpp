@@ -42,7 +42,7 @@ ImportDraft readForImport(const fs::path& path)
 std::string SculptApp::waitReason() const
 {
     if (mJobs.running()) return "wait for " + mJobs.job()->label() + " to finish, or press Esc to cancel it";
-    if (mGesture) return "the piece is moving: a click or Enter keeps it, Esc drops it";
+    if (const std::string gesture = mTools.current().waitReason(); !gesture.empty()) return gesture;
     return mMode ? mMode->waitNotice() : std::string();
 }
 
@@ -116,8 +116,10 @@ void SculptApp::startEdit(ModelEdit edit)
     const std::string label = edit.label;
     startJob<FieldImage>(
         label, [copy, work = std::move(edit.work)](const Progress& p) { return work(std::move(*copy), p); },
-        [this, label, summary = std::move(edit.summary)](FieldImage result) {
-            mDocument->replaceField(std::move(result), label);
+        [this, label, summary = std::move(edit.summary), scripted = std::move(edit.scripted),
+         takes = edit.takes](FieldImage result) {
+            if (takes == ModelEdit::Takes::Mask) mDocument->replaceMask(result.maskPtr(), label, *scripted);
+            else mDocument->replaceField(std::move(result), label, scripted);
             const std::string extra = summary ? summary() : std::string();
             mDialogs.notice = label + " done" + (extra.empty() ? "" : ": " + extra) + " (Ctrl+Z undoes it)";
         });
@@ -166,6 +168,22 @@ void SculptApp::editIslandUnderPointer(bool keep)
                    return model;
                },
                {}});
+}
+
+void SculptApp::drillDrainHoleUnderPointer()
+{
+    if (busy()) return;
+    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    if (!hit) return notify("point at the wall to drill the drain hole through first");
+    const FieldImage& field = mDocument->session().field();
+    const openvdb::Vec3d at(hit->position.x, hit->position.y, hit->position.z);
+    const openvdb::Vec3d normal(hit->normal.x, hit->normal.y, hit->normal.z);
+    const double radius = mDialogs.filter.drainRadiusWorld;
+    const double farthest = std::max(mDocument->session().modelSize(), 4.0 * field.voxelSize());
+    const std::optional<DrainHole> hole = drainHoleAt(field, at, normal, radius, farthest);
+    if (!hole) return notify("no hollow behind the wall here: Filters > Hollow makes one");
+    mDocument->drillHoles({*hole});
+    mDialogs.notice = "drain hole drilled (Ctrl+Z undoes it)";
 }
 
 void SculptApp::startMorph(const fs::path& target, const MorphOptions& options, bool tracked)

@@ -127,6 +127,8 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["notice"] = mDialogs.notice;
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
+    r["tool_chosen"] = mTools.current().name();
+    mTools.current().report(r);
     r["frame_ms"] = mStatus.frameMs;
     r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
     r["latencies_ms"] = mMeasures.latencyMs;

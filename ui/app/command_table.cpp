@@ -28,7 +28,7 @@ CommandRow toolRow(Command command, const char* label, const char* help, int key
 {
     return {command, label, help, {{key}}, nullptr, [](SculptApp& a) {
                 a.brush().tool = tool;
-                a.setCutTool({});
+                a.tools().choose(a.tools().sculpt());
             }};
 }
 
@@ -42,7 +42,10 @@ CommandRow maskRow(Command command, const char* label, const char* help, std::ve
 template <CutGesture::Shape shape, bool masks = false>
 CommandRow cutRow(Command command, const char* label, const char* help, Chord chord)
 {
-    return {command, label, help, {chord}, nullptr, [](SculptApp& a) { a.setCutTool(shape, masks); }};
+    return {command, label, help, {chord}, nullptr, [](SculptApp& a) {
+                a.tools().gesture().choose(shape, masks);
+                a.tools().choose(a.tools().gesture());
+            }};
 }
 
 template <AxisView view>
@@ -105,7 +108,8 @@ const std::vector<CommandRow>& SculptApp::commands()
     };
     static constexpr auto pieceGesture = +[](const App& a) {
         if (!a.waitReason().empty()) return a.waitReason();
-        return a.mPiecesMode ? std::string() : std::string("Tab first: G, R and S move pieces in pieces mode");
+        return a.mTools.isCurrent(a.mTools.pieces()) ? std::string()
+                                                     : std::string("Tab first: G, R and S move pieces in pieces mode");
     };
     static constexpr auto unsavedOpen = +[](const App& a) {
         return a.mDialogs.afterUnsaved ? std::string() : std::string("no unsaved changes are being asked about");
@@ -141,7 +145,7 @@ const std::vector<CommandRow>& SculptApp::commands()
          nullptr,
          [](App& a) {
              a.mBrush.tool = BrushTool::Follow;
-             a.mCutTool.reset();
+             a.mTools.choose(a.mTools.sculpt());
              if (!a.mBrush.target.shape) a.notify("the follow brush needs a target: File > Load Target (Ctrl+T)");
          }},
         toolRow<BrushTool::Primitive>(Command::ToolPrimitive, "Blob", "Stamps a soft blob (Ctrl: carves one)",
@@ -385,20 +389,38 @@ const std::vector<CommandRow>& SculptApp::commands()
          "Masks the island (disjoint bit of clay) under the pointer, as a job",
          {{GLFW_KEY_L, kControl}},
          idle,
-         [](App& a) { a.maskIslandUnderPointer(); }},
+         [](App& a) {
+             const std::optional<SurfaceHit> hit = a.pickAt(a.mMouseX, a.mMouseY);
+             if (!hit) return a.notify("point at the island to mask first");
+             MaskSelection selection;
+             selection.kind = MaskSelectionKind::Island;
+             selection.point = openvdb::Vec3d(hit->position.x, hit->position.y, hit->position.z);
+             a.startEdit(maskSelectionEdit(selection, "mask island"));
+         }},
         {Command::MaskCavities,
          "Mask Cavities",
          "Masks the creases and hollows, where the surface curves inwards (fully within the crease radius), "
          "as a job",
          {},
          idle,
-         [](App& a) { a.maskCavities(); }},
+         [](App& a) {
+             MaskSelection selection;
+             selection.kind = MaskSelectionKind::Cavity;
+             const double voxel = a.mDocument->session().field().voxelSize();
+             selection.creaseRadiusWorld = a.mCreaseRadius > 0.0 ? a.mCreaseRadius : 4.0 * voxel;
+             a.startEdit(maskSelectionEdit(selection, "mask cavities"));
+         }},
         {Command::MaskThinWalls,
          "Mask Thin Walls",
          "Masks the walls thinner than the thickness set here (View > Print Check shows them red), as a job",
          {},
          idle,
-         [](App& a) { a.maskThinWalls(); }},
+         [](App& a) {
+             MaskSelection selection;
+             selection.kind = MaskSelectionKind::Thin;
+             selection.thicknessWorld = a.mCheck.thinnerThan;
+             a.startEdit(maskSelectionEdit(selection, "mask thin walls"));
+         }},
         {Command::MorphTo,
          "Morph To...",
          "Morph the model into a target document, scan or mesh, as a job; then play and keep frames",
@@ -542,31 +564,32 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_TAB}},
          nullptr,
          [](App& a) {
-             a.mPiecesMode = !a.mPiecesMode;
+             a.mTools.toggle(a.mTools.pieces());
              a.mDialogs.notice =
-                 a.mPiecesMode ? "pieces mode: click a piece, G move, R rotate, S scale; Tab: sculpt"
-                               : "sculpting '" + a.mDocument->pieces()[a.mDocument->activePiece()].look.name + "'";
+                 a.mTools.isCurrent(a.mTools.pieces())
+                     ? "pieces mode: click a piece, G move, R rotate, S scale; Tab: sculpt"
+                     : "sculpting '" + a.mDocument->pieces()[a.mDocument->activePiece()].look.name + "'";
          }},
         {Command::MovePiece,
          "Move Piece",
          "Moves the piece with the pointer; stops at the pieces it meets unless Push is on",
          {{GLFW_KEY_G}},
          pieceGesture,
-         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Move); },
+         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Move); },
          Scope::Pieces},
         {Command::RotatePiece,
          "Rotate Piece",
          "Turns the piece about its centre, in the view's plane (X/Y/Z: about that axis)",
          {{GLFW_KEY_R}},
          pieceGesture,
-         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Rotate); },
+         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Rotate); },
          Scope::Pieces},
         {Command::ScalePiece,
          "Scale Piece",
          "Scales the piece about its centre (its voxels with it: the field is not resampled)",
          {{GLFW_KEY_S}},
          pieceGesture,
-         [](App& a) { a.beginPieceGesture(PieceGesture::Kind::Scale); },
+         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Scale); },
          Scope::Pieces},
         {Command::TogglePush,
          "Push",
@@ -574,9 +597,9 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_P}},
          nullptr,
          [](App& a) {
-             toggle(a.mPushPieces);
-             a.mDialogs.notice = a.mPushPieces ? "push: a moved piece dents the pieces it meets"
-                                               : "a moved piece stops at the pieces it meets";
+             toggle(a.mTools.pieces().push());
+             a.mDialogs.notice = a.mTools.pieces().push() ? "push: a moved piece dents the pieces it meets"
+                                                          : "a moved piece stops at the pieces it meets";
          },
          Scope::Pieces},
         {Command::ApplyPlacement,
@@ -584,7 +607,7 @@ const std::vector<CommandRow>& SculptApp::commands()
          "Resamples the piece's voxels where it stands (a job): its placement becomes the identity",
          {{GLFW_KEY_A, kControl}},
          pieceGesture,
-         [](App& a) { a.applyPlacement(a.mDocument->activePiece()); },
+         [](App& a) { a.mTools.pieces().applyPlacement(a.mDocument->activePiece()); },
          Scope::Pieces},
         {Command::AnswerSave,
          "Save",

@@ -106,11 +106,15 @@ int main(int argc, char** argv)
     } catch (const InputError& e) {
         std::cerr << "sculpt-ui: " << e.what() << "\n";
         return 2;
-    } catch (const std::exception& e) {  // no window (no display), or an internal error
+    } catch (const ui::WindowUnavailable& e) {  // exit 2: scripts/demo.sh then runs it headless
         const char* display = std::getenv("DISPLAY");
         std::cerr << "sculpt-ui: " << e.what()
-                  << ((display && *display) ? "" : " (DISPLAY is not set: run it under xvfb-run -a, see the README)")
-                  << "\n";
+                  << ((display && *display) ? " (DISPLAY=" + std::string(display) + ")"
+                                            : std::string(" (DISPLAY is not set)"))
+                  << "; run it under xvfb-run -a, see the README\n";
+        return 2;
+    } catch (const std::exception& e) {  // an internal error
+        std::cerr << "sculpt-ui: internal error: " << e.what() << "\n";
         return 1;
     }
 }

@@ -43,7 +43,7 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
       mDisplay(mViewport.renderer(), mLook, mOptions.chunkBlocks), mScales(mViewport.renderer()),
       mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()), mCursor(mViewport.overlay()),
       mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
-      mRecent(mOptions.stateDir)
+      mRecent(mOptions.stateDir), mTools(*this)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     mDialogs.recovery = mAutosave.pending(mOptions.document);
@@ -151,7 +151,8 @@ HoverKey SculptApp::hoverKey() const
     const SculptSession& session = mDocument->session();
     const bool inView = mMouseX >= 0 && mMouseY >= 0 && mMouseX < mViewport.width() && mMouseY < mViewport.height();
     return {mViewport.rayThrough(mMouseX, mMouseY), session.field().id(), session.mesher()->id(),
-            session.mesher()->version(), inView && (mDrag == Drag::None || mDrag == Drag::Stroke)};
+            session.mesher()->version(),
+            inView && mDrag == Drag::None && (!mTools.current().holding() || mTools.current().showsBrush())};
 }
 
 double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayStart + event.time : event.time; }
@@ -179,10 +180,10 @@ void SculptApp::updateCursor()
         mHoverKey = key;
     }
     const bool show =
-        mHover && !mPiecesMode && !mCutTool && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
+        mHover && mTools.current().showsBrush() && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift), grey
     // for the mask.
-    const BrushTool tool = effectiveTool(mBrush.tool, mStroke.active() ? mStrokeMods : mMods);
+    const BrushTool tool = mTools.sculpt().toolUnder(mMods);
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
     else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
     else if (tool == BrushTool::Mask || tool == BrushTool::Unmask) mCursor.setColour(0.45, 0.45, 0.5);
@@ -211,7 +212,7 @@ void SculptApp::refreshStatus(bool topology)
     mStatus.volume = mStatistics.volume();
     mStatus.area = mStatistics.area();
     // Whole-tree passes: only after a change, and not per frame of a stroke (at its end).
-    if (mMeasuredVersion != session.mesher()->version() && !mStroke.active()) {
+    if (mMeasuredVersion != session.mesher()->version() && !strokeActive()) {
         mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
         mStatus.gridBytes = std::size_t(session.field().grid().memUsage());
         mStatus.mesherBytes = session.mesher()->memoryBytes();
@@ -239,7 +240,7 @@ DetailView SculptApp::detailView(double now)
     }
     const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
     DetailView view;
-    view.still = !(moving || mStroke.active()) || mStatistics.triangles() <= mOptions.lodTriangles;
+    view.still = !(moving || strokeActive()) || mStatistics.triangles() <= mOptions.lodTriangles;
     view.eye = mCamera.eye();
     view.pixelSizeAt = [this](const glm::dvec3& p) { return mViewport.pixelSizeAt(p); };
     if (mHover) {
@@ -277,7 +278,7 @@ void SculptApp::frame()
     mStatus.blocksRemoved += mDisplay.lastRemovals();
     mStatus.bytesUploaded += mDisplay.lastUploadBytes();
     mStatus.chunksUploaded += mDisplay.lastChunkUploads();
-    refreshStatus(!mStroke.active());
+    refreshStatus(!strokeActive());
     updateCursor();
     mPlanes.show(mBrush.symmetry, 0.6 * mModelSize);
     updateTitle();
@@ -330,8 +331,9 @@ void SculptApp::drawPanels()
     drawJobPanel(*this);
     drawModePanel();
     if (mDialogs.help) drawHelpPanel(*this);
-    drawCutOutline();
-    if (!mHover && !mCutTool && !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mMouseX >= 0) {
+    mTools.current().drawOverlay();
+    if (!mHover && mTools.current().showsBrush() && !mTools.current().holding() && !ImGui::GetIO().WantCaptureMouse &&
+        mDrag == Drag::None && mMouseX >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
         const double pixels = mBrush.radius / std::max(1e-12, mViewport.pixelSizeAt(mCamera.focalPoint()));
         ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mMouseX), float(mMouseY)), float(pixels),
@@ -411,8 +413,9 @@ void SculptApp::finishReplay()
 bool SculptApp::quiet() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
-    return mDrag == Drag::None && mWindow.time() - mLastInput > kSettleSeconds && mPendingScreenshots.empty() &&
-           mPendingReports.empty() && mDisplay.pendingChunks() == 0 && !(mMode && mMode->holdsReplay());
+    return mDrag == Drag::None && !mTools.current().holding() && mWindow.time() - mLastInput > kSettleSeconds &&
+           mPendingScreenshots.empty() && mPendingReports.empty() && mDisplay.pendingChunks() == 0 &&
+           !(mMode && mMode->holdsReplay());
 }
 
 bool SculptApp::idle() const { return quiet() && !mJobs.running(); }
@@ -430,7 +433,7 @@ double SculptApp::inputWait() const
 void SculptApp::autosave()
 {
     std::string error;
-    if (mAutosave.tick(*mDocument, mWindow.time(), mStroke.active(), error)) {
+    if (mAutosave.tick(*mDocument, mWindow.time(), strokeActive(), error)) {
         mDialogs.notice = "autosaved to " + mAutosave.recoveryFile(mDocument->path()).string();
         std::cout << "sculpt-ui: " << mDialogs.notice << std::endl;
         mLastInput = mWindow.time();  // show the notice
@@ -478,7 +481,7 @@ void SculptApp::recoverFromInternalError(const std::string& what)
     abandonImGuiFrame();
     std::string saved;
     try {  // what failed may have been a stroke: end it, so that it is kept and saved
-        if (mDrag == Drag::Stroke) endStroke();
+        mTools.current().finish();
         mDrag = Drag::None;
         std::string error;
         if (mAutosave.save(*mDocument, error)) saved = mAutosave.recoveryFile(mDocument->path()).string();

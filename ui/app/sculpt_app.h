@@ -7,8 +7,7 @@
 #include "core/motion/morph.h"
 #include "core/primitives/skeleton.h"
 #include "sculpt/session/model_filter.h"
-#include "ui/app/commands.h"
-#include "ui/app/piece_gesture.h"
+#include "ui/commands/commands.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
 #include "ui/document/file_listing.h"
@@ -18,9 +17,10 @@
 #include "ui/jobs/job_runner.h"
 #include "ui/modes/mode.h"
 #include "ui/modes/mode_host.h"
-#include "ui/sculpting/cut_gesture.h"
 #include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/stroke_controller.h"
+#include "ui/tools/tool_box.h"
+#include "ui/tools/tool_host.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
 #include "ui/view/model_display.h"
@@ -124,7 +124,7 @@ struct Dialogs {
     bool focusField = false;
 };
 
-class SculptApp : private ModeHost {
+class SculptApp : private ModeHost, private ToolHost {
 public:
     SculptApp(AppWindow& window, AppOptions options);
     ~SculptApp();
@@ -141,14 +141,16 @@ public:
     static const std::vector<CommandRow>& commands();
 
     Document& document() override { return *mDocument; }
-    BrushOptions& brush() { return mBrush; }
+    BrushOptions& brush() override { return mBrush; }
     SurfaceLook& look() { return mLook; }
     CameraControl& camera() { return mCamera; }
     Dialogs& dialogs() { return mDialogs; }
     const Dialogs& dialogs() const { return mDialogs; }
     RecentFiles& recent() { return mRecent; }
     const StatusFigures& status() const { return mStatus; }
-    bool strokeActive() const { return mStroke.active(); }
+    bool strokeActive() const { return mTools.sculpt().holding(); }
+    ToolBox& tools() { return mTools; }
+    const ToolBox& tools() const { return mTools; }
     bool scalesShown() const { return mScales.shown(); }
     bool ghostShown() const { return mGhost.shown(); }
     /// The whole-model job running, or nullptr.
@@ -170,45 +172,11 @@ public:
     /// opening the Primitives panel.
     void addPrimitive(SkeletonType type);
 
-    /// Pieces (app_pieces.cpp): the Pieces panel's edits, each one undo step.
-    void selectPiece(std::size_t index);
-    std::vector<PieceLook> pieceLooks() const;
-    void changeLooks(std::vector<PieceLook> looks, const std::string& label);
-    /// Shows only piece `index`; again, shows them all.
-    void soloPiece(std::size_t index);
-    void deletePiece(std::size_t index);
-    void duplicatePiece(std::size_t index);
-    void mergePieces(std::size_t a, std::size_t b);
-    void splitPiece(std::size_t index);
-    /// Resamples the piece where its placement puts it, as a job; its placement becomes the identity.
-    void applyPlacement(std::size_t index);
-    /// Pieces mode (Tab): a click picks the piece to sculpt, G, R and S move it.
-    bool piecesMode() const { return mPiecesMode; }
-    bool& pushPieces() { return mPushPieces; }
-    void beginPieceGesture(PieceGesture::Kind kind);
-
     /// A mask operation on the sculpted piece, one undo step (the status bar says when it changed nothing).
     void editMask(MaskOperation operation);
-    /// Cut and mask gestures (app_cut.cpp): a gesture on the screen cuts through the model along
-    /// the view (Ctrl: fills), or with `masks` masks the clay it covers (Ctrl: unmasks), a job
-    /// landing as one undo step. None: the brush again.
-    void setCutTool(std::optional<CutGesture::Shape> shape, bool masks = false)
-    {
-        mCutTool = shape;
-        mGestureMasks = masks;
-    }
-    std::optional<CutGesture::Shape> cutTool() const { return mCutTool; }
-    bool gestureMasks() const { return mGestureMasks; }
-    /// How deep a cut reaches from the surface under its first point (0: all the way through).
-    double& cutDepth() { return mCutDepth; }
     /// Keeps only (or deletes) the island under the pointer, as a job; says so when none is there.
     void editIslandUnderPointer(bool keep);
-    /// Mask selections (app_masks.cpp), each a job landing as one undo step: the island under
-    /// the pointer, the cavities (concave within creaseRadius(); 0: four voxels), the walls
-    /// thinner than the print check's threshold.
-    void maskIslandUnderPointer();
-    void maskCavities();
-    void maskThinWalls();
+    /// Mask Cavities' radius: concave within it is a cavity (0: four voxels).
     double& creaseRadius() { return mCreaseRadius; }
     /// Drills a drain hole at the pointer through the wall to the hollow behind it, one undo step
     /// (radius: the Hollow dialog's); says so when no hollow lies behind.
@@ -247,6 +215,15 @@ private:
     void autosaveNow() override;
     void notify(std::string notice) override { mDialogs.notice = std::move(notice); }
     void startEdit(ModelEdit edit) override;
+    // What the tools ask (ToolHost).
+    const Viewport& viewport() const override { return mViewport; }
+    const CameraControl& camera() const override { return mCamera; }
+    SurfacePicker& picker() override { return mPicker; }
+    glm::dvec2 pointer() const override { return {mMouseX, mMouseY}; }
+    int heldMods() const override { return mHeldMods; }
+    JobRunner& jobs() override { return mJobs; }
+    void showPlacement(const openvdb::Mat4d& placement) override { mDisplay.setPlacement(placement); }
+    void awaitFrame(const InputEvent& event, std::size_t stamps) override;
     void startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed) override;
     /// Opens `mode` in place of the one open; the status bar shows its hint.
     void openMode(std::unique_ptr<Mode> mode);
@@ -267,23 +244,8 @@ private:
     void routeDialogKey(const InputEvent& event);
     void zoomAtPointer(const InputEvent& event);
     void pressButton(const InputEvent& event);
-    /// The pointer or a key during G, R or S; its end (kept or dropped) as one undo step.
-    void pointPieceGesture(double x, double y);
-    void keyPieceGesture(int key);
-    void endPieceGesture(bool keep);
-    /// Lands a move that dents the pieces `pushed` as a job (pushAside keeps their volumes).
-    void startPushJob(std::size_t index, const openvdb::Mat4d& placement, std::vector<std::size_t> pushed,
-                      const std::string& label);
-    /// Makes the piece under the pixel the one sculpted; false if none is there.
-    bool selectPieceAt(double x, double y);
-    /// Runs `make` as a job; the pieces it makes take the place of those at `replaced`.
-    void startPieceEdit(std::string label, std::vector<std::size_t> replaced, std::function<std::vector<Piece>()> make);
     void releaseButton(const InputEvent& event);
-    void beginStroke(const InputEvent& event, const SurfaceHit& hit);
     void dragTo(const InputEvent& event, double dx, double dy);
-    void extendStroke(const InputEvent& event);
-    /// The stroke ends as one undo step.
-    void endStroke();
     void trackModifiers(const InputEvent& event);
     void updateCursor();
     void updateTitle();
@@ -291,7 +253,7 @@ private:
     void setDocument(std::unique_ptr<Document> document, bool frameIt);
     bool guardUnsaved(Command again) override;
     void saveTo(const std::filesystem::path& path);
-    void showError(const std::string& message);
+    void showError(const std::string& message) override;
     bool modalOpen() const;
     /// When an event happened on the window's clock (a replayed one: when it was due).
     double arrival(const InputEvent& event) const;
@@ -304,9 +266,9 @@ private:
     /// model display at its placement, the others in their colours.
     void showPieces();
     /// The active piece's surface under the pixel, in its field's world (where strokes are made).
-    std::optional<SurfaceHit> pickAt(double x, double y);
+    std::optional<SurfaceHit> pickAt(double x, double y) override;
     /// A hit of pickAt in the world (the active piece's placement applied).
-    SurfaceHit inWorld(const SurfaceHit& hit) const;
+    SurfaceHit inWorld(const SurfaceHit& hit) const override;
     /// What the hover depends on now.
     HoverKey hoverKey() const;
     void replayStrokes();
@@ -315,18 +277,12 @@ private:
     template <typename Result, typename WorkFn, typename LandFn>
     void startJob(std::string label, WorkFn work, LandFn land)
     {
-        mDialogs.notice = label + "...";
-        mJobs.start<Result>(std::move(label), std::move(work), std::move(land));
+        ui::startJob<Result>(*this, std::move(label), std::move(work), std::move(land));
     }
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
-    void beginCut(const InputEvent& event);
-    /// Cuts (or fills) with the finished gesture's prism, as a job.
-    void finishCut();
-    void drawCutOutline() const;
     /// One event of the stroke script the command line replays (--strokes), as the window makes it.
     void replayEvent(const ScriptEvent& event);
-    void selectMask(const MaskSelection& selection, const std::string& label);
     /// Opens the document at `path` as a job; the old one stays if it fails.
     void startOpen(const std::filesystem::path& path, const std::string& grid = {});
     /// The open job itself: a large model shows its preview first (OpenPreview), then fills in.
@@ -353,7 +309,7 @@ private:
     /// Why an edit of the document must wait (a job runs, a mode is open), or "".
     std::string waitReason() const;
     /// True (with waitReason as the notice) if an edit of the document must wait.
-    bool busy();
+    bool busy() override;
     /// Opens `prompt` with `path` in its field, the field focused.
     void openPrompt(Dialogs::Prompt prompt, std::string path = {});
     /// The document's path with `extension` ("doc.ply"), or `fallback` for an unnamed document.
@@ -380,11 +336,7 @@ private:
     std::unique_ptr<Document> mDocument;
     SurfaceStatistics mStatistics;
     BrushOptions mBrush;
-    StrokeController mStroke;
-    std::optional<CutGesture::Shape> mCutTool;  // a cut tool replaces the brush while chosen
-    CutGesture mCut;
-    int mCutMods = 0;       // the modifiers held when the cut began (Ctrl: fill)
-    double mCutNear = 0.0;  // the depth of the surface under the cut's first point (the view's focus off it)
+    ToolBox mTools;
     Dialogs mDialogs;
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
@@ -402,23 +354,16 @@ private:
 
     // Pointer state.
     double mMouseX = -1.0, mMouseY = -1.0;
-    int mMods = 0;        // modifiers of the current input
-    int mHeldMods = 0;    // modifier keys held down
-    int mStrokeMods = 0;  // the modifiers the current stroke began with
+    int mMods = 0;      // modifiers of the current input
+    int mHeldMods = 0;  // modifier keys held down
     std::string mTitle;
-    enum class Drag { None, Stroke, Orbit, Pan, Zoom, Radius, Strength, Mode, Piece, Cut };
+    /// What a drag that is not the tool's does: the camera, a brush setting (F), a mode's handle.
+    enum class Drag { None, Orbit, Pan, Zoom, Radius, Strength, Mode };
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
-    bool mPiecesMode = false, mPushPieces = false;
-    double mCutDepth = 0.0;
-    bool mGestureMasks = false;  // the gesture tool masks instead of cutting
     double mCreaseRadius = 0.0;
     SurfaceTint mCheck;
-    std::optional<PieceGesture> mGesture;       // G, R or S under way
-    openvdb::Mat4d mGestureShown;               // the placement it shows (stopped at contact)
-    std::vector<std::size_t> mObstacles;        // the pieces it stops at
-    std::vector<openvdb::BBoxd> mGestureBoxes;  // every piece's surface box (field world), at its start
-    std::optional<SurfaceHit> mHover;           // the surface under the pointer, picked for mHoverKey
+    std::optional<SurfaceHit> mHover;  // the surface under the pointer, picked for mHoverKey
     HoverKey mHoverKey;
     bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
     double mLastNavigation = -1.0;  // time of the last camera move (level of detail)

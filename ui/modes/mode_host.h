@@ -5,7 +5,7 @@
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
-#include "ui/app/commands.h"
+#include "ui/commands/commands.h"
 #include "ui/jobs/model_edit.h"
 
 #include <functional>

@@ -3,7 +3,7 @@
 /// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,
 ///        the history, the status bar, the dialogs and the help.
 
-#include "ui/app/commands.h"
+#include "ui/commands/commands.h"
 #include "ui/document/file_listing.h"
 
 #include <string>

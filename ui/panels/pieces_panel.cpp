@@ -12,7 +12,7 @@ constexpr std::size_t kSwatches = 8;
 ImVec4 colourOf(const openvdb::Vec3f& c) { return ImVec4(c[0], c[1], c[2], 1.f); }
 
 /// One row per piece: its colour, an eye (shown or hidden) and its name, selected if sculpted.
-void pieceList(SculptApp& app)
+void pieceList(SculptApp& app, PiecesTool& tool)
 {
     const Document& doc = app.document();
     for (std::size_t i = 0; i < doc.pieces().size(); ++i) {
@@ -22,19 +22,19 @@ void pieceList(SculptApp& app)
         ImGui::SameLine();
         bool visible = look.visible;
         if (ImGui::Checkbox("##shown", &visible)) {
-            std::vector<PieceLook> looks = app.pieceLooks();
+            std::vector<PieceLook> looks = tool.looks();
             looks[i].visible = visible;
-            app.changeLooks(std::move(looks), (visible ? "show '" : "hide '") + look.name + "'");
+            tool.changeLooks(std::move(looks), (visible ? "show '" : "hide '") + look.name + "'");
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("shown (hidden pieces are neither drawn nor in the way)");
         ImGui::SameLine();
-        if (ImGui::Selectable(look.name.c_str(), i == doc.activePiece())) app.selectPiece(i);
+        if (ImGui::Selectable(look.name.c_str(), i == doc.activePiece())) tool.select(i);
         ImGui::PopID();
     }
 }
 
 /// The sculpted piece's name, colour and edits.
-void activePiece(SculptApp& app, Dialogs& d)
+void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
 {
     const Document& doc = app.document();
     const std::size_t index = doc.activePiece();
@@ -52,34 +52,34 @@ void activePiece(SculptApp& app, Dialogs& d)
         if (doc.freeName(buffer) != buffer) {
             app.dialogs().notice = std::string("a piece is named '") + buffer + "' already";
         } else {
-            std::vector<PieceLook> looks = app.pieceLooks();
+            std::vector<PieceLook> looks = tool.looks();
             looks[index].name = buffer;
-            app.changeLooks(std::move(looks), "rename '" + look.name + "' to '" + buffer + "'");
+            tool.changeLooks(std::move(looks), "rename '" + look.name + "' to '" + buffer + "'");
         }
     }
     d.pieceName = buffer;
     for (std::size_t k = 0; k < kSwatches; ++k) {
         ImGui::PushID(int(k));
         if (ImGui::ColorButton("##swatch", colourOf(paletteColour(k)), 0, ImVec2(20, 20))) {
-            std::vector<PieceLook> looks = app.pieceLooks();
+            std::vector<PieceLook> looks = tool.looks();
             looks[index].colour = paletteColour(k);
-            app.changeLooks(std::move(looks), "colour '" + look.name + "'");
+            tool.changeLooks(std::move(looks), "colour '" + look.name + "'");
         }
         ImGui::PopID();
         if (k + 1 < kSwatches) ImGui::SameLine();
     }
-    if (ImGui::Button("Solo")) app.soloPiece(index);
+    if (ImGui::Button("Solo")) tool.solo(index);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("show this piece alone; again: show them all");
     ImGui::SameLine();
-    if (ImGui::Button("Duplicate")) app.duplicatePiece(index);
+    if (ImGui::Button("Duplicate")) tool.duplicate(index);
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) app.deletePiece(index);
-    if (ImGui::Button("Split shells")) app.splitPiece(index);
+    if (ImGui::Button("Delete")) tool.remove(index);
+    if (ImGui::Button("Split shells")) tool.split(index);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("a piece per closed shell of this one");
     ImGui::SameLine();
     const bool placed = look.placement != openvdb::Mat4d::identity();
     if (!placed) ImGui::BeginDisabled();
-    if (ImGui::Button("Apply move")) app.applyPlacement(index);
+    if (ImGui::Button("Apply move")) tool.applyPlacement(index);
     if (!placed) ImGui::EndDisabled();
     commandTooltip(app, Command::ApplyPlacement);
     if (doc.pieces().size() > 1) {
@@ -92,7 +92,7 @@ void activePiece(SculptApp& app, Dialogs& d)
             ImGui::EndCombo();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Merge")) app.mergePieces(index, with);
+        if (ImGui::Button("Merge")) tool.merge(index, with);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("one piece of the two (CSG union)");
     }
 }
@@ -101,25 +101,27 @@ void activePiece(SculptApp& app, Dialogs& d)
 
 void drawPiecesPanel(SculptApp& app)
 {
-    if (app.document().pieces().size() < 2 && !app.piecesMode()) return;
+    PiecesTool& tool = app.tools().pieces();
+    const bool piecesMode = app.tools().isCurrent(tool);
+    if (app.document().pieces().size() < 2 && !piecesMode) return;
     const ImVec2 size(236, 0);
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - size.x - 8, 296), ImGuiCond_Always);
     ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     ImGui::Begin("Pieces", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    pieceList(app);
+    pieceList(app, tool);
     ImGui::Separator();
-    activePiece(app, app.dialogs());
+    activePiece(app, tool, app.dialogs());
     ImGui::Separator();
-    bool modeOn = app.piecesMode();
+    bool modeOn = piecesMode;
     if (ImGui::Checkbox("pieces mode", &modeOn)) app.execute(Command::PiecesMode);
     commandTooltip(app, Command::PiecesMode);
     ImGui::SameLine();
-    ImGui::Checkbox("push", &app.pushPieces());
+    ImGui::Checkbox("push", &tool.push());
     commandTooltip(app, Command::TogglePush);
     ImGui::Checkbox("strokes stop at other pieces", &app.brush().stopAtPieces);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("clay added to this piece stops where another piece is (the others are never edited)");
-    if (app.piecesMode()) ImGui::TextDisabled("click picks; G R S move it");
+    if (piecesMode) ImGui::TextDisabled("click picks; G R S move it");
     ImGui::End();
 }
 

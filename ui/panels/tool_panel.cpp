@@ -26,8 +26,9 @@ constexpr const char* kFalloffs[] = {"smooth", "sphere", "sharp", "constant"};
 void toolPalette(SculptApp& app)
 {
     BrushOptions& b = app.brush();
+    ToolBox& tools = app.tools();
     for (int i = 0; i < int(std::size(kTools)); ++i) {
-        const bool current = b.tool == kTools[i].tool && !app.cutTool();
+        const bool current = b.tool == kTools[i].tool && tools.isCurrent(tools.sculpt());
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         if (ImGui::Button(commandRow(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
@@ -46,7 +47,8 @@ void toolPalette(SculptApp& app)
                                      {CutGesture::Shape::Box, true, Command::ToolBoxMask}};
     for (int i = 0; i < int(std::size(kGestures)); ++i) {
         const Gesture& g = kGestures[i];
-        const bool current = app.cutTool() == g.shape && app.gestureMasks() == g.masks;
+        const bool current = tools.isCurrent(tools.gesture()) && tools.gesture().shape() == g.shape &&
+                             tools.gesture().masks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         // Three cuts to a row, the two masks (longer names) on one of their own.
         if (ImGui::Button(commandRow(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
@@ -54,18 +56,7 @@ void toolPalette(SculptApp& app)
         commandTooltip(app, g.command);
         if (i != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();
     }
-    if (app.cutTool()) {
-        ImGui::PushItemWidth(130);
-        float depth = float(app.cutDepth());
-        if (ImGui::DragFloat("depth", &depth, 0.1f, 0.0f, 1e4f, depth > 0.0f ? "%.3g" : "through")) {
-            app.cutDepth() = std::max(0.0f, depth);
-        }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip(
-                "How far behind the surface under the first point the cut or mask reaches (0: all the way "
-                "through)");
-        ImGui::PopItemWidth();
-    }
+    tools.current().drawSettings();
 }
 
 }  // namespace

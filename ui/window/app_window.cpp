@@ -2,8 +2,6 @@
 
 #include <GLFW/glfw3.h>
 
-#include <stdexcept>
-
 namespace sculpt::ui {
 
 namespace {
@@ -29,7 +27,7 @@ std::string glfwError()
 
 AppWindow::AppWindow(int width, int height, const std::string& title)
 {
-    if (!glfwInit()) throw std::runtime_error("cannot open a window: " + glfwError());
+    if (!glfwInit()) throw WindowUnavailable("cannot open a window: " + glfwError());
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 2);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -39,7 +37,7 @@ AppWindow::AppWindow(int width, int height, const std::string& title)
     if (!mWindow) {
         const std::string why = glfwError();
         glfwTerminate();
-        throw std::runtime_error("cannot open an OpenGL 3.2 window: " + why);
+        throw WindowUnavailable("cannot open an OpenGL 3.2 window: " + why);
     }
     glfwMakeContextCurrent(mWindow);
     glfwSwapInterval(1);

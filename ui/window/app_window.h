@@ -7,16 +7,23 @@
 #include "ui/input/input_event.h"
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 struct GLFWwindow;
 
 namespace sculpt::ui {
 
+/// No window could be opened here (no display, an unusable one, no OpenGL 3.2): sculpt-ui exits
+/// 2 with the reason, and scripts/demo.sh goes headless.
+struct WindowUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 class AppWindow {
 public:
     /// Opens a window of `width` x `height` pixels with a current OpenGL 3.2 core context.
-    /// @throws std::runtime_error saying why (no display, no OpenGL 3.2).
+    /// @throws WindowUnavailable saying why.
     AppWindow(int width, int height, const std::string& title);
     ~AppWindow();
     AppWindow(const AppWindow&) = delete;

@@ -1,4 +1,4 @@
-#include "ui/sculpting/cut_gesture.h"
+#include "ui/tools/gesture/cut_gesture.h"
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>

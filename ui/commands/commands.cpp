@@ -1,4 +1,4 @@
-#include "ui/app/commands.h"
+#include "ui/commands/commands.h"
 
 #include "ui/input/input_event.h"
 

@@ -1,4 +1,4 @@
-#include "ui/app/piece_gesture.h"
+#include "ui/tools/pieces/piece_gesture.h"
 
 #include "core/base/text_format.h"
 

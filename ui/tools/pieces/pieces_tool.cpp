@@ -1,0 +1,319 @@
+#include "ui/tools/pieces/pieces_tool.h"
+
+#include "core/field/placed_box.h"
+#include "core/pieces/contact.h"
+#include "core/pieces/lattice_transfer.h"
+#include "core/pieces/piece_edits.h"
+#include "core/pieces/push.h"
+#include "ui/commands/commands.h"
+#include "ui/document/document.h"
+#include "ui/input/input_event.h"
+#include "ui/tools/tool_host.h"
+
+#include <GLFW/glfw3.h>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <limits>
+
+namespace sculpt::ui {
+
+namespace {
+
+using Pieces = std::vector<DocumentPiece>;
+
+Piece asPiece(const DocumentPiece& piece) { return {piece.look, piece.session->field()}; }
+
+/// A piece as contact sees it; `box` its leafWorldBox if known (a gesture keeps them).
+ContactBody bodyOf(const DocumentPiece& piece, const openvdb::Mat4d& placement, const openvdb::BBoxd& box = {})
+{
+    return {piece.session->field(), *piece.session->mesher(), placement, box};
+}
+
+/// The world centre of a piece's surface: what it turns and scales about.
+glm::dvec3 centreOf(const DocumentPiece& piece)
+{
+    const openvdb::BBoxd box = leafWorldBox(piece.session->field());
+    if (box.empty()) return glm::dvec3(0.0);
+    const openvdb::Vec3d c = piece.look.placement.transform(box.getCenter());
+    return {c.x(), c.y(), c.z()};
+}
+
+}  // namespace
+
+bool PiecesTool::press(const InputEvent& event)
+{
+    if (mGesture) {
+        endGesture(event.button == kLeftButton);  // right drops it
+        return true;
+    }
+    const glm::dvec2 at = mHost.pointer();
+    return selectAt(at.x, at.y);
+}
+
+void PiecesTool::drag(const InputEvent& event) { point(event.x, event.y); }
+
+bool PiecesTool::key(const InputEvent& event)
+{
+    if (event.key == GLFW_KEY_ENTER || event.key == GLFW_KEY_KP_ENTER || event.key == GLFW_KEY_ESCAPE) {
+        endGesture(event.key != GLFW_KEY_ESCAPE);
+        return true;
+    }
+    const glm::dvec2 at = mHost.pointer();
+    if (mGesture->key(event.key)) point(at.x, at.y);
+    return true;
+}
+
+void PiecesTool::finish()
+{
+    if (mGesture) endGesture(false);
+}
+
+std::string PiecesTool::waitReason() const
+{
+    return mGesture ? "the piece is moving: a click or Enter keeps it, Esc drops it" : std::string();
+}
+
+std::optional<Scope> PiecesTool::keyScope() const { return Scope::Pieces; }
+
+void PiecesTool::report(nlohmann::json& out) const { out["pieces_tool"] = {{"push", mPush}, {"moving", holding()}}; }
+
+std::vector<PieceLook> PiecesTool::looks() const
+{
+    std::vector<PieceLook> looks;
+    for (const DocumentPiece& piece : mHost.document().pieces()) looks.push_back(piece.look);
+    return looks;
+}
+
+void PiecesTool::select(std::size_t index)
+{
+    Document& document = mHost.document();
+    if (mGesture || index >= document.pieces().size()) return;
+    document.setActivePiece(index);
+    mHost.notify("sculpting '" + document.pieces()[index].look.name + "'");
+}
+
+void PiecesTool::changeLooks(std::vector<PieceLook> looks, const std::string& label)
+{
+    if (mHost.busy()) return;
+    mHost.document().setLooks(std::move(looks), label);
+    mHost.notify(label + " (Ctrl+Z undoes it)");
+}
+
+void PiecesTool::solo(std::size_t index)
+{
+    std::vector<PieceLook> all = looks();
+    const bool soloAlready = std::all_of(all.begin(), all.end(),
+                                         [&](const PieceLook& look) { return look.visible == (&look == &all[index]); });
+    for (PieceLook& look : all) look.visible = soloAlready || &look == &all[index];
+    const std::string label = (soloAlready ? "show all, was solo '" : "solo '") + all[index].name + "'";
+    changeLooks(std::move(all), label);
+}
+
+void PiecesTool::remove(std::size_t index)
+{
+    if (mHost.busy()) return;
+    Document& document = mHost.document();
+    if (document.pieces().size() < 2) return mHost.showError("a document keeps at least one piece: this is its last");
+    const std::string name = document.pieces()[index].look.name;
+    document.replacePieces({index}, {}, "delete '" + name + "'");
+    mHost.notify("deleted '" + name + "' (Ctrl+Z brings it back)");
+}
+
+void PiecesTool::startPieceEdit(std::string label, std::vector<std::size_t> replaced,
+                                std::function<std::vector<Piece>()> make)
+{
+    if (mHost.busy()) return;
+    startJob<Pieces>(
+        mHost, label,
+        [make = std::move(make)](const Progress& progress) {
+            std::vector<Piece> made = make();
+            Pieces pieces;
+            for (std::size_t i = 0; i < made.size(); ++i) {
+                pieces.push_back(makeDocumentPiece(std::move(made[i]), scaledProgress(progress, double(i) / made.size(),
+                                                                                      double(i + 1) / made.size())));
+            }
+            return pieces;
+        },
+        [this, label, replaced](Pieces pieces) {
+            const std::size_t count = pieces.size();
+            mHost.document().replacePieces(replaced, std::move(pieces), label);
+            mHost.notify(label + ": " + std::to_string(count) + " piece" + (count == 1 ? "" : "s") +
+                         " (Ctrl+Z undoes it)");
+        });
+}
+
+void PiecesTool::duplicate(std::size_t index)
+{
+    Document& document = mHost.document();
+    Piece copy = asPiece(document.pieces()[index]);
+    copy.name = document.freeName(copy.name + " copy");
+    startPieceEdit("duplicate '" + document.pieces()[index].look.name + "'", {},
+                   [copy]() { return std::vector<Piece>{Piece(copy, copy.field.deepCopy())}; });
+}
+
+void PiecesTool::merge(std::size_t a, std::size_t b)
+{
+    if (a == b) return;
+    const Document& document = mHost.document();
+    const Piece first = asPiece(document.pieces()[std::min(a, b)]), second = asPiece(document.pieces()[std::max(a, b)]);
+    startPieceEdit("merge '" + first.name + "' and '" + second.name + "'", {std::min(a, b), std::max(a, b)},
+                   [first, second]() { return std::vector<Piece>{mergePieces(first, second)}; });
+}
+
+void PiecesTool::split(std::size_t index)
+{
+    const Piece piece = asPiece(mHost.document().pieces()[index]);
+    startPieceEdit("split '" + piece.name + "'", {index}, [piece]() { return splitPiece(piece); });
+}
+
+void PiecesTool::applyPlacement(std::size_t index)
+{
+    if (mHost.busy()) return;
+    const Piece piece = asPiece(mHost.document().pieces()[index]);
+    if (piece.placement == openvdb::Mat4d::identity()) return;
+    const std::string label = "apply the placement of '" + piece.name + "'";
+    startJob<FieldImage>(
+        mHost, label,
+        [piece](const Progress&) {
+            // Resampled into its own lattice where it stands now: its placement becomes the identity.
+            return onLatticeOf(piece.field, piece.placement, piece.field, openvdb::Mat4d::identity(),
+                               piece.field.halfWidthVoxels());
+        },
+        [this, index, label](FieldImage placed) {
+            std::vector<std::pair<std::size_t, FieldImage>> resampled;
+            resampled.emplace_back(index, std::move(placed));
+            mHost.document().movePiece(index, openvdb::Mat4d::identity(), std::move(resampled), label);
+            mHost.notify(label + ": its voxels resampled where it stands (Ctrl+Z undoes it)");
+        });
+}
+
+// ---------------------------------------------------------------------------------------------
+// G, R, S
+
+void PiecesTool::beginGesture(PieceGesture::Kind kind)
+{
+    if (mGesture || mHost.busy()) return;
+    const Document& document = mHost.document();
+    const std::size_t active = document.activePiece();
+    const DocumentPiece& moved = document.pieces()[active];
+    const glm::dvec3 view = glm::normalize(mHost.camera().focalPoint() - mHost.camera().eye());
+    const glm::dvec2 at = mHost.pointer();
+    mGesture.emplace(kind, moved.look.placement, centreOf(moved), mHost.viewport(), view, at.x, at.y);
+    mShown = moved.look.placement;
+    // Pieces it touches already (a label map's neighbours) are not in its way. Their boxes are
+    // found once: a pointer event's contact test then costs nothing for the pieces far away.
+    mObstacles.clear();
+    const auto& pieces = document.pieces();
+    mBoxes.clear();
+    for (const DocumentPiece& piece : pieces) mBoxes.push_back(leafWorldBox(piece.session->field()));
+    const ContactBody start = bodyOf(moved, moved.look.placement, mBoxes[active]);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        if (i != active && pieces[i].look.visible &&
+            !overlap(start, bodyOf(pieces[i], pieces[i].look.placement, mBoxes[i])).any())
+            mObstacles.push_back(i);
+    }
+    mHost.notify(mGesture->describe(moved.session->field().units()));
+}
+
+void PiecesTool::point(double x, double y)
+{
+    mGesture->point(mHost.viewport(), x, y);
+    const Document& document = mHost.document();
+    const DocumentPiece& moved = document.pieces()[document.activePiece()];
+    double free = 1.0;
+    if (!mPush) {  // stop at the first contact along the gesture
+        const auto along = [this](double t) { return mGesture->placementAt(t); };
+        const ContactBody start = bodyOf(moved, moved.look.placement, mBoxes[document.activePiece()]);
+        for (std::size_t i : mObstacles) {
+            const DocumentPiece& other = document.pieces()[i];
+            free = std::min(free, freeFraction(start, bodyOf(other, other.look.placement, mBoxes[i]), along));
+        }
+    }
+    mShown = mGesture->placementAt(free);
+    mHost.showPlacement(mShown);
+    mHost.notify(mGesture->describe(moved.session->field().units()) + (free < 1.0 ? " - stopped at contact" : ""));
+}
+
+void PiecesTool::endGesture(bool keep)
+{
+    Document& document = mHost.document();
+    const std::size_t index = document.activePiece();
+    const DocumentPiece& moved = document.pieces()[index];
+    const char* verb = mGesture->kind() == PieceGesture::Kind::Move     ? "move '"
+                       : mGesture->kind() == PieceGesture::Kind::Rotate ? "rotate '"
+                                                                        : "scale '";
+    const std::string label = verb + moved.look.name + "'";
+    mGesture.reset();
+    if (!keep || mShown == moved.look.placement) {
+        mHost.showPlacement(moved.look.placement);
+        mHost.notify(keep ? "" : "move dropped");
+        return;
+    }
+    std::vector<std::size_t> pushed;
+    if (mPush) {
+        const auto& pieces = document.pieces();
+        for (std::size_t i = 0; i < pieces.size(); ++i)
+            if (i != index && pieces[i].look.visible &&
+                overlap(bodyOf(moved, mShown), bodyOf(pieces[i], pieces[i].look.placement)).any())
+                pushed.push_back(i);
+    }
+    if (pushed.empty()) {
+        document.movePiece(index, mShown, {}, label);
+        mHost.notify(label + " (Ctrl+Z undoes it)");
+        return;
+    }
+    startPush(index, mShown, pushed, label);
+}
+
+void PiecesTool::startPush(std::size_t index, const openvdb::Mat4d& placement, std::vector<std::size_t> pushed,
+                           const std::string& label)
+{
+    using Dents = std::vector<std::pair<std::size_t, FieldImage>>;
+    const auto& pieces = mHost.document().pieces();
+    const FieldImage pusher = pieces[index].session->field();
+    std::vector<std::pair<Piece, std::size_t>> others;
+    for (std::size_t i : pushed) others.push_back({asPiece(pieces[i]), i});
+    startJob<Dents>(
+        mHost, label + ", pushing " + std::to_string(pushed.size()),
+        [pusher, placement, others](const Progress& progress) {
+            Dents dents;
+            for (std::size_t k = 0; k < others.size(); ++k) {
+                FieldImage dented = others[k].first.field.deepCopy();
+                pushAside(dented, others[k].first.placement, pusher, placement);
+                dents.emplace_back(others[k].second, std::move(dented));
+                sculpt::report(progress, double(k + 1) / double(others.size()));
+            }
+            return dents;
+        },
+        [this, index, placement, label](Dents dents) {
+            mHost.document().movePiece(index, placement, std::move(dents), label);
+            mHost.notify(label + ", the pieces in its way pushed aside (Ctrl+Z undoes both)");
+        });
+}
+
+bool PiecesTool::selectAt(double x, double y)
+{
+    const Ray ray = mHost.viewport().rayThrough(x, y);
+    const auto& pieces = mHost.document().pieces();
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t chosen = pieces.size();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        if (!pieces[i].look.visible) continue;
+        const openvdb::Mat4d& placement = pieces[i].look.placement;
+        SurfacePicker picker;
+        const SculptSession& session = *pieces[i].session;
+        const auto hit =
+            picker.pick(session.field(), session.mesher()->version(), transformedRay(ray, placement.inverse()));
+        if (!hit) continue;
+        const openvdb::Vec3d p = placement.transform(openvdb::Vec3d(hit->position.x, hit->position.y, hit->position.z));
+        const double distance = (p - openvdb::Vec3d(ray.origin.x, ray.origin.y, ray.origin.z)).length();
+        if (distance < nearest) nearest = distance, chosen = i;
+    }
+    if (chosen == pieces.size()) return false;
+    select(chosen);
+    return true;
+}
+
+}  // namespace sculpt::ui
