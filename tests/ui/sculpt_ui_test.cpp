@@ -600,7 +600,7 @@ TEST(SculptUi, ABoxMaskAndADrainHoleDrilledAtThePointerAreOneUndoStepEachAndRepl
     ASSERT_EQ(runSculpt("hollow ball.vdb --thickness 2 -o shell.vdb", dir.path()).exitCode, 0);
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
-    events.report(r, "start").key("B", {"shift"}).drag(kCentreX - 400, kCentreY - 300, kCentreX - 120, kCentreY + 300);
+    events.report(r, "start").key("B", {"shift"}).drag(kCentreX - 380, kCentreY - 300, kCentreX - 120, kCentreY + 300);
     events.untilJobEnds().report(r, "masked").screenshot(dir / "masked.png");
     events.key("S").move(kCentreX, kCentreY).key("H", {"ctrl"}).report(r, "drilled").screenshot(dir / "drilled.png");
     events.key("Z", {"ctrl"}).report(r, "undone");

@@ -9,7 +9,7 @@
 #include "ui/app/sculpt_app.h"
 #include "ui/modes/morph_mode.h"
 #include "ui/modes/primitives_mode.h"
-#include "ui/window/app_window.h"
+#include "ui/window/window.h"
 
 #include <algorithm>
 #include <iostream>
@@ -23,15 +23,11 @@ void SculptApp::execute(Command command)
 {
     if (strokeActive()) return;  // nothing interrupts a stroke
     const std::string blocked = whyNot(command);
-    if (blocked.empty()) commandRow(command).run(*this);
+    if (blocked.empty()) mCommands.row(command).run();
     else mDialogs.notice = blocked;
 }
 
-std::string SculptApp::whyNot(Command command) const
-{
-    const CommandRow& row = commandRow(command);
-    return row.blocked ? row.blocked(*this) : std::string();
-}
+std::string SculptApp::whyNot(Command command) const { return mCommands.whyNot(command); }
 
 bool Dialogs::confirmable() const
 {

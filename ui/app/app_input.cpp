@@ -3,7 +3,7 @@
 #include "core/base/errors.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/input/imgui_input.h"
-#include "ui/window/app_window.h"
+#include "ui/window/window.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -169,14 +169,14 @@ void SculptApp::routeKey(const InputEvent& event)
     }
     if (mDrag != Drag::None) return;
     const std::optional<Scope> toolScope = mTools.current().keyScope();
-    std::optional<Command> command = toolScope ? commandForKey(event.key, event.mods, *toolScope) : std::nullopt;
-    if (!command) command = commandForKey(event.key, event.mods);
+    std::optional<Command> command = toolScope ? mCommands.forKey(event.key, event.mods, *toolScope) : std::nullopt;
+    if (!command) command = mCommands.forKey(event.key, event.mods);
     if (command) execute(*command);
 }
 
 void SculptApp::routeDialogKey(const InputEvent& event)
 {
-    const std::optional<Command> command = commandForKey(event.key, event.mods, Scope::Dialog);
+    const std::optional<Command> command = mCommands.forKey(event.key, event.mods, Scope::Dialog);
     if (!command) return;
     // A field being edited keeps its keys, Enter too: what it holds reaches the dialog's settings
     // only when ImGui has read the keys typed before (okOrCancel hears that Enter). Esc closes.

@@ -13,7 +13,7 @@
 #include "ui/modes/import_mode.h"
 #include "ui/modes/morph_mode.h"
 #include "ui/view/block_polydata.h"
-#include "ui/window/app_window.h"
+#include "ui/window/window.h"
 
 #include <chrono>
 #include <iostream>

@@ -3,6 +3,7 @@
 #include "core/field/grid_checksum.h"
 #include "ui/app/process_memory.h"
 #include "ui/app/sculpt_app.h"
+#include "ui/window/window.h"
 
 #include <nlohmann/json.hpp>
 #include <vtkImageData.h>
@@ -46,6 +47,8 @@ const char* promptName(Dialogs::Prompt prompt)
 
 void SculptApp::writeScreenshot(const fs::path& path)
 {
+    if (!mWindow.draws())
+        return showError(path.string() + ": no screenshot without a window (headless: nothing is drawn)");
     const int w = mViewport.width(), h = mViewport.height();
     auto image = vtkSmartPointer<vtkImageData>::New();
     image->SetDimensions(w, h, 1);

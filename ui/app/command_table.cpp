@@ -1,12 +1,13 @@
-// SculptApp's commands, each registered once: label, help, keys, when it can run and what it
-// does. Tools and navigation follow Blender's sculpt mode where it has a key; symmetry is X/Y/Z.
+// The window's own commands (files, edits of the whole model, the view, modes, dialogs), each
+// added once to its registry: label, help, keys, when it can run and what it does. The tools add
+// theirs (ui/tools). Navigation follows Blender's sculpt mode where it has a key.
 
 #include "ui/app/sculpt_app.h"
 #include "ui/input/input_event.h"
 #include "ui/modes/import_mode.h"
 #include "ui/modes/morph_mode.h"
 #include "ui/modes/primitives_mode.h"
-#include "ui/window/app_window.h"
+#include "ui/window/window.h"
 
 #include <GLFW/glfw3.h>
 
@@ -14,48 +15,40 @@
 
 namespace sculpt::ui {
 
-const std::vector<CommandRow>& commandTable() { return SculptApp::commands(); }
-
 namespace {
 
 constexpr int kCtrlShift = kControl | kShift;
 
 void toggle(bool& flag) { flag = !flag; }
 
-// Rows that differ only in their data: a tool to pick, a view to look along, an orbit step.
-template <BrushTool tool>
-CommandRow toolRow(Command command, const char* label, const char* help, int key)
-{
-    return {command, label, help, {{key}}, nullptr, [](SculptApp& a) {
-                a.brush().tool = tool;
-                a.tools().choose(a.tools().sculpt());
-            }};
-}
+/// A row as this file writes it: its rule and action take the app (they reach its insides, being
+/// written in its member addCommands).
+struct AppRow {
+    Command command;
+    const char* label;
+    const char* help;
+    std::vector<Chord> chords;
+    std::string (*blocked)(const SculptApp& app);
+    void (*run)(SculptApp& app);
+    Scope scope = Scope::View;
+};
 
+// Rows that differ only in their data: a mask operation, a view to look along, an orbit step.
 template <MaskOperation operation>
-CommandRow maskRow(Command command, const char* label, const char* help, std::vector<Chord> chords,
-                   std::string (*blocked)(const SculptApp&))
+AppRow maskRow(Command command, const char* label, const char* help, std::vector<Chord> chords,
+               std::string (*blocked)(const SculptApp&))
 {
     return {command, label, help, std::move(chords), blocked, [](SculptApp& a) { a.editMask(operation); }};
 }
 
-template <CutGesture::Shape shape, bool masks = false>
-CommandRow cutRow(Command command, const char* label, const char* help, Chord chord)
-{
-    return {command, label, help, {chord}, nullptr, [](SculptApp& a) {
-                a.tools().gesture().choose(shape, masks);
-                a.tools().choose(a.tools().gesture());
-            }};
-}
-
 template <AxisView view>
-CommandRow viewRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
+AppRow viewRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
 {
     return {command, label, help, std::move(chords), nullptr, [](SculptApp& a) { a.camera().axisView(view); }};
 }
 
 template <int yawDegrees, int pitchDegrees>
-CommandRow orbitRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
+AppRow orbitRow(Command command, const char* label, const char* help, std::vector<Chord> chords)
 {
     void (*orbit)(SculptApp&) = [](SculptApp& a) { a.camera().orbitDegrees(yawDegrees, pitchDegrees); };
     return {command, label, help, std::move(chords), nullptr, orbit};
@@ -63,7 +56,7 @@ CommandRow orbitRow(Command command, const char* label, const char* help, std::v
 
 /// "Which level set?": the one numbered `number` (its key).
 template <int number>
-CommandRow gridRow()
+AppRow gridRow()
 {
     constexpr std::size_t index = number - 1;
     return {Command(int(Command::ChooseGrid1) + int(index)),
@@ -81,7 +74,7 @@ CommandRow gridRow()
 
 }  // namespace
 
-const std::vector<CommandRow>& SculptApp::commands()
+void SculptApp::addCommands()
 {
     using App = SculptApp;
     using P = Dialogs::Prompt;
@@ -106,11 +99,6 @@ const std::vector<CommandRow>& SculptApp::commands()
         return a.mMode ? std::string()
                        : std::string("nothing to apply: Enter applies an import, primitives or a frame");
     };
-    static constexpr auto pieceGesture = +[](const App& a) {
-        if (!a.waitReason().empty()) return a.waitReason();
-        return a.mTools.isCurrent(a.mTools.pieces()) ? std::string()
-                                                     : std::string("Tab first: G, R and S move pieces in pieces mode");
-    };
     static constexpr auto unsavedOpen = +[](const App& a) {
         return a.mDialogs.afterUnsaved ? std::string() : std::string("no unsaved changes are being asked about");
     };
@@ -123,54 +111,7 @@ const std::vector<CommandRow>& SculptApp::commands()
     static constexpr auto step = +[](App& a, int direction) {
         if (a.mMode) a.mMode->step(direction);
     };
-    static const std::vector<CommandRow> table = {
-        toolRow<BrushTool::Add>(Command::ToolAdd, "Add", "Builds clay up (Ctrl: carve)", GLFW_KEY_A),
-        toolRow<BrushTool::Carve>(Command::ToolCarve, "Carve", "Digs clay away (Ctrl: add)", GLFW_KEY_C),
-        toolRow<BrushTool::Inflate>(Command::ToolInflate, "Inflate",
-                                    "Swells the surface along its normal (Ctrl: deflate)", GLFW_KEY_I),
-        toolRow<BrushTool::Deflate>(Command::ToolDeflate, "Deflate",
-                                    "Shrinks the surface along its normal (Ctrl: inflate)", GLFW_KEY_D),
-        toolRow<BrushTool::Smooth>(Command::ToolSmooth, "Smooth", "Evens out bumps (hold Shift with any tool)",
-                                   GLFW_KEY_S),
-        toolRow<BrushTool::Flatten>(Command::ToolFlatten, "Flatten", "Presses the surface onto its mean plane",
-                                    GLFW_KEY_T),
-        toolRow<BrushTool::Grab>(Command::ToolGrab, "Grab", "Drags the clay under the brush along with the mouse",
-                                 GLFW_KEY_G),
-        toolRow<BrushTool::Pinch>(Command::ToolPinch, "Pinch", "Pulls the surface towards the stroke: sharp creases",
-                                  GLFW_KEY_P),
-        {Command::ToolFollow,
-         "Follow",
-         "Pulls the surface under the brush onto the target shape (Ctrl+T loads one)",
-         {{GLFW_KEY_O}},
-         nullptr,
-         [](App& a) {
-             a.mBrush.tool = BrushTool::Follow;
-             a.mTools.choose(a.mTools.sculpt());
-             if (!a.mBrush.target.shape) a.notify("the follow brush needs a target: File > Load Target (Ctrl+T)");
-         }},
-        toolRow<BrushTool::Primitive>(Command::ToolPrimitive, "Blob", "Stamps a soft blob (Ctrl: carves one)",
-                                      GLFW_KEY_B),
-        toolRow<BrushTool::Mask>(Command::ToolMask, "Mask",
-                                 "Paints the mask: masked clay holds still under every tool, filter and morph "
-                                 "(Ctrl: erases it)",
-                                 GLFW_KEY_M),
-        cutRow<CutGesture::Shape::Lasso>(Command::ToolLassoCut, "Lasso Cut",
-                                         "Draw around what to cut away, through the model along the view "
-                                         "(Ctrl: fill it with clay)",
-                                         {GLFW_KEY_J}),
-        cutRow<CutGesture::Shape::Box>(Command::ToolBoxCut, "Box Cut",
-                                       "Drag a box to cut away along the view (Ctrl: fill it)", {GLFW_KEY_J, kShift}),
-        cutRow<CutGesture::Shape::Line>(Command::ToolLineCut, "Line Cut",
-                                        "Drag a line: what lies to its right, as you see it, is cut away",
-                                        {GLFW_KEY_J, kAlt}),
-        cutRow<CutGesture::Shape::Box, true>(Command::ToolBoxMask, "Box Mask",
-                                             "Drag a box: the clay in it, through the model along the view, is "
-                                             "masked (Ctrl: unmasked)",
-                                             {GLFW_KEY_B, kShift}),
-        cutRow<CutGesture::Shape::Lasso, true>(Command::ToolLassoMask, "Lasso Mask",
-                                               "Draw around the clay to mask, through the model along the view "
-                                               "(Ctrl: unmask it)",
-                                               {GLFW_KEY_B, kAlt}),
+    const std::vector<AppRow> rows = {
         {Command::RadiusDrag,
          "Radius",
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
@@ -183,38 +124,6 @@ const std::vector<CommandRow>& SculptApp::commands()
          {{GLFW_KEY_F, kShift}},
          nullptr,
          [](App& a) { a.mDrag = Drag::Strength, a.mDragStartX = a.mMouseX, a.mDragStartValue = a.mBrush.strength; }},
-        {Command::RadiusSmaller,
-         "Smaller brush",
-         "Radius x 0.8",
-         {{GLFW_KEY_LEFT_BRACKET}},
-         nullptr,
-         [](App& a) {
-             a.mBrush.radius = std::max(0.5 * a.mDocument->session().field().voxelSize(), a.mBrush.radius * 0.8);
-         }},
-        {Command::RadiusLarger,
-         "Larger brush",
-         "Radius x 1.25",
-         {{GLFW_KEY_RIGHT_BRACKET}},
-         nullptr,
-         [](App& a) { a.mBrush.radius *= 1.25; }},
-        {Command::SymmetryX,
-         "Mirror X",
-         "Mirror strokes across the plane x = 0",
-         {{GLFW_KEY_X}},
-         nullptr,
-         [](App& a) { toggle(a.mBrush.symmetry.x); }},
-        {Command::SymmetryY,
-         "Mirror Y",
-         "Mirror strokes across the plane y = 0",
-         {{GLFW_KEY_Y}},
-         nullptr,
-         [](App& a) { toggle(a.mBrush.symmetry.y); }},
-        {Command::SymmetryZ,
-         "Mirror Z",
-         "Mirror strokes across the plane z = 0",
-         {{GLFW_KEY_Z}},
-         nullptr,
-         [](App& a) { toggle(a.mBrush.symmetry.z); }},
         {Command::Undo,
          "Undo",
          "Undo the last stroke",
@@ -557,58 +466,6 @@ const std::vector<CommandRow>& SculptApp::commands()
              if (a.mJobs.running()) a.mJobs.cancel();
              else a.closeMode();
          }},
-        {Command::PiecesMode,
-         "Pieces Mode",
-         "Tab: a click picks the piece to sculpt, G/R/S move, turn and scale it (X/Y/Z: an axis; type a value); "
-         "Tab again: back to sculpting",
-         {{GLFW_KEY_TAB}},
-         nullptr,
-         [](App& a) {
-             a.mTools.toggle(a.mTools.pieces());
-             a.mDialogs.notice =
-                 a.mTools.isCurrent(a.mTools.pieces())
-                     ? "pieces mode: click a piece, G move, R rotate, S scale; Tab: sculpt"
-                     : "sculpting '" + a.mDocument->pieces()[a.mDocument->activePiece()].look.name + "'";
-         }},
-        {Command::MovePiece,
-         "Move Piece",
-         "Moves the piece with the pointer; stops at the pieces it meets unless Push is on",
-         {{GLFW_KEY_G}},
-         pieceGesture,
-         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Move); },
-         Scope::Pieces},
-        {Command::RotatePiece,
-         "Rotate Piece",
-         "Turns the piece about its centre, in the view's plane (X/Y/Z: about that axis)",
-         {{GLFW_KEY_R}},
-         pieceGesture,
-         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Rotate); },
-         Scope::Pieces},
-        {Command::ScalePiece,
-         "Scale Piece",
-         "Scales the piece about its centre (its voxels with it: the field is not resampled)",
-         {{GLFW_KEY_S}},
-         pieceGesture,
-         [](App& a) { a.mTools.pieces().beginGesture(PieceGesture::Kind::Scale); },
-         Scope::Pieces},
-        {Command::TogglePush,
-         "Push",
-         "A piece moved into another dents it, keeping its volume, instead of stopping at it",
-         {{GLFW_KEY_P}},
-         nullptr,
-         [](App& a) {
-             toggle(a.mTools.pieces().push());
-             a.mDialogs.notice = a.mTools.pieces().push() ? "push: a moved piece dents the pieces it meets"
-                                                          : "a moved piece stops at the pieces it meets";
-         },
-         Scope::Pieces},
-        {Command::ApplyPlacement,
-         "Apply Move",
-         "Resamples the piece's voxels where it stands (a job): its placement becomes the identity",
-         {{GLFW_KEY_A, kControl}},
-         pieceGesture,
-         [](App& a) { a.mTools.pieces().applyPlacement(a.mDocument->activePiece()); },
-         Scope::Pieces},
         {Command::AnswerSave,
          "Save",
          "Unsaved changes: save them, then go on",
@@ -673,7 +530,12 @@ const std::vector<CommandRow>& SculptApp::commands()
          },
          Scope::Dialog},
     };
-    return table;
+    for (const AppRow& row : rows) {
+        std::function<std::string()> blocked;
+        if (row.blocked) blocked = [this, rule = row.blocked] { return rule(*this); };
+        mCommands.add({row.command, row.label, row.help, row.chords, std::move(blocked),
+                       [this, action = row.run] { action(*this); }, row.scope});
+    }
 }
 
 }  // namespace sculpt::ui

@@ -4,6 +4,7 @@
 #include "core/io/vtk_logging.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/window/app_window.h"
+#include "ui/window/headless_window.h"
 
 #include <CLI/CLI.hpp>
 #include <vtkAutoInit.h>
@@ -13,6 +14,7 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 
 // Without these VTK builds no OpenGL objects: every frame would be one solid colour.
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
@@ -65,6 +67,10 @@ int main(int argc, char** argv)
     cli.add_option("--stroke-log", options.strokeLog,
                    "after --play or --strokes, save the session's strokes as a stroke script");
     cli.add_flag("--stay", options.stay, "keep the window open after a replay");
+    bool headless = false;
+    cli.add_flag("--headless", headless,
+                 "no window and no display: a replay (--play or --strokes) runs whole and writes what it is\n"
+                 "asked to (--save-as, --export, --stroke-log, reports); nothing is drawn, so no --screenshot");
     cli.add_option("--size", size, "window size, WIDTHxHEIGHT")->capture_default_str();
     cli.add_option("--autosave-seconds", options.autosaveSeconds, "autosave interval while there are unsaved changes")
         ->check(CLI::PositiveNumber)
@@ -95,13 +101,20 @@ int main(int argc, char** argv)
         std::cerr << "sculpt-ui: --size " << size << ": expected WIDTHxHEIGHT, 64 to 8192 pixels each\n";
         return 2;
     }
+    if (headless && (options.play.empty() == options.strokes.empty() || !options.screenshot.empty() || options.stay)) {
+        std::cerr << "sculpt-ui: --headless replays exactly one of --play or --strokes, without --screenshot or "
+                     "--stay (nothing is drawn, no one is there)\n";
+        return 2;
+    }
     // VTK's own chatter stays out of the terminal. Not GlobalWarningDisplayOff(): that would also
     // silence the readers' errors, which are caught per call and shown in the window.
     vtkOutputWindow::SetInstance(vtkNew<QuietVtkOutput>());
     quietVtkLogger();
     try {
-        ui::AppWindow window(width, height, "Sculpt");
-        ui::SculptApp app(window, options);
+        std::unique_ptr<ui::Window> window;
+        if (headless) window = std::make_unique<ui::HeadlessWindow>(width, height);
+        else window = std::make_unique<ui::AppWindow>(width, height, "Sculpt");
+        ui::SculptApp app(*window, options);
         return app.run();
     } catch (const InputError& e) {
         std::cerr << "sculpt-ui: " << e.what() << "\n";

@@ -6,7 +6,7 @@
 #include "ui/app/process_memory.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
-#include "ui/window/app_window.h"
+#include "ui/window/window.h"
 
 #include <imgui.h>
 #include <vtkRenderer.h>
@@ -38,8 +38,8 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 
 }  // namespace
 
-SculptApp::SculptApp(AppWindow& window, AppOptions options)
-    : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height()),
+SculptApp::SculptApp(Window& window, AppOptions options)
+    : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height(), window.draws()),
       mDisplay(mViewport.renderer(), mLook, mOptions.chunkBlocks), mScales(mViewport.renderer()),
       mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()), mCursor(mViewport.overlay()),
       mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
@@ -59,6 +59,8 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
     }
     mBrush.radius = 10.0 * mDocument->session().field().voxelSize();
     if (!mOptions.document.empty()) mRecent.add(mOptions.document);
+    mTools.addCommands(mCommands);
+    addCommands();
 
     ImGui::CreateContext();
     ImGui::GetIO().IniFilename = nullptr;  // the same layout on every start (and in every test)
@@ -66,7 +68,13 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
     ImGui::GetStyle().WindowRounding = 4.f;
     ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
     setUpImGuiKeys();
-    ImGui_ImplOpenGL3_Init("#version 150");
+    if (mWindow.draws()) {
+        ImGui_ImplOpenGL3_Init("#version 150");
+    } else {  // what the renderer's set-up would do: the panels lay out text in the font
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        ImGui::GetIO().Fonts->GetTexDataAsAlpha8(&pixels, &width, &height);
+    }
     mWindow.setListener([this](const InputEvent& e) {
         if (!mPlayer) handle(e);
         else if (e.type == EventType::Resize) mViewport.resize(e.width, e.height);  // the replay's own resize
@@ -76,7 +84,7 @@ SculptApp::SculptApp(AppWindow& window, AppOptions options)
 SculptApp::~SculptApp()
 {
     mWindow.setListener({});
-    ImGui_ImplOpenGL3_Shutdown();
+    if (mWindow.draws()) ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
 }
 
@@ -285,14 +293,16 @@ void SculptApp::frame()
 
     mViewport.renderer()->ResetCameraClippingRange();
     mViewport.render();
-    ImGui_ImplOpenGL3_NewFrame();
+    if (mWindow.draws()) ImGui_ImplOpenGL3_NewFrame();
     beginImGuiFrame(mViewport.width(), mViewport.height(), now - mLastFrame);
     ImGui::NewFrame();
     drawPanels();
     mItemActive = ImGui::IsAnyItemActive();
     ImGui::Render();
-    glViewport(0, 0, mViewport.width(), mViewport.height());
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (mWindow.draws()) {
+        glViewport(0, 0, mViewport.width(), mViewport.height());
+        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    }
     for (const fs::path& path : mPendingScreenshots) writeScreenshot(path);
     // A report's own checksum and whole-model figures would weigh on the frames it reports next.
     const bool reporting = !mPendingReports.empty();

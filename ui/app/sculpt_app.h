@@ -7,7 +7,7 @@
 #include "core/motion/morph.h"
 #include "core/primitives/skeleton.h"
 #include "sculpt/session/model_filter.h"
-#include "ui/commands/commands.h"
+#include "ui/commands/command_registry.h"
 #include "ui/document/autosave.h"
 #include "ui/document/document.h"
 #include "ui/document/file_listing.h"
@@ -39,7 +39,7 @@
 
 namespace sculpt::ui {
 
-class AppWindow;
+class Window;
 class PrimitivesMode;
 
 struct AppOptions {
@@ -114,10 +114,9 @@ struct Dialogs {
     std::optional<GridChoice> gridChoice;
     /// True if the open prompt can be confirmed (one asking for a path needs one).
     bool confirmable() const;
-    /// The Pieces panel's name field (of piece pieceNameOf, named pieceNameSeen then) and the
-    /// piece chosen to merge with.
+    /// The Pieces panel's name field (of piece pieceNameOf, named pieceNameSeen then).
     std::string pieceName, pieceNameSeen;
-    std::size_t pieceNameOf = ~std::size_t(0), mergeWith = 0;
+    std::size_t pieceNameOf = ~std::size_t(0);
     std::string error;   ///< shown until dismissed
     std::string notice;  ///< status line (saved, autosaved, ...)
     bool help = false;
@@ -126,7 +125,8 @@ struct Dialogs {
 
 class SculptApp : private ModeHost, private ToolHost {
 public:
-    SculptApp(AppWindow& window, AppOptions options);
+    /// Runs in `window`; one that does not draw (HeadlessWindow) runs everything but the drawing.
+    SculptApp(Window& window, AppOptions options);
     ~SculptApp();
 
     /// Runs until the user quits (or the replay ends). @return the exit status.
@@ -137,8 +137,8 @@ public:
     void execute(Command command);
     /// Why `command` cannot run now ("nothing to undo"), or "" when it can: menus grey it out.
     std::string whyNot(Command command) const;
-    /// The command table's rows (commandTable()): their actions reach the app's insides.
-    static const std::vector<CommandRow>& commands();
+    /// Every command, added by its owner: the keys, menus, tooltips and Help read it.
+    const CommandRegistry& commands() const { return mCommands; }
 
     Document& document() override { return *mDocument; }
     BrushOptions& brush() override { return mBrush; }
@@ -194,6 +194,8 @@ public:
     void openRecent(const std::filesystem::path& path);
 
 private:
+    /// The window's own commands (command_table.cpp); the tools add theirs.
+    void addCommands();
     void frame();
     /// What the display's level of detail needs of this frame (camera motion noticed here).
     DetailView detailView(double now);
@@ -306,8 +308,8 @@ private:
     void startMorph(const std::filesystem::path& target, const MorphOptions& options, bool tracked);
     /// Lands a finished job's result (or reports why there is none).
     void pollJob();
-    /// Why an edit of the document must wait (a job runs, a mode is open), or "".
-    std::string waitReason() const;
+    /// Why an edit of the document must wait (a job runs, a mode is open, a gesture), or "".
+    std::string waitReason() const override;
     /// True (with waitReason as the notice) if an edit of the document must wait.
     bool busy() override;
     /// Opens `prompt` with `path` in its field, the field focused.
@@ -317,7 +319,7 @@ private:
     /// What a replay's wait event waits for: a job, or a mode (a morph playing).
     bool holdsReplay() const;
 
-    AppWindow& mWindow;
+    Window& mWindow;
     AppOptions mOptions;
     Viewport mViewport;
     SurfaceLook mLook;
@@ -337,6 +339,7 @@ private:
     SurfaceStatistics mStatistics;
     BrushOptions mBrush;
     ToolBox mTools;
+    CommandRegistry mCommands;
     Dialogs mDialogs;
     StatusFigures mStatus;
     std::unique_ptr<EventPlayer> mPlayer;

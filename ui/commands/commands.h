@@ -1,16 +1,14 @@
 #pragma once
 /// @file commands.h
-/// @brief Everything a key, a menu item or a button can ask for, each registered once in a
-///        table (ui/app/command_table.cpp) that feeds the keys, the menus (and when they are
-///        greyed out), the tooltips, the Help panel and SculptApp::execute.
+/// @brief Everything a key, a menu item or a button can ask for. Each is registered once, by
+///        the part that owns it, in the window's CommandRegistry, which feeds the keys, the menus
+///        (and when they are greyed out), the tooltips, the Help panel and SculptApp::execute.
 
-#include <optional>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace sculpt::ui {
-
-class SculptApp;
 
 enum class Command {
     ToolAdd,
@@ -104,6 +102,11 @@ enum class Command {
     ScalePiece,
     TogglePush,
     ApplyPlacement,
+    SoloPiece,
+    DuplicatePiece,
+    DeletePiece,
+    SplitPiece,
+    MergePieces,
     // The dialogs' answers (Scope::Dialog).
     AnswerSave,
     AnswerDiscard,
@@ -134,26 +137,18 @@ struct Chord {
     int mods = 0;
 };
 
-/// One command, registered once: what menus, tooltips and Help show, its keys, when it can run
-/// (the menus grey it out by the same rule) and what it does.
+/// One command, registered by the part that owns it (a tool, a mode, the window): what menus,
+/// tooltips and Help show, its keys, when it can run (the menus grey it out by the same rule) and
+/// what it does.
 struct CommandRow {
     Command command;
     const char* label;
     const char* help;
     std::vector<Chord> chords;
-    /// Why it cannot run now ("nothing to undo"), or "" when it can; nullptr: it always can.
-    std::string (*blocked)(const SculptApp& app);
-    void (*run)(SculptApp& app);
+    /// Why it cannot run now ("nothing to undo"), or "" when it can; empty: it always can.
+    std::function<std::string()> blocked;
+    std::function<void()> run;
     Scope scope = Scope::View;
 };
-
-/// Every command, one row each.
-const std::vector<CommandRow>& commandTable();
-/// The row of `command`; a command without one is a programming error (std::logic_error).
-const CommandRow& commandRow(Command command);
-/// "Ctrl+Shift+Z, Ctrl+Y" for a command; "" if it has no key.
-std::string shortcutText(Command command);
-/// The command bound to this key and modifiers in `scope`, if any.
-std::optional<Command> commandForKey(int key, int mods, Scope scope = Scope::View);
 
 }  // namespace sculpt::ui

@@ -29,9 +29,9 @@ bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
 /// A button for a dialog's answer, "Save (S)": its key reaches the command through the table.
 bool answerButton(SculptApp& app, Command command, const char* label = nullptr)
 {
-    const std::string keys = shortcutText(command);
+    const std::string keys = app.commands().shortcutText(command);
     const std::string text =
-        std::string(label ? label : commandRow(command).label) + " (" + keys.substr(0, keys.find(", ")) + ")";
+        std::string(label ? label : app.commands().row(command).label) + " (" + keys.substr(0, keys.find(", ")) + ")";
     const bool clicked = ImGui::Button(text.c_str());
     if (clicked) app.execute(command);
     return clicked;

@@ -20,7 +20,7 @@ constexpr const char* kMouse[][2] = {
 };
 
 /// The commands of `scope` that have keys: keys, name, help.
-void keyTable(const char* title, Scope scope)
+void keyTable(const CommandRegistry& commands, const char* title, Scope scope)
 {
     ImGui::Separator();
     ImGui::TextUnformatted(title);
@@ -29,8 +29,8 @@ void keyTable(const char* title, Scope scope)
     ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, 160.f);
     ImGui::TableSetupColumn("command", ImGuiTableColumnFlags_WidthFixed, 130.f);
     ImGui::TableSetupColumn("help", ImGuiTableColumnFlags_WidthStretch);
-    for (const CommandRow& info : commandTable()) {
-        const std::string keys = shortcutText(info.command);
+    for (const CommandRow& info : commands.rows()) {
+        const std::string keys = commands.shortcutText(info.command);
         if (keys.empty() || info.scope != scope) continue;
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -65,9 +65,9 @@ void drawHelpPanel(SculptApp& app)
         }
         ImGui::EndTable();
     }
-    keyTable("Keys", Scope::View);
-    keyTable("In pieces mode (Tab)", Scope::Pieces);
-    keyTable("In a dialog", Scope::Dialog);
+    keyTable(app.commands(), "Keys", Scope::View);
+    keyTable(app.commands(), "In pieces mode (Tab)", Scope::Pieces);
+    keyTable(app.commands(), "In a dialog", Scope::Dialog);
     ImGui::End();
 }
 

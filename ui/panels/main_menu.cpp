@@ -9,18 +9,27 @@ namespace sculpt::ui {
 
 void commandMenuItem(SculptApp& app, Command command)
 {
-    const std::string keys = shortcutText(command);
+    const std::string keys = app.commands().shortcutText(command);
     const bool enabled = app.whyNot(command).empty();  // the rule execute() checks
-    if (ImGui::MenuItem(commandRow(command).label, keys.empty() ? nullptr : keys.c_str(), false, enabled))
+    if (ImGui::MenuItem(app.commands().row(command).label, keys.empty() ? nullptr : keys.c_str(), false, enabled))
         app.execute(command);
+    commandTooltip(app, command);
+}
+
+void commandButton(SculptApp& app, Command command)
+{
+    const bool enabled = app.whyNot(command).empty();
+    if (!enabled) ImGui::BeginDisabled();
+    if (ImGui::Button(app.commands().row(command).label)) app.execute(command);
+    if (!enabled) ImGui::EndDisabled();
     commandTooltip(app, command);
 }
 
 void commandTooltip(const SculptApp& app, Command command)
 {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
-    const std::string keys = shortcutText(command), blocked = app.whyNot(command);
-    ImGui::SetTooltip("%s%s%s%s%s", commandRow(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
+    const std::string keys = app.commands().shortcutText(command), blocked = app.whyNot(command);
+    ImGui::SetTooltip("%s%s%s%s%s", app.commands().row(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
                       blocked.empty() ? "" : "\nNot now: ", blocked.c_str());
 }
 
@@ -137,18 +146,21 @@ void drawMainMenu(SculptApp& app)
                 app.look().setShading(Shading(s));
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Flat Shading", shortcutText(Command::ToggleFlat).c_str(), app.look().flat()))
+        if (ImGui::MenuItem("Flat Shading", app.commands().shortcutText(Command::ToggleFlat).c_str(),
+                            app.look().flat()))
             app.execute(Command::ToggleFlat);
-        if (ImGui::MenuItem("Wireframe", shortcutText(Command::ToggleWireframe).c_str(), app.look().wireframe()))
+        if (ImGui::MenuItem("Wireframe", app.commands().shortcutText(Command::ToggleWireframe).c_str(),
+                            app.look().wireframe()))
             app.execute(Command::ToggleWireframe);
-        if (ImGui::MenuItem("Scales", shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
+        if (ImGui::MenuItem("Scales", app.commands().shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
             app.execute(Command::ToggleScales);
-        if (ImGui::MenuItem("X-Ray", shortcutText(Command::ToggleXRay).c_str(), app.look().xray()))
+        if (ImGui::MenuItem("X-Ray", app.commands().shortcutText(Command::ToggleXRay).c_str(), app.look().xray()))
             app.execute(Command::ToggleXRay);
-        if (ImGui::MenuItem("Target Ghost", shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
+        if (ImGui::MenuItem("Target Ghost", app.commands().shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
                             app.whyNot(Command::ToggleGhost).empty()))
             app.execute(Command::ToggleGhost);
-        if (ImGui::MenuItem("Trackball Orbit", shortcutText(Command::ToggleTrackball).c_str(), app.camera().trackball))
+        if (ImGui::MenuItem("Trackball Orbit", app.commands().shortcutText(Command::ToggleTrackball).c_str(),
+                            app.camera().trackball))
             app.execute(Command::ToggleTrackball);
         printCheckMenu(app.printCheck());
         ImGui::Separator();

@@ -47,6 +47,8 @@ void warningText(const std::string& text, float width);
 
 /// A menu item running `command`, its keys shown beside it, greyed out when it cannot run.
 void commandMenuItem(SculptApp& app, Command command);
+/// A button running `command`, labelled as it is, greyed out when it cannot run, with its tooltip.
+void commandButton(SculptApp& app, Command command);
 /// The tooltip of the last item: what `command` does, its keys, and why it cannot run now.
 void commandTooltip(const SculptApp& app, Command command);
 

@@ -68,22 +68,16 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
         ImGui::PopID();
         if (k + 1 < kSwatches) ImGui::SameLine();
     }
-    if (ImGui::Button("Solo")) tool.solo(index);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("show this piece alone; again: show them all");
+    commandButton(app, Command::SoloPiece);
     ImGui::SameLine();
-    if (ImGui::Button("Duplicate")) tool.duplicate(index);
+    commandButton(app, Command::DuplicatePiece);
     ImGui::SameLine();
-    if (ImGui::Button("Delete")) tool.remove(index);
-    if (ImGui::Button("Split shells")) tool.split(index);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("a piece per closed shell of this one");
+    commandButton(app, Command::DeletePiece);
+    commandButton(app, Command::SplitPiece);
     ImGui::SameLine();
-    const bool placed = look.placement != openvdb::Mat4d::identity();
-    if (!placed) ImGui::BeginDisabled();
-    if (ImGui::Button("Apply move")) tool.applyPlacement(index);
-    if (!placed) ImGui::EndDisabled();
-    commandTooltip(app, Command::ApplyPlacement);
+    commandButton(app, Command::ApplyPlacement);
     if (doc.pieces().size() > 1) {
-        std::size_t& with = d.mergeWith;
+        std::size_t& with = tool.mergeWith();
         if (with >= doc.pieces().size() || with == index) with = index == 0 ? 1 : 0;
         ImGui::SetNextItemWidth(110);
         if (ImGui::BeginCombo("##with", doc.pieces()[with].look.name.c_str())) {
@@ -92,8 +86,7 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
             ImGui::EndCombo();
         }
         ImGui::SameLine();
-        if (ImGui::Button("Merge")) tool.merge(index, with);
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("one piece of the two (CSG union)");
+        commandButton(app, Command::MergePieces);
     }
 }
 

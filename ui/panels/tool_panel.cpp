@@ -30,7 +30,7 @@ void toolPalette(SculptApp& app)
     for (int i = 0; i < int(std::size(kTools)); ++i) {
         const bool current = b.tool == kTools[i].tool && tools.isCurrent(tools.sculpt());
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(commandRow(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
+        if (ImGui::Button(app.commands().row(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
         commandTooltip(app, kTools[i].command);
         if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
@@ -51,7 +51,7 @@ void toolPalette(SculptApp& app)
                              tools.gesture().masks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         // Three cuts to a row, the two masks (longer names) on one of their own.
-        if (ImGui::Button(commandRow(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
+        if (ImGui::Button(app.commands().row(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
         if (current) ImGui::PopStyleColor();
         commandTooltip(app, g.command);
         if (i != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();

@@ -13,6 +13,16 @@ namespace sculpt::ui {
 class ToolBox {
 public:
     explicit ToolBox(ToolHost& host) : mSculpt(host), mGesture(host), mPieces(host) {}
+    ToolBox(const ToolBox&) = delete;
+    ToolBox& operator=(const ToolBox&) = delete;
+
+    /// Each tool's commands (its rows choose it).
+    void addCommands(CommandRegistry& registry)
+    {
+        mSculpt.addCommands(registry, *this);
+        mGesture.addCommands(registry, *this);
+        mPieces.addCommands(registry, *this);
+    }
 
     Tool& current() { return *mCurrent; }
     const Tool& current() const { return *mCurrent; }

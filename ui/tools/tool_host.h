@@ -39,6 +39,8 @@ public:
     /// The modifier keys held down now.
     virtual int heldMods() const = 0;
 
+    /// Why an edit of the document must wait (a job runs, a mode is open, a gesture), or "".
+    virtual std::string waitReason() const = 0;
     /// True (saying why in the status bar) if an edit of the document must wait.
     virtual bool busy() = 0;
     virtual void notify(std::string notice) = 0;

@@ -25,15 +25,17 @@ void reportCurrent(vtkObject*, unsigned long, void*, void* callData) { *static_c
 
 }  // namespace
 
-Viewport::Viewport(int width, int height) : mWidth(width), mHeight(height)
+Viewport::Viewport(int width, int height, bool draws) : mWidth(width), mHeight(height), mDraws(draws)
 {
     mWindow = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
-    vtkNew<vtkCallbackCommand> isCurrent;
-    isCurrent->SetCallback(reportCurrent);
-    mWindow->AddObserver(vtkCommand::WindowIsCurrentEvent, isCurrent);
-    mWindow->SetIsCurrent(true);
-    mWindow->SetOwnContext(false);
-    mWindow->InitializeFromCurrentContext();
+    if (mDraws) {
+        vtkNew<vtkCallbackCommand> isCurrent;
+        isCurrent->SetCallback(reportCurrent);
+        mWindow->AddObserver(vtkCommand::WindowIsCurrentEvent, isCurrent);
+        mWindow->SetIsCurrent(true);
+        mWindow->SetOwnContext(false);
+        mWindow->InitializeFromCurrentContext();
+    }
     mWindow->SetSize(width, height);
     mWindow->SetMultiSamples(0);
 
@@ -52,7 +54,10 @@ Viewport::Viewport(int width, int height) : mWidth(width), mHeight(height)
     mWindow->AddRenderer(mOverlay);
 }
 
-Viewport::~Viewport() { mWindow->Finalize(); }
+Viewport::~Viewport()
+{
+    if (mDraws) mWindow->Finalize();
+}
 
 void Viewport::resize(int width, int height)
 {
@@ -63,6 +68,7 @@ void Viewport::resize(int width, int height)
 
 void Viewport::render()
 {
+    if (!mDraws) return;
     mWindow->GetState()->Reset();  // ImGui changed the GL state VTK caches
     mWindow->Render();
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

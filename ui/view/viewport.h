@@ -25,12 +25,13 @@ Ray transformedRay(const Ray& ray, const openvdb::Mat4d& m);
 
 class Viewport {
 public:
-    /// Needs the window's OpenGL context to be current.
-    Viewport(int width, int height);
+    /// `draws`: the window's OpenGL context is current and render() draws into it; false: a
+    /// view with no context (headless), whose cameras and rays work and which draws nothing.
+    Viewport(int width, int height, bool draws = true);
     ~Viewport();
 
     void resize(int width, int height);
-    /// Draws the scene into the current framebuffer (the window's back buffer).
+    /// Draws the scene into the current framebuffer (the window's back buffer), if it draws.
     void render();
 
     vtkRenderer* renderer() const { return mRenderer; }
@@ -58,6 +59,7 @@ private:
     vtkSmartPointer<vtkRenderer> mRenderer;
     vtkSmartPointer<vtkRenderer> mOverlay;
     int mWidth, mHeight;
+    bool mDraws;
 };
 
 }  // namespace sculpt::ui

@@ -4,11 +4,9 @@
 ///
 /// Sizes and pointer positions are in framebuffer pixels, the unit VTK and ImGui draw in.
 
-#include "ui/input/input_event.h"
+#include "ui/window/window.h"
 
-#include <functional>
 #include <stdexcept>
-#include <string>
 
 struct GLFWwindow;
 
@@ -20,30 +18,24 @@ struct WindowUnavailable : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-class AppWindow {
+class AppWindow final : public Window {
 public:
     /// Opens a window of `width` x `height` pixels with a current OpenGL 3.2 core context.
     /// @throws WindowUnavailable saying why.
     AppWindow(int width, int height, const std::string& title);
-    ~AppWindow();
+    ~AppWindow() override;
     AppWindow(const AppWindow&) = delete;
     AppWindow& operator=(const AppWindow&) = delete;
 
-    /// Receives every live event (input, resize, close) as it arrives.
-    void setListener(std::function<void(const InputEvent&)> listener) { mListener = std::move(listener); }
-
-    /// Delivers pending events to the listener; waits up to `timeoutSeconds` for one (0: none).
-    void pollEvents(double timeoutSeconds);
-    void swapBuffers();
-    void setTitle(const std::string& title);
-    /// As a user resizing the window (a replayed resize), to this many framebuffer pixels.
-    void resize(int width, int height);
-
-    int width() const;
-    int height() const;
-    /// Seconds since the window opened.
-    double time() const;
-    GLFWwindow* handle() const { return mWindow; }
+    void setListener(std::function<void(const InputEvent&)> listener) override { mListener = std::move(listener); }
+    void pollEvents(double timeoutSeconds) override;
+    void swapBuffers() override;
+    void setTitle(const std::string& title) override;
+    void resize(int width, int height) override;
+    int width() const override;
+    int height() const override;
+    double time() const override;
+    bool draws() const override { return true; }
 
 private:
     void deliver(InputEvent event);

@@ -1,9 +1,12 @@
 #include "ui/tools/gesture/gesture_tool.h"
 
+#include "ui/commands/command_registry.h"
 #include "ui/document/document.h"
 #include "ui/input/input_event.h"
+#include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"
 
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <nlohmann/json.hpp>
 
@@ -11,6 +14,56 @@
 #include <limits>
 
 namespace sculpt::ui {
+
+void GestureTool::addCommands(CommandRegistry& registry, ToolBox& box)
+{
+    using Shape = CutGesture::Shape;
+    const struct {
+        Command command;
+        Shape shape;
+        bool masks;
+        const char* label;
+        const char* help;
+        Chord chord;
+    } gestures[] = {
+        {Command::ToolLassoCut,
+         Shape::Lasso,
+         false,
+         "Lasso Cut",
+         "Draw around what to cut away, through the model along the view (Ctrl: fill it with clay)",
+         {GLFW_KEY_J}},
+        {Command::ToolBoxCut,
+         Shape::Box,
+         false,
+         "Box Cut",
+         "Drag a box to cut away along the view (Ctrl: fill it)",
+         {GLFW_KEY_J, kShift}},
+        {Command::ToolLineCut,
+         Shape::Line,
+         false,
+         "Line Cut",
+         "Drag a line: what lies to its right, as you see it, is cut away",
+         {GLFW_KEY_J, kAlt}},
+        {Command::ToolBoxMask,
+         Shape::Box,
+         true,
+         "Box Mask",
+         "Drag a box: the clay in it, through the model along the view, is masked (Ctrl: unmasked)",
+         {GLFW_KEY_B, kShift}},
+        {Command::ToolLassoMask,
+         Shape::Lasso,
+         true,
+         "Lasso Mask",
+         "Draw around the clay to mask, through the model along the view (Ctrl: unmask it)",
+         {GLFW_KEY_B, kAlt}},
+    };
+    for (const auto& g : gestures) {
+        registry.add({g.command, g.label, g.help, {g.chord}, {}, [this, &box, shape = g.shape, masks = g.masks] {
+                          choose(shape, masks);
+                          box.choose(*this);
+                      }});
+    }
+}
 
 void GestureTool::choose(CutGesture::Shape shape, bool masks)
 {

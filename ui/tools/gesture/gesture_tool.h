@@ -10,11 +10,15 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ToolBox;
 class ToolHost;
 
 class GestureTool final : public Tool {
 public:
     explicit GestureTool(ToolHost& host) : mHost(host) {}
+    /// The cut tools (J, Shift+J, Alt+J) and the mask gestures (Shift+B, Alt+B).
+    void addCommands(CommandRegistry& registry, ToolBox& box);
 
     /// The gesture a press draws from now on, and whether it masks instead of cutting.
     void choose(CutGesture::Shape shape, bool masks);

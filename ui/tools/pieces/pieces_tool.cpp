@@ -5,9 +5,10 @@
 #include "core/pieces/lattice_transfer.h"
 #include "core/pieces/piece_edits.h"
 #include "core/pieces/push.h"
-#include "ui/commands/commands.h"
+#include "ui/commands/command_registry.h"
 #include "ui/document/document.h"
 #include "ui/input/input_event.h"
+#include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"
 
 #include <GLFW/glfw3.h>
@@ -41,6 +42,108 @@ glm::dvec3 centreOf(const DocumentPiece& piece)
 }
 
 }  // namespace
+
+void PiecesTool::addCommands(CommandRegistry& registry, ToolBox& box)
+{
+    const auto active = [this] { return mHost.document().activePiece(); };
+    const auto idle = [this] { return mHost.waitReason(); };
+    const auto inPiecesMode = [this, &box] {
+        if (!mHost.waitReason().empty()) return mHost.waitReason();
+        return box.isCurrent(*this) ? std::string() : std::string("Tab first: G, R and S move pieces in pieces mode");
+    };
+    const auto several = [this](const char* why) {
+        return [this, why] {
+            if (!mHost.waitReason().empty()) return mHost.waitReason();
+            return mHost.document().pieces().size() > 1 ? std::string() : std::string(why);
+        };
+    };
+    registry.add({Command::PiecesMode,
+                  "Pieces Mode",
+                  "Tab: a click picks the piece to sculpt, G/R/S move, turn and scale it (X/Y/Z: an axis; type a "
+                  "value); Tab again: back to sculpting",
+                  {{GLFW_KEY_TAB}},
+                  {},
+                  [this, &box] {
+                      box.toggle(*this);
+                      const Document& document = mHost.document();
+                      mHost.notify(box.isCurrent(*this)
+                                       ? "pieces mode: click a piece, G move, R rotate, S scale; Tab: sculpt"
+                                       : "sculpting '" + document.pieces()[document.activePiece()].look.name + "'");
+                  }});
+    const struct {
+        Command command;
+        PieceGesture::Kind kind;
+        const char* label;
+        const char* help;
+        int key;
+    } gestures[] = {
+        {Command::MovePiece, PieceGesture::Kind::Move, "Move Piece",
+         "Moves the piece with the pointer; stops at the pieces it meets unless Push is on", GLFW_KEY_G},
+        {Command::RotatePiece, PieceGesture::Kind::Rotate, "Rotate Piece",
+         "Turns the piece about its centre, in the view's plane (X/Y/Z: about that axis)", GLFW_KEY_R},
+        {Command::ScalePiece, PieceGesture::Kind::Scale, "Scale Piece",
+         "Scales the piece about its centre (its voxels with it: the field is not resampled)", GLFW_KEY_S},
+    };
+    for (const auto& g : gestures) {
+        registry.add({g.command,
+                      g.label,
+                      g.help,
+                      {{g.key}},
+                      inPiecesMode,
+                      [this, kind = g.kind] { beginGesture(kind); },
+                      Scope::Pieces});
+    }
+    registry.add({Command::TogglePush,
+                  "Push",
+                  "A piece moved into another dents it, keeping its volume, instead of stopping at it",
+                  {{GLFW_KEY_P}},
+                  {},
+                  [this] {
+                      mPush = !mPush;
+                      mHost.notify(mPush ? "push: a moved piece dents the pieces it meets"
+                                         : "a moved piece stops at the pieces it meets");
+                  },
+                  Scope::Pieces});
+    registry.add({Command::ApplyPlacement,
+                  "Apply Move",
+                  "Resamples the piece's voxels where it stands (a job): its placement becomes the identity",
+                  {{GLFW_KEY_A, kControl}},
+                  [this] {
+                      if (!mHost.waitReason().empty()) return mHost.waitReason();
+                      const Document& document = mHost.document();
+                      return document.pieces()[document.activePiece()].look.placement == openvdb::Mat4d::identity()
+                                 ? std::string("the piece has not been moved: nothing to apply")
+                                 : std::string();
+                  },
+                  [this, active] { applyPlacement(active()); },
+                  Scope::Pieces});
+    registry.add(
+        {Command::SoloPiece, "Solo", "Shows this piece alone; again: shows them all", {}, idle, [this, active] {
+             solo(active());
+         }});
+    registry.add({Command::DuplicatePiece,
+                  "Duplicate",
+                  "A copy of this piece, in the same place (a job)",
+                  {},
+                  idle,
+                  [this, active] { duplicate(active()); }});
+    registry.add({Command::DeletePiece,
+                  "Delete",
+                  "Deletes this piece (Ctrl+Z brings it back)",
+                  {},
+                  several("a document keeps at least one piece: this is its last"),
+                  [this, active] { remove(active()); }});
+    registry.add(
+        {Command::SplitPiece, "Split shells", "A piece per closed shell of this one (a job)", {}, idle, [this, active] {
+             split(active());
+         }});
+    registry.add({Command::MergePieces,
+                  "Merge",
+                  "One piece of this and the one chosen beside the button (CSG union)",
+                  {},
+                  several("only one piece: nothing to merge with"),
+                  [this, active] { merge(active(), mMergeWith); }});
+}
 
 bool PiecesTool::press(const InputEvent& event)
 {

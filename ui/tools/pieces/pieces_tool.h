@@ -19,11 +19,15 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ToolBox;
 class ToolHost;
 
 class PiecesTool final : public Tool {
 public:
     explicit PiecesTool(ToolHost& host) : mHost(host) {}
+    /// Pieces mode (Tab); in it G, R, S, P and Ctrl+A; the Pieces panel's buttons.
+    void addCommands(CommandRegistry& registry, ToolBox& box);
 
     const char* name() const override { return "pieces"; }
     /// Left: picks the piece under the pointer; while a gesture runs, left keeps it, right drops it.
@@ -43,6 +47,8 @@ public:
     void beginGesture(PieceGesture::Kind kind);
     /// A moved piece dents the pieces it meets (keeping their volumes) instead of stopping.
     bool& push() { return mPush; }
+    /// The piece the Merge button merges the sculpted one with.
+    std::size_t& mergeWith() { return mMergeWith; }
 
     /// The Pieces panel's edits, each one undo step (a job where fields are made).
     void select(std::size_t index);
@@ -70,6 +76,7 @@ private:
 
     ToolHost& mHost;
     bool mPush = false;
+    std::size_t mMergeWith = 0;
     std::optional<PieceGesture> mGesture;  // G, R or S under way
     openvdb::Mat4d mShown;                 // the placement it shows (stopped at contact)
     std::vector<std::size_t> mObstacles;   // the pieces it stops at

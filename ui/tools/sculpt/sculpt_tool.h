@@ -9,11 +9,15 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ToolBox;
 class ToolHost;
 
 class SculptTool final : public Tool {
 public:
     explicit SculptTool(ToolHost& host) : mHost(host) {}
+    /// The brush tools (A, C, I, ...), the radius steps ([ ]) and the mirrors (X Y Z).
+    void addCommands(CommandRegistry& registry, ToolBox& box);
 
     const char* name() const override { return "sculpt"; }
     bool press(const InputEvent& event) override;
