@@ -1009,6 +1009,46 @@ TEST(SculptUi, BadInputIsOneLineAndExitTwo)
     EXPECT_FALSE(fs::exists(dir / "x.png"));
 }
 
+// The window without a display (sculpt-ui --headless, the same app on a window that draws
+// nothing) replays a stroke, a lasso cut, a box mask and an undo to the grids the window under
+// Xvfb makes, bit for bit: the headless tests (ui_unit_tests) stand for the window.
+TEST(SculptUi, AHeadlessReplayGivesTheWindowsGridsBitForBit)
+{
+    TempDir dir;
+    UiEvents events;
+    const auto stages = [&events](const fs::path& r) {
+        events.untilJobEnds().move(560, 380).drag(560, 380, 720, 400).report(r, "stroke");
+        events.key("J").move(kCentreX + 450, kCentreY).press();
+        for (int i = 1; i <= 40; ++i) {
+            const double a = 2.0 * M_PI * i / 40;
+            events.move(kCentreX + 250 + 200 * std::cos(a), kCentreY + 140 * std::sin(a));
+        }
+        events.release().untilJobEnds().report(r, "cut");
+        events.key("B", {"shift"}).drag(kCentreX - 380, kCentreY - 300, kCentreX - 120, kCentreY + 300);
+        events.untilJobEnds().report(r, "masked").key("Z", {"ctrl"}).report(r, "undone");
+    };
+    stages(dir / "window.jsonl");
+    ASSERT_EQ(play(dir, events).exitCode, 0);
+    events = UiEvents();
+    stages(dir / "headless.jsonl");
+    events.write(dir / "headless.json");
+    const CommandResult headless =
+        runCommand("'" SCULPT_UI_EXECUTABLE "' --headless --play headless.json --state-dir state", dir.path().string());
+    ASSERT_EQ(headless.exitCode, 0) << headless.err;
+    const Reports window(dir / "window.jsonl"), alone(dir / "headless.jsonl");
+    for (const char* stage : {"stroke", "cut", "masked", "undone"}) {
+        EXPECT_EQ(alone[stage]["checksum"], window[stage]["checksum"]) << stage;
+        EXPECT_EQ(alone[stage]["mask_checksum"], window[stage]["mask_checksum"]) << stage;
+        EXPECT_EQ(alone[stage]["undo"], window[stage]["undo"]) << stage;
+    }
+    EXPECT_NE(window["cut"]["checksum"], window["stroke"]["checksum"]);
+    EXPECT_NE(window["masked"]["mask_checksum"], "");
+    const CommandResult screenshot = runCommand("'" SCULPT_UI_EXECUTABLE "' --headless --play headless.json "
+                                                "--screenshot x.png",
+                                                dir.path().string());
+    EXPECT_EQ(screenshot.exitCode, 2) << "nothing is drawn headless: no screenshot";
+}
+
 // A DISPLAY that names no usable X server: sculpt-ui says so in one line and exits 2, and the
 // README's first command (scripts/demo.sh) goes headless instead of stopping there.
 TEST(SculptUi, AnUnusableDisplayIsExitTwoAndTheDemoFallsBackToItsHeadlessRun)
