@@ -1,9 +1,13 @@
+#include "core/base/atomic_file.h"
 #include "core/base/text_format.h"
 #include "sculpt/cli/commands.h"
-#include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/document_input.h"
 #include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
-#include "sculpt/session/stroke_script.h"
+#include "sculpt/cli/progress_bar.h"
+#include "sculpt/session/document.h"
+#include "sculpt/session/model_filter.h"
+#include "sculpt/session/script_replay.h"
 
 #include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
@@ -28,17 +32,26 @@ void runApply(const ApplyOptions& o)
     if (o.threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
     checkMeshOutput(o.mesh);
     const StrokeScript script = readStrokeScript(o.script);  // every error before any work
+    AtomicFile::checkTarget(o.output);
+    VdbPieces file = readDocumentPieces(o.input);
+    // Every piece, as the window holds them (piece edits replay too); no live meshes.
+    Document document(std::move(file.pieces), {}, {}, PieceMeshes::None);
     ReplayReport done;
+    {
+        ProgressBar bar("replaying");
+        done = replayScript(document, script, o.script, bar.callback());
+    }
+    for (const DocumentPiece& piece : document.pieces())
+        refuseEmptyResult(piece.session->field(), o.input.path, "replaying");
+    writeVdbPieces(document.piecesAsFiled(), o.output, file.companions);
     std::size_t historyBytes = 0;
-    const FieldImage result = editDocument(o.input, o.output, "replaying", [&](FieldImage& field, const Progress& p) {
-        SculptSession session(std::move(field));
-        done = replayScript(session, script, o.script, p);
-        historyBytes = session.history().memoryBytes();
-        field = session.takeField();
-    });
+    for (const DocumentPiece& piece : document.pieces()) historyBytes += piece.session->history().memoryBytes();
     std::cout << "wrote " << o.output << ": " << done.strokes << " strokes (" << done.stamps << " stamps), "
-              << done.undos << " undo, " << done.redos << " redo; undo history " << formatBytes(historyBytes) << "\n";
-    writeMeshOutput(result, o.mesh);
+              << done.undos << " undo, " << done.redos << " redo";
+    if (done.pieceEdits > 0)
+        std::cout << ", " << done.pieceEdits << " piece edits (" << document.pieces().size() << " pieces)";
+    std::cout << "; undo history " << formatBytes(historyBytes) << "\n";
+    writeMeshOutput(document.session().field(), o.mesh);
 }
 
 }  // namespace
@@ -47,8 +60,9 @@ void addApplyCommand(CLI::App& app)
 {
     auto options = std::make_shared<ApplyOptions>();
     CLI::App* cmd = app.add_subcommand(
-        "apply", "Replay a stroke script (brush strokes, undo and redo; see data/strokes.schema.json\n"
-                 "and data/strokes/) on a document. Replays are deterministic: the same input and\n"
+        "apply", "Replay a stroke script (brush strokes, mask and cut edits, drain holes, the pieces' edits,\n"
+                 "undo and redo; see data/strokes.schema.json and data/strokes/) on a document, as\n"
+                 "sculpt-ui's Save Strokes writes it. Replays are deterministic: the same input and\n"
                  "script give the same output bit for bit, whatever the thread count.");
     addDocumentInput(*cmd, options->input, "the .vdb document to sculpt");
     addMaskInput(*cmd, options->input);

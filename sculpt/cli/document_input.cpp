@@ -69,19 +69,37 @@ std::vector<Piece> readPieces(const DocumentInput& input)
     return std::move(document.pieces);
 }
 
+namespace {
+
+/// `--mask` in place of the field's own mask.
+void applyMaskInput(FieldImage& field, const DocumentInput& input)
+{
+    if (input.mask == "none") {
+        field.setMask(nullptr);
+    } else if (!input.mask.empty()) {
+        const openvdb::FloatGrid::Ptr mask = readMask(input.mask);
+        if (mask->transform() != field.grid().transform())
+            throw InputError(input.mask + ": the mask is on other voxels than " + input.path +
+                             "'s surface (another voxel size or origin)");
+        field.setMask(mask);
+    }
+}
+
+}  // namespace
+
 VdbDocument readDocument(const DocumentInput& input)
 {
     VdbDocument document = readVdbDocument(input.path, input.grid);
     printWarnings(document.warnings);
-    if (input.mask == "none") {
-        document.field.setMask(nullptr);
-    } else if (!input.mask.empty()) {
-        const openvdb::FloatGrid::Ptr mask = readMask(input.mask);
-        if (mask->transform() != document.field.grid().transform())
-            throw InputError(input.mask + ": the mask is on other voxels than " + input.path +
-                             "'s surface (another voxel size or origin)");
-        document.field.setMask(mask);
-    }
+    applyMaskInput(document.field, input);
+    return document;
+}
+
+VdbPieces readDocumentPieces(const DocumentInput& input)
+{
+    VdbPieces document = readVdbPieces(input.path, input.grid);
+    printWarnings(document.warnings);
+    applyMaskInput(document.pieces.front().field, input);
     return document;
 }
 

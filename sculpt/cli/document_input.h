@@ -33,5 +33,8 @@ std::vector<Piece> readPieces(const DocumentInput& input);
 /// mask `--mask` names in place of its own.
 /// @throws InputError naming the mask's file if it holds no such mask or one on other voxels.
 VdbDocument readDocument(const DocumentInput& input);
+/// Every piece of the document, the first the one `--grid` names (or the edited one) with the
+/// mask `--mask` names, printing the warnings as readDocument.
+VdbPieces readDocumentPieces(const DocumentInput& input);
 
 }  // namespace sculpt::cli

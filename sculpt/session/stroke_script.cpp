@@ -2,9 +2,8 @@
 
 #include "core/base/errors.h"
 #include "core/base/json_fields.h"
-#include "core/field/csg_combine.h"
 #include "core/primitives/scene_file.h"
-#include "sculpt/session/model_filter.h"
+#include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/shape_import.h"
 
 #include <cmath>
@@ -114,7 +113,7 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
 {
     onlyFields(j,
                {"tool", "radius", "strength", "falloff", "spacing", "symmetry", "keep_volume", "samples", "primitives",
-                "target"},
+                "target", "stop_at_pieces"},
                where);
     Stroke stroke;
     BrushSettings& brush = stroke.brush;
@@ -146,17 +145,22 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
     return stroke;
 }
 
+/// A whole number from `least` to `most` in field `key`.
+std::size_t wholeNumber(const json& j, const char* key, double least, double most, const std::string& where)
+{
+    const double value = number(j, key, where);
+    if (!(value >= least && value <= most) || value != std::floor(value))
+        throw InputError(where + ": field '" + key + "' must be a whole number from " + std::to_string(int(least)) +
+                         " to " + std::to_string(int(most)) + " (got " + j[key].dump() + ")");
+    return std::size_t(value);
+}
+
 ScriptEvent parseMaskEvent(const json& j, const std::string& where)
 {
     onlyFields(j, {"action", "operation", "times"}, where);
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Mask;
-    event.maskOperation = namedValue(j, "operation", "", where, maskOperationFromName);
-    const double times = numberOr(j, "times", 1.0, where);
-    if (!(times >= 1.0 && times <= 1000.0) || times != std::floor(times))
-        throw InputError(where + ": field 'times' must be a whole number from 1 to 1000 (got " + j["times"].dump() +
-                         ")");
-    event.maskTimes = int(times);
+    script::MaskEvent event;
+    event.operation = namedValue(j, "operation", "", where, maskOperationFromName);
+    event.times = j.contains("times") ? int(wholeNumber(j, "times", 1.0, 1000.0, where)) : 1;
     return event;
 }
 
@@ -196,18 +200,16 @@ ViewPrism parsePrism(const json& j, const std::string& where)
 ScriptEvent parseCutEvent(const json& j, const std::string& where)
 {
     onlyFields(j, {"action", "mode", "view", "perspective", "polygon", "near", "far", "symmetry"}, where);
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Cut;
-    event.prismMode = namedValue(j, "mode", "cut", where, prismModeFromName);
+    script::CutEvent event;
+    event.mode = namedValue(j, "mode", "cut", where, prismModeFromName);
     event.prism = parsePrism(j, where);
     return event;
 }
 
 ScriptEvent parseMaskSelection(const json& j, const std::string& where)
 {
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::MaskSelection;
-    MaskSelection& selection = event.maskSelection;
+    script::MaskSelectionEvent event;
+    MaskSelection& selection = event.selection;
     selection.kind = namedValue(j, "select", "", where, maskSelectionFromName);
     switch (selection.kind) {
     case MaskSelectionKind::Prism:
@@ -235,12 +237,108 @@ ScriptEvent parseMaskSelection(const json& j, const std::string& where)
 ScriptEvent parseDrainEvent(const json& j, const std::string& where)
 {
     onlyFields(j, {"action", "from", "to", "radius"}, where);
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Drain;
+    script::DrainEvent event;
     event.hole.from = vec3(field(j, "from", where), where + ": field 'from'");
     event.hole.to = vec3(field(j, "to", where), where + ": field 'to'");
     event.hole.radiusWorld = number(j, "radius", where);
     return event;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pieces' edits
+
+/// More pieces than any document holds (a label map's at most): an index past it is no piece.
+constexpr double kMaxPieceIndex = 100000.0;
+
+std::size_t pieceIndex(const json& j, const char* key, const std::string& where)
+{
+    return wholeNumber(j, key, 0.0, kMaxPieceIndex, where);
+}
+
+/// A piece's placement: 16 numbers row by row (OpenVDB's row vectors), an affine map that turns,
+/// scales by a bounded amount and moves.
+openvdb::Mat4d parsePlacement(const json& j, const std::string& where)
+{
+    if (!j.is_array() || j.size() != 16) throw InputError(where + ": field 'placement' must be an array of 16 numbers");
+    openvdb::Mat4d m;
+    for (int k = 0; k < 16; ++k) {
+        const json& v = j[std::size_t(k)];
+        if (!v.is_number() || !std::isfinite(v.get<double>()))
+            throw InputError(where + ": field 'placement' must hold finite numbers only");
+        m(k / 4, k % 4) = v.get<double>();
+    }
+    const double det = std::abs(m.getMat3().det());
+    if (m(0, 3) != 0.0 || m(1, 3) != 0.0 || m(2, 3) != 0.0 || m(3, 3) != 1.0 || !(det > 1e-9 && det < 1e9))
+        throw InputError(where +
+                         ": field 'placement' must be an affine map scaling by 1e-3 to 1e3 (last column 0 0 0 1)");
+    return m;
+}
+
+json placementJson(const openvdb::Mat4d& m)
+{
+    json j = json::array();
+    for (int k = 0; k < 16; ++k) j.push_back(m(k / 4, k % 4));
+    return j;
+}
+
+PieceLook parseLook(const json& j, const std::string& where)
+{
+    onlyFields(j, {"name", "colour", "visible", "placement"}, where);
+    PieceLook look;
+    look.name = textOr(j, "name", "", where);
+    if (look.name.empty()) throw InputError(where + ": field 'name' must be a piece's name");
+    const openvdb::Vec3d colour = vec3(field(j, "colour", where), where + ": field 'colour'");
+    for (int c = 0; c < 3; ++c) {
+        if (!(colour[c] >= 0.0 && colour[c] <= 1.0))
+            throw InputError(where + ": field 'colour' must hold numbers from 0 to 1");
+        look.colour[c] = float(colour[c]);
+    }
+    look.visible = flagOr(j, "visible", true, where);
+    look.placement = parsePlacement(field(j, "placement", where), where);
+    return look;
+}
+
+ScriptEvent parsePieceEvent(const json& j, const std::string& where)
+{
+    const std::string edit = textOr(j, "edit", "", where);
+    if (edit == "looks") {
+        onlyFields(j, {"action", "edit", "looks", "label"}, where);
+        const json& looks = field(j, "looks", where);
+        if (!looks.is_array() || looks.empty() || looks.size() > std::size_t(kMaxPieceIndex))
+            throw InputError(where + ": field 'looks' must be an array of one look per piece");
+        script::PieceLooksEvent event;
+        for (std::size_t i = 0; i < looks.size(); ++i)
+            event.looks.push_back(parseLook(looks[i], where + ": looks[" + std::to_string(i) + "]"));
+        event.label = textOr(j, "label", "piece looks", where);
+        return event;
+    }
+    if (edit == "move") {
+        onlyFields(j, {"action", "edit", "piece", "placement", "push"}, where);
+        script::MovePieceEvent event{
+            pieceIndex(j, "piece", where), parsePlacement(field(j, "placement", where), where), {}};
+        if (j.contains("push")) {
+            const json& pushed = j["push"];
+            if (!pushed.is_array() || pushed.size() > std::size_t(kMaxPieceIndex))
+                throw InputError(where + ": field 'push' must be an array of piece indices");
+            for (std::size_t i = 0; i < pushed.size(); ++i)
+                event.pushed.push_back(pieceIndex(json{{"push", pushed[i]}}, "push", where));
+        }
+        return event;
+    }
+    if (edit == "merge") {
+        onlyFields(j, {"action", "edit", "piece", "with"}, where);
+        return script::MergePiecesEvent{pieceIndex(j, "piece", where), pieceIndex(j, "with", where)};
+    }
+    onlyFields(j, {"action", "edit", "piece"}, where);
+    const std::size_t piece = pieceIndex(j, "piece", where);
+    if (edit == "select") return script::SelectPieceEvent{piece};
+    if (edit == "apply_placement") return script::ApplyPlacementEvent{piece};
+    if (edit == "duplicate") return script::DuplicatePieceEvent{piece};
+    if (edit == "delete") return script::DeletePieceEvent{piece};
+    if (edit == "split") return script::SplitPieceEvent{piece};
+    throw InputError(where + ": field 'edit' is \"" + edit +
+                     "\" (expected \"select\", \"looks\", \"move\", \"apply_placement\", \"duplicate\", "
+                     "\"delete\", \"split\" or \"merge\")");
 }
 
 /// The prism's fields, added to `j`.
@@ -260,6 +358,39 @@ void addPrismJson(json& j, const ViewPrism& prism)
 }
 
 json vec3Json(const openvdb::Vec3d& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+/// A piece event's JSON; nullopt for the events that are not a piece's.
+json pieceEventJson(const ScriptEvent& event)
+{
+    const auto piece = [](const char* edit, std::size_t index) {
+        return json{{"action", "piece"}, {"edit", edit}, {"piece", index}};
+    };
+    if (const auto* e = std::get_if<script::SelectPieceEvent>(&event)) return piece("select", e->piece);
+    if (const auto* e = std::get_if<script::ApplyPlacementEvent>(&event)) return piece("apply_placement", e->piece);
+    if (const auto* e = std::get_if<script::DuplicatePieceEvent>(&event)) return piece("duplicate", e->piece);
+    if (const auto* e = std::get_if<script::DeletePieceEvent>(&event)) return piece("delete", e->piece);
+    if (const auto* e = std::get_if<script::SplitPieceEvent>(&event)) return piece("split", e->piece);
+    if (const auto* e = std::get_if<script::MergePiecesEvent>(&event)) {
+        json j = piece("merge", e->piece);
+        j["with"] = e->with;
+        return j;
+    }
+    if (const auto* e = std::get_if<script::MovePieceEvent>(&event)) {
+        json j = piece("move", e->piece);
+        j["placement"] = placementJson(e->placement);
+        if (!e->pushed.empty()) j["push"] = e->pushed;
+        return j;
+    }
+    const auto& looks = std::get<script::PieceLooksEvent>(event);
+    json all = json::array();
+    for (const PieceLook& look : looks.looks) {
+        all.push_back({{"name", look.name},
+                       {"colour", {look.colour[0], look.colour[1], look.colour[2]}},
+                       {"visible", look.visible},
+                       {"placement", placementJson(look.placement)}});
+    }
+    return {{"action", "piece"}, {"edit", "looks"}, {"looks", std::move(all)}, {"label", looks.label}};
+}
 
 json maskSelectionJson(const MaskSelection& selection)
 {
@@ -282,20 +413,21 @@ ScriptEvent parseEvent(const json& j, const std::string& where, ParseContext& co
         if (action == "mask") return j.contains("select") ? parseMaskSelection(j, where) : parseMaskEvent(j, where);
         if (action == "cut") return parseCutEvent(j, where);
         if (action == "drain") return parseDrainEvent(j, where);
+        if (action == "piece") return parsePieceEvent(j, where);
         onlyFields(j, {"action"}, where);
-        if (action == "undo") return {ScriptEvent::Kind::Undo, {}, {}};
-        if (action == "redo") return {ScriptEvent::Kind::Redo, {}, {}};
+        if (action == "undo") return script::UndoEvent{};
+        if (action == "redo") return script::RedoEvent{};
         throw InputError(where + ": field 'action' is \"" + action +
-                         "\" (expected \"undo\", \"redo\", \"mask\", \"cut\" or \"drain\")");
+                         "\" (expected \"undo\", \"redo\", \"mask\", \"cut\", \"drain\" or \"piece\")");
     }
     field(j, "tool", where);
-    ScriptEvent event{ScriptEvent::Kind::Stroke, parseStroke(j, where, context), {}};
+    script::StrokeEvent event{parseStroke(j, where, context), {}, flagOr(j, "stop_at_pieces", false, where)};
     if (j.contains("primitives") && j["primitives"].is_object()) event.sources.primitivesScene = j["primitives"].dump();
     if (event.stroke.brush.tool == BrushTool::Follow) event.sources.targetPath = j["target"].get<std::string>();
     return event;
 }
 
-json strokeJson(const ScriptEvent& event)
+json strokeJson(const script::StrokeEvent& event)
 {
     const Stroke& stroke = event.stroke;
     json j = {{"tool", brushToolName(stroke.brush.tool)},
@@ -304,6 +436,7 @@ json strokeJson(const ScriptEvent& event)
               {"falloff", falloffName(stroke.brush.falloff)},
               {"spacing", stroke.spacing}};
     if (stroke.brush.keepVolume) j["keep_volume"] = true;
+    if (event.stopAtPieces) j["stop_at_pieces"] = true;
     json symmetry = json::array();
     if (stroke.symmetry.x) symmetry.push_back("x");
     if (stroke.symmetry.y) symmetry.push_back("y");
@@ -326,28 +459,28 @@ std::string writeStrokeScript(const StrokeScript& script)
 {
     json events = json::array();
     for (const ScriptEvent& event : script.events) {
-        switch (event.kind) {
-        case ScriptEvent::Kind::Stroke: events.push_back(strokeJson(event)); break;
-        case ScriptEvent::Kind::Undo: events.push_back({{"action", "undo"}}); break;
-        case ScriptEvent::Kind::Redo: events.push_back({{"action", "redo"}}); break;
-        case ScriptEvent::Kind::Cut: {
-            json cut = {{"action", "cut"}, {"mode", prismModeName(event.prismMode)}};
-            addPrismJson(cut, event.prism);
-            events.push_back(std::move(cut));
-            break;
-        }
-        case ScriptEvent::Kind::MaskSelection: events.push_back(maskSelectionJson(event.maskSelection)); break;
-        case ScriptEvent::Kind::Drain:
+        if (const auto* stroke = std::get_if<script::StrokeEvent>(&event)) {
+            events.push_back(strokeJson(*stroke));
+        } else if (std::holds_alternative<script::UndoEvent>(event)) {
+            events.push_back({{"action", "undo"}});
+        } else if (std::holds_alternative<script::RedoEvent>(event)) {
+            events.push_back({{"action", "redo"}});
+        } else if (const auto* cut = std::get_if<script::CutEvent>(&event)) {
+            json j = {{"action", "cut"}, {"mode", prismModeName(cut->mode)}};
+            addPrismJson(j, cut->prism);
+            events.push_back(std::move(j));
+        } else if (const auto* selection = std::get_if<script::MaskSelectionEvent>(&event)) {
+            events.push_back(maskSelectionJson(selection->selection));
+        } else if (const auto* drain = std::get_if<script::DrainEvent>(&event)) {
             events.push_back({{"action", "drain"},
-                              {"from", vec3Json(event.hole.from)},
-                              {"to", vec3Json(event.hole.to)},
-                              {"radius", event.hole.radiusWorld}});
-            break;
-        case ScriptEvent::Kind::Mask:
-            events.push_back({{"action", "mask"},
-                              {"operation", maskOperationName(event.maskOperation)},
-                              {"times", event.maskTimes}});
-            break;
+                              {"from", vec3Json(drain->hole.from)},
+                              {"to", vec3Json(drain->hole.to)},
+                              {"radius", drain->hole.radiusWorld}});
+        } else if (const auto* mask = std::get_if<script::MaskEvent>(&event)) {
+            events.push_back(
+                {{"action", "mask"}, {"operation", maskOperationName(mask->operation)}, {"times", mask->times}});
+        } else {
+            events.push_back(pieceEventJson(event));
         }
     }
     return json{{"format", kFormat}, {"version", kVersion}, {"events", std::move(events)}}.dump(1) + "\n";
@@ -383,62 +516,6 @@ StrokeScript readStrokeScript(const std::filesystem::path& path)
     std::ostringstream text;
     text << in.rdbuf();
     return parseStrokeScript(text.str(), path.string(), path.parent_path());
-}
-
-ReplayReport replayScript(SculptSession& session, const StrokeScript& script, const std::string& source,
-                          const Progress& progress)
-{
-    ReplayReport done;
-    for (size_t i = 0; i < script.events.size(); ++i) {
-        const ScriptEvent& event = script.events[i];
-        const std::string where = source + ": events[" + std::to_string(i) + "]";
-        switch (event.kind) {
-        case ScriptEvent::Kind::Stroke: try { done.stamps += session.applyStroke(event.stroke).stamps;
-            } catch (const InputError& e) {
-                throw InputError(where + " ('" + brushToolName(event.stroke.brush.tool) + "' stroke): " + e.what(),
-                                 e.remedy());
-            }
-            ++done.strokes;
-            break;
-        case ScriptEvent::Kind::Undo:
-            if (!session.undo()) throw InputError(where + ": undo with nothing to undo");
-            ++done.undos;
-            break;
-        case ScriptEvent::Kind::Redo:
-            if (!session.redo()) throw InputError(where + ": redo with nothing to redo");
-            ++done.redos;
-            break;
-        case ScriptEvent::Kind::Mask:
-            session.editMask(event.maskOperation, event.maskTimes);
-            ++done.maskOperations;
-            break;
-        case ScriptEvent::Kind::MaskSelection: try { session.selectMask(event.maskSelection);
-            } catch (const InputError& e) {
-                throw InputError(where + " (mask " + maskSelectionName(event.maskSelection.kind) + "): " + e.what(),
-                                 e.remedy());
-            }
-            ++done.maskOperations;
-            break;
-        case ScriptEvent::Kind::Drain: try { session.drillHoles({event.hole});
-            } catch (const InputError& e) {
-                throw InputError(where + " (drain): " + e.what(), e.remedy());
-            }
-            ++done.drains;
-            break;
-        case ScriptEvent::Kind::Cut:
-            try {
-                FieldImage result = applyPrism(session.field(), event.prism, event.prismMode);
-                refuseEmptyResult(result, source, prismModeName(event.prismMode));
-                session.replaceField(std::move(result));
-            } catch (const InputError& e) {
-                throw InputError(where + " (" + prismModeName(event.prismMode) + "): " + e.what(), e.remedy());
-            }
-            ++done.cuts;
-            break;
-        }
-        report(progress, double(i + 1) / double(script.events.size()));
-    }
-    return done;
 }
 
 }  // namespace sculpt

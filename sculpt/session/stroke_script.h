@@ -15,6 +15,7 @@
 ///         "polygon": [[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1]], "near": 40, "far": 60,
 ///         "symmetry": ["x"]},
 ///        {"action": "drain", "from": [0, 0, -10], "to": [0, 0, -14], "radius": 1},
+///        {"action": "piece", "edit": "move", "piece": 1, "placement": [16 numbers], "push": [0]},
 ///        {"action": "undo"}, {"action": "redo"}]}
 /// A "mask" stroke paints the mask, "unmask" erases it; a "mask" action runs a mask operation
 /// (mask_operations.h) over the whole mask, or masks a selection (mask_selection.h: "select" is
@@ -23,38 +24,22 @@
 /// a drain hole (hollow.h); a "cut" action cuts (or fills) along the view with the
 /// prism of a polygon (prism_cut.h: "view" is viewFromWorld row by row, OpenVDB's row-vector
 /// convention; "near" and "far" are optional, all the way when absent).
+/// A "piece" action edits the document's pieces, named by index: "select" (the piece later edits
+/// change), "looks" (every piece's "name", "colour", "visible", "placement", and the step's
+/// "label"), "move" ("placement", and "push": the pieces it dents aside), "apply_placement",
+/// "duplicate", "delete", "split", "merge" ("with": the other piece). A stroke with
+/// "stop_at_pieces" kept out of the other pieces shown. Replays: script_replay.h.
 /// A sample is an object or just its position. A follow stroke's target is a document, scan or
 /// mesh (relative to the script), read at its own resolution (loadShape with no voxel size), as
 /// the window reads it. Schema: data/strokes.schema.json; format: README.
 
-#include "core/base/progress.h"
-#include "core/solids/prism_cut.h"
-#include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/script_event.h"
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace sculpt {
-
-/// Where a stroke's extra inputs came from, as a script writes them.
-struct StrokeSources {
-    std::string primitivesScene;  ///< a primitive stroke's scene as JSON text, written inline
-    std::string targetPath;       ///< a follow stroke's target file, as the script names it
-};
-
-struct ScriptEvent {
-    enum class Kind { Stroke, Undo, Redo, Mask, Cut, MaskSelection, Drain };
-    Kind kind = Kind::Stroke;
-    Stroke stroke;  ///< Kind::Stroke only
-    StrokeSources sources;
-    MaskOperation maskOperation = MaskOperation::Invert;  ///< Kind::Mask only
-    int maskTimes = 1;                                    ///< Kind::Mask only
-    ViewPrism prism{};                                    ///< Kind::Cut only
-    PrismMode prismMode = PrismMode::Cut;                 ///< Kind::Cut only
-    MaskSelection maskSelection{};                        ///< Kind::MaskSelection only
-    DrainHole hole{};                                     ///< Kind::Drain only
-};
 
 struct StrokeScript {
     std::vector<ScriptEvent> events;
@@ -70,16 +55,5 @@ StrokeScript readStrokeScript(const std::filesystem::path& path);
 
 /// The script as JSON text that parseStrokeScript reads back to the same events, numbers exactly.
 std::string writeStrokeScript(const StrokeScript& script);
-
-/// What a replay did.
-struct ReplayReport {
-    std::size_t strokes = 0, stamps = 0, undos = 0, redos = 0, maskOperations = 0, cuts = 0, drains = 0;
-};
-
-/// Applies the events in order, reporting progress per event.
-/// @throws InputError naming the event (brush larger than the model, undo with nothing to undo),
-///         with the session left as after the previous event.
-ReplayReport replayScript(SculptSession& session, const StrokeScript& script, const std::string& source,
-                          const Progress& progress = {});
 
 }  // namespace sculpt

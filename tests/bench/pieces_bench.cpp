@@ -23,9 +23,9 @@
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/contact.h"
 #include "core/primitives/analytic_shapes.h"
+#include "sculpt/session/document.h"
 #include "sculpt/session/shape_import.h"
 #include "tests/support/cgal_data.h"
-#include "ui/document/document.h"
 
 #include <benchmark/benchmark.h>
 #include <openvdb/tools/Interpolation.h>
@@ -115,8 +115,8 @@ void BM_RigidMove(benchmark::State& state)
     const double radius = 0.5 * double(state.range(0));
     std::vector<Piece> pieces{{{"moved"}, makeSphere(radius, 0.5)}, {{"apart"}, makeSphere(8.0, 0.5)}};
     pieces[1].placement.setTranslation(Vec3d(radius + 40.0, 0.0, 0.0));
-    ui::Document document(std::move(pieces));
-    const ui::DocumentPiece &moved = document.pieces()[0], &apart = document.pieces()[1];
+    Document document(std::move(pieces));
+    const DocumentPiece &moved = document.pieces()[0], &apart = document.pieces()[1];
     // The boxes a move in the window finds once, at its start.
     const openvdb::BBoxd movedBox = leafWorldBox(moved.session->field());
     const ContactBody other{apart.session->field(), *apart.session->mesher(), apart.look.placement,

@@ -9,7 +9,8 @@
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/scene_file.h"
-#include "sculpt/session/sculpt_session.h"
+#include "sculpt/session/document.h"
+#include "sculpt/session/script_replay.h"
 #include "sculpt/session/shape_import.h"
 #include "sculpt/session/stroke_script.h"
 
@@ -46,8 +47,8 @@ void openDocument(const fs::path& path) { readVdbDocument(path); }
 void replayStrokes(const fs::path& path)
 {
     const StrokeScript script = readStrokeScript(path);
-    SculptSession session(makeSphere(10.0, 1.0), /*liveMesh=*/false);
-    replayScript(session, script, path.string());
+    Document document(makeSphere(10.0, 1.0), {}, {}, PieceMeshes::None);
+    replayScript(document, script, path.string());
 }
 
 void readSceneFile(const fs::path& path) { readScene(path); }

@@ -3,9 +3,9 @@
 
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
+#include "sculpt/session/document.h"
 #include "tests/support/temp_dir.h"
 #include "ui/document/autosave.h"
-#include "ui/document/document.h"
 
 #include <sys/stat.h>
 

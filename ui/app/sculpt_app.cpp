@@ -3,6 +3,7 @@
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/field/placed_box.h"
+#include "sculpt/session/script_replay.h"
 #include "ui/app/process_memory.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
@@ -362,42 +363,11 @@ void SculptApp::drawPanels()
 void SculptApp::replayStrokes()
 {
     const StrokeScript script = readStrokeScript(mOptions.strokes);
-    for (const ScriptEvent& event : script.events) {
-        replayEvent(event);
+    ReplayReport done;
+    for (std::size_t i = 0; i < script.events.size(); ++i) {
+        const std::string where = mOptions.strokes.string() + ": events[" + std::to_string(i) + "]";
+        applyScriptEvent(*mDocument, script.events[i], where, done);
         frame();  // the sculpt grows on screen, one event per frame
-    }
-}
-
-void SculptApp::replayEvent(const ScriptEvent& event)
-{
-    const FieldImage& field = mDocument->session().field();
-    switch (event.kind) {
-    case ScriptEvent::Kind::Undo: mDocument->undo(); return;
-    case ScriptEvent::Kind::Redo: mDocument->redo(); return;
-    case ScriptEvent::Kind::Mask: mDocument->editMask(event.maskOperation, event.maskTimes); return;
-    case ScriptEvent::Kind::MaskSelection: {
-        FieldImage copy = field.deepCopy();
-        applyMaskSelection(copy, event.maskSelection, nullptr);
-        mDocument->replaceMask(copy.maskPtr(), std::string("mask ") + maskSelectionName(event.maskSelection.kind),
-                               event);
-        return;
-    }
-    case ScriptEvent::Kind::Drain: mDocument->drillHoles({event.hole}); return;
-    case ScriptEvent::Kind::Cut: {
-        const std::string label = prismModeName(event.prismMode);
-        FieldImage result = applyPrism(field, event.prism, event.prismMode);
-        refuseEmptyResult(result, mOptions.strokes.string(), label);
-        mDocument->replaceField(std::move(result), label, event);
-        return;
-    }
-    case ScriptEvent::Kind::Stroke: {
-        Stroke settings = event.stroke;
-        settings.samples.clear();
-        mDocument->beginStroke(settings, event.sources);
-        for (const StrokeSample& sample : event.stroke.samples) mDocument->extendStroke(sample);
-        mDocument->endStroke();
-        return;
-    }
     }
 }
 

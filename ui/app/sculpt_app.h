@@ -6,10 +6,10 @@
 #include "core/mesh/surface_statistics.h"
 #include "core/motion/morph.h"
 #include "core/primitives/skeleton.h"
+#include "sculpt/session/document.h"
 #include "sculpt/session/model_filter.h"
 #include "ui/commands/command_registry.h"
 #include "ui/document/autosave.h"
-#include "ui/document/document.h"
 #include "ui/document/file_listing.h"
 #include "ui/document/open_preview.h"
 #include "ui/document/recent_files.h"
@@ -283,8 +283,6 @@ private:
     }
     /// Starts `filter` over a copy of the model as a background job.
     void startFilter(const ModelFilter& filter);
-    /// One event of the stroke script the command line replays (--strokes), as the window makes it.
-    void replayEvent(const ScriptEvent& event);
     /// Opens the document at `path` as a job; the old one stays if it fails.
     void startOpen(const std::filesystem::path& path, const std::string& grid = {});
     /// The open job itself: a large model shows its preview first (OpenPreview), then fills in.

@@ -3,7 +3,7 @@
 #include "core/base/errors.h"
 #include "core/base/private_directory.h"
 #include "core/io/vdb_file.h"
-#include "ui/document/document.h"
+#include "sculpt/session/document.h"
 
 #include <cstdlib>
 

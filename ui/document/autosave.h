@@ -10,9 +10,11 @@
 #include <filesystem>
 #include <optional>
 
-namespace sculpt::ui {
-
+namespace sculpt {
 class Document;
+}  // namespace sculpt
+
+namespace sculpt::ui {
 
 class Autosave {
 public:

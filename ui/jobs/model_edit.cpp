@@ -7,29 +7,22 @@ namespace sculpt::ui {
 
 ModelEdit prismEdit(const ViewPrism& prism, PrismMode mode, std::string label)
 {
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Cut;
-    event.prism = prism;
-    event.prismMode = mode;
     ModelEdit edit(label, [prism, mode, label](FieldImage model, const Progress&) {
         FieldImage result = applyPrism(model, prism, mode);
         refuseEmptyResult(result, "the model", label);
         return result;
     });
-    edit.scripted = std::move(event);
+    edit.scripted = script::CutEvent{prism, mode};
     return edit;
 }
 
 ModelEdit maskSelectionEdit(const MaskSelection& selection, std::string label)
 {
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::MaskSelection;
-    event.maskSelection = selection;
     ModelEdit edit(std::move(label), [selection](FieldImage model, const Progress&) {
         applyMaskSelection(model, selection, nullptr);
         return model;
     });
-    edit.scripted = std::move(event);
+    edit.scripted = script::MaskSelectionEvent{selection};
     edit.takes = ModelEdit::Takes::Mask;
     return edit;
 }

@@ -8,7 +8,7 @@
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
 #include "core/masks/mask_selection.h"
-#include "sculpt/session/stroke_script.h"
+#include "sculpt/session/script_event.h"
 
 #include <functional>
 #include <optional>

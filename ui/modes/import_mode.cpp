@@ -2,8 +2,8 @@
 
 #include "core/base/text_format.h"
 #include "core/field/csg_combine.h"
+#include "sculpt/session/document.h"
 #include "sculpt/session/shape_import.h"
-#include "ui/document/document.h"
 #include "ui/modes/mode_host.h"
 #include "ui/panels/panels.h"
 

@@ -12,9 +12,11 @@
 #include <memory>
 #include <string>
 
-namespace sculpt::ui {
-
+namespace sculpt {
 class Document;
+}  // namespace sculpt
+
+namespace sculpt::ui {
 
 class ModeHost {
 public:

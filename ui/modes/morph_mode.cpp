@@ -2,7 +2,7 @@
 
 #include "core/field/grid_checksum.h"
 #include "core/motion/morph_verdict.h"
-#include "ui/document/document.h"
+#include "sculpt/session/document.h"
 #include "ui/modes/mode_host.h"
 #include "ui/panels/panels.h"
 

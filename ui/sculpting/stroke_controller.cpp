@@ -1,6 +1,6 @@
 #include "ui/sculpting/stroke_controller.h"
 
-#include "ui/document/document.h"
+#include "sculpt/session/document.h"
 
 #include <algorithm>
 #include <cmath>

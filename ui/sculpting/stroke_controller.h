@@ -10,9 +10,11 @@
 
 #include <optional>
 
-namespace sculpt::ui {
-
+namespace sculpt {
 class Document;
+}  // namespace sculpt
+
+namespace sculpt::ui {
 
 class StrokeController {
 public:

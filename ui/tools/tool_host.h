@@ -17,9 +17,11 @@
 #include <optional>
 #include <string>
 
-namespace sculpt::ui {
-
+namespace sculpt {
 class Document;
+}  // namespace sculpt
+
+namespace sculpt::ui {
 struct InputEvent;
 
 class ToolHost {

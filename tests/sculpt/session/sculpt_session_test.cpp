@@ -12,7 +12,9 @@
 #include "core/primitives/analytic_shapes.h"
 #include "core/scan/scan_readers.h"
 #include "core/solids/hollow.h"
+#include "sculpt/session/document.h"
 #include "sculpt/session/import_preview.h"
+#include "sculpt/session/script_replay.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/shape_import.h"
 #include "sculpt/session/stroke_script.h"
@@ -331,17 +333,28 @@ TEST(SculptSession, LiveMeshFollowsEveryStrokeUndoAndRedo)
 
 std::string dataPath(const std::string& name) { return std::string(SCULPT_DATA_DIR) + "/" + name; }
 
+/// A one-piece document of `field`, as `sculpt apply` replays into (no live mesh).
+Document documentOf(FieldImage field) { return Document(std::move(field), {}, {}, PieceMeshes::None); }
+
+std::uint64_t checksumOf(const Document& document) { return gridChecksum(document.session().field().grid()); }
+
+template <typename Event>
+const Event& as(const ScriptEvent& event)
+{
+    return std::get<Event>(event);
+}
+
 TEST(StrokeScript, ReplaysAreBitIdenticalTwiceAndWithOneOrTwoThreads)
 {
     const StrokeScript script = readStrokeScript(dataPath("strokes/face.json"));
     std::vector<std::uint64_t> results;
     for (const int threads : {2, 1, 2}) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-        SculptSession session(makeSphere(50.0, 0.5));
-        const ReplayReport done = replayScript(session, script, "face.json");
+        Document document = documentOf(makeSphere(50.0, 0.5));
+        const ReplayReport done = replayScript(document, script, "face.json");
         EXPECT_GT(done.strokes, 10u);
         EXPECT_EQ(done.undos, 2u);
-        results.push_back(checksumOf(session));
+        results.push_back(checksumOf(document));
     }
     EXPECT_EQ(results[0], results[1]);
     EXPECT_EQ(results[0], results[2]);
@@ -349,9 +362,9 @@ TEST(StrokeScript, ReplaysAreBitIdenticalTwiceAndWithOneOrTwoThreads)
 
 TEST(StrokeScript, KeepVolumeSmoothingOfTheSculptedFaceHoldsItsMeshVolume)
 {
-    SculptSession session(makeSphere(50.0, 0.5));
-    replayScript(session, readStrokeScript(dataPath("strokes/face.json")), "face.json");
-    FieldImage face = session.takeField();
+    Document document = documentOf(makeSphere(50.0, 0.5));
+    replayScript(document, readStrokeScript(dataPath("strokes/face.json")), "face.json");
+    FieldImage face = document.session().takeField();
     const double before = measureField(face).volume;
     smooth(face, 30, true);
     EXPECT_NEAR(measureField(face).volume, before, 0.001 * before) << "after 30 iterations";
@@ -376,36 +389,37 @@ TEST(StrokeScript, AWrittenScriptReadsBackAndReplaysBitForBit)
     Stroke add = strokeOf(BrushTool::Add, 2.5, {Vec3d(0.1, 20.3, 1.0 / 3.0), Vec3d(4.7, 19.1, 2.0 / 7.0)});
     add.samples[1].pressure = 0.37;
     add.symmetry.x = true;
-    script.events.push_back({ScriptEvent::Kind::Stroke, add, {}});
+    script.events.push_back(script::StrokeEvent{add, {}});
     Stroke smooth = strokeOf(BrushTool::Smooth, 3.0, {Vec3d(0, 20, 0)});
     smooth.brush.keepVolume = true;
-    script.events.push_back({ScriptEvent::Kind::Stroke, smooth, {}});
-    script.events.push_back({ScriptEvent::Kind::Undo, {}, {}});
+    script.events.push_back(script::StrokeEvent{smooth, {}});
+    script.events.push_back(script::UndoEvent{});
     const std::string scene =
         R"({"iso": 0.5, "operation": "union", "primitives": [{"kernel": "soft-object", "radius": 4, "skeleton": {"type": "point", "position": [0, 0, 0]}}]})";
     Stroke blob = strokeOf(BrushTool::Primitive, 2.0, {Vec3d(0, 0, 20)});
-    blob.brush.primitive = parseStrokeScript(R"({"events": [{"tool": "primitive", "radius": 2, "primitives": )" +
-                                                 scene + R"(, "samples": [[0, 0, 20]]}]})",
-                                             "inline", ".")
-                               .events[0]
-                               .stroke.brush.primitive;
-    script.events.push_back({ScriptEvent::Kind::Stroke, blob, {scene, ""}});
+    const ScriptEvent parsedBlob =
+        parseStrokeScript(R"({"events": [{"tool": "primitive", "radius": 2, "primitives": )" + scene +
+                              R"(, "samples": [[0, 0, 20]]}]})",
+                          "inline", ".")
+            .events[0];
+    blob.brush.primitive = as<script::StrokeEvent>(parsedBlob).stroke.brush.primitive;
+    script.events.push_back(script::StrokeEvent{blob, {scene, ""}});
     // A follow stroke names its target file: the replay reads it again.
     const test::TempDir dir;
     writeFieldImage(makeBox(17.0, 0.7), dir / "box.vdb");
     Stroke follow = strokeOf(BrushTool::Follow, 5.0, {Vec3d(20, 0, 0), Vec3d(19, 5, 0)});
     follow.brush.target = std::make_shared<const FieldImage>(readFieldImage(dir / "box.vdb"));
-    script.events.push_back({ScriptEvent::Kind::Stroke, follow, {"", "box.vdb"}});
+    script.events.push_back(script::StrokeEvent{follow, {"", "box.vdb"}});
 
     const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", dir.path());
     ASSERT_EQ(back.events.size(), script.events.size());
-    EXPECT_EQ(back.events[0].stroke.samples[1].positionWorld, add.samples[1].positionWorld);
-    EXPECT_EQ(back.events[0].stroke.samples[1].pressure, 0.37);
-    EXPECT_TRUE(back.events[0].stroke.symmetry.x);
-    EXPECT_TRUE(back.events[1].stroke.brush.keepVolume);
-    EXPECT_EQ(back.events[2].kind, ScriptEvent::Kind::Undo);
-    EXPECT_EQ(back.events[4].sources.targetPath, "box.vdb");
-    SculptSession a(makeSphere(20.0, 0.5)), b(makeSphere(20.0, 0.5));
+    EXPECT_EQ(as<script::StrokeEvent>(back.events[0]).stroke.samples[1].positionWorld, add.samples[1].positionWorld);
+    EXPECT_EQ(as<script::StrokeEvent>(back.events[0]).stroke.samples[1].pressure, 0.37);
+    EXPECT_TRUE(as<script::StrokeEvent>(back.events[0]).stroke.symmetry.x);
+    EXPECT_TRUE(as<script::StrokeEvent>(back.events[1]).stroke.brush.keepVolume);
+    EXPECT_TRUE(std::holds_alternative<script::UndoEvent>(back.events[2]));
+    EXPECT_EQ(as<script::StrokeEvent>(back.events[4]).sources.targetPath, "box.vdb");
+    Document a = documentOf(makeSphere(20.0, 0.5)), b = documentOf(makeSphere(20.0, 0.5));
     replayScript(a, script, "original");
     replayScript(b, back, "written");
     EXPECT_EQ(checksumOf(a), checksumOf(b));
@@ -418,13 +432,9 @@ TEST(StrokeScript, MaskStrokesMaskActionsAndCutsReplayBitForBit)
 {
     StrokeScript script;
     script.events.push_back(
-        {ScriptEvent::Kind::Stroke, strokeOf(BrushTool::Mask, 6.0, {Vec3d(20, 0, 0), Vec3d(14, 14, 0)}), {}});
-    ScriptEvent invert;
-    invert.kind = ScriptEvent::Kind::Mask;
-    invert.maskOperation = MaskOperation::Invert;
-    script.events.push_back(invert);
-    ScriptEvent cut;
-    cut.kind = ScriptEvent::Kind::Cut;
+        script::StrokeEvent{strokeOf(BrushTool::Mask, 6.0, {Vec3d(20, 0, 0), Vec3d(14, 14, 0)}), {}});
+    script.events.push_back(script::MaskEvent{MaskOperation::Invert, 1});
+    script::CutEvent cut;
     cut.prism.viewFromWorld.setTranslation(Vec3d(0.0, 0.0, -100.0));
     cut.prism.perspective = true;
     cut.prism.polygon = {{0.05, -0.3}, {0.3, -0.3}, {0.3, 0.3}, {0.05, 0.3}};
@@ -433,34 +443,35 @@ TEST(StrokeScript, MaskStrokesMaskActionsAndCutsReplayBitForBit)
     script.events.push_back(cut);
     const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
     ASSERT_EQ(back.events.size(), 3u);
-    EXPECT_EQ(back.events[1].maskOperation, MaskOperation::Invert);
-    EXPECT_EQ(back.events[2].prism.polygon, cut.prism.polygon);
-    EXPECT_EQ(back.events[2].prism.viewFromWorld, cut.prism.viewFromWorld);
-    EXPECT_TRUE(back.events[2].prism.mirror[0]);
-    EXPECT_FALSE(std::isfinite(back.events[2].prism.farDepth));
+    EXPECT_EQ(as<script::MaskEvent>(back.events[1]).operation, MaskOperation::Invert);
+    const ViewPrism& prism = as<script::CutEvent>(back.events[2]).prism;
+    EXPECT_EQ(prism.polygon, cut.prism.polygon);
+    EXPECT_EQ(prism.viewFromWorld, cut.prism.viewFromWorld);
+    EXPECT_TRUE(prism.mirror[0]);
+    EXPECT_FALSE(std::isfinite(prism.farDepth));
 
-    SculptSession a(makeSphere(20.0, 0.5)), b(makeSphere(20.0, 0.5));
+    Document a = documentOf(makeSphere(20.0, 0.5)), b = documentOf(makeSphere(20.0, 0.5));
     const std::uint64_t start = checksumOf(a);
     const ReplayReport done = replayScript(a, script, "original");
     EXPECT_EQ(done.maskOperations, 1u);
     EXPECT_EQ(done.cuts, 1u);
     replayScript(b, back, "written");
     EXPECT_EQ(checksumOf(a), checksumOf(b));
-    ASSERT_NE(a.field().mask(), nullptr);
-    EXPECT_EQ(gridChecksum(*a.field().mask()), gridChecksum(*b.field().mask()));
+    ASSERT_NE(a.session().field().mask(), nullptr);
+    EXPECT_EQ(gridChecksum(*a.session().field().mask()), gridChecksum(*b.session().field().mask()));
     // The inverted mask holds nearly everything but where the stroke painted: the cut still cuts
     // (a cut is not a brush: it ignores the mask, as a saw would).
     EXPECT_NE(checksumOf(a), start);
     const SculptSession whole(makeSphere(20.0, 0.5));
     EXPECT_EQ(checksumOf(a), gridChecksum(applyPrism(whole.field(), cut.prism, PrismMode::Cut).grid()));
-    const std::uint64_t maskAfter = gridChecksum(*a.field().mask());
+    const std::uint64_t maskAfter = gridChecksum(*a.session().field().mask());
     ASSERT_TRUE(a.undo());  // the cut
     EXPECT_EQ(checksumOf(a), start);
-    EXPECT_EQ(gridChecksum(*a.field().mask()), maskAfter);
+    EXPECT_EQ(gridChecksum(*a.session().field().mask()), maskAfter);
     ASSERT_TRUE(a.undo());  // the invert
     ASSERT_TRUE(a.undo());  // the mask stroke
-    EXPECT_EQ(a.field().mask(), nullptr);
-    EXPECT_EQ(a.history().undoCount(), 0u);
+    EXPECT_EQ(a.session().field().mask(), nullptr);
+    EXPECT_TRUE(a.undoLabels().empty());
 }
 
 TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEach)
@@ -469,16 +480,13 @@ TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEac
     options.thicknessWorld = 2.0;
     const FieldImage shell = hollow(makeSphere(20.0, 0.5), options).field;  // walls at r = 18 and 20
     StrokeScript script;
-    ScriptEvent drain;
-    drain.kind = ScriptEvent::Kind::Drain;
-    drain.hole = {Vec3d(21, 0, 0), Vec3d(16, 0, 0), 1.5};
+    const script::DrainEvent drain{{Vec3d(21, 0, 0), Vec3d(16, 0, 0), 1.5}};
     script.events.push_back(drain);
     const auto selection = [&](MaskSelectionKind kind, bool erase, const std::function<void(MaskSelection&)>& set) {
-        ScriptEvent event;
-        event.kind = ScriptEvent::Kind::MaskSelection;
-        event.maskSelection.kind = kind;
-        event.maskSelection.erase = erase;
-        set(event.maskSelection);
+        script::MaskSelectionEvent event;
+        event.selection.kind = kind;
+        event.selection.erase = erase;
+        set(event.selection);
         script.events.push_back(event);
     };
     const auto frontBox = [](double x0) {
@@ -496,16 +504,20 @@ TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEac
     selection(MaskSelectionKind::Island, true, [](MaskSelection& m) { m.point = Vec3d(0.0, 20.0, 0.0); });
     const StrokeScript back = parseStrokeScript(writeStrokeScript(script), "written", ".");
     ASSERT_EQ(back.events.size(), script.events.size());
-    EXPECT_EQ(back.events[0].hole.to, drain.hole.to);
-    EXPECT_EQ(back.events[2].maskSelection.prism.polygon, frontBox(10.0).polygon);
-    EXPECT_TRUE(back.events[2].maskSelection.erase);
-    EXPECT_EQ(back.events[3].maskSelection.thicknessWorld, 3.0);
-    EXPECT_EQ(back.events[4].maskSelection.creaseRadiusWorld, 30.0);
-    EXPECT_EQ(back.events[5].maskSelection.point, Vec3d(0.0, 20.0, 0.0));
+    const auto selected = [&back](std::size_t i) { return as<script::MaskSelectionEvent>(back.events[i]).selection; };
+    EXPECT_EQ(as<script::DrainEvent>(back.events[0]).hole.to, drain.hole.to);
+    EXPECT_EQ(selected(2).prism.polygon, frontBox(10.0).polygon);
+    EXPECT_TRUE(selected(2).erase);
+    EXPECT_EQ(selected(3).thicknessWorld, 3.0);
+    EXPECT_EQ(selected(4).creaseRadiusWorld, 30.0);
+    EXPECT_EQ(selected(5).point, Vec3d(0.0, 20.0, 0.0));
 
-    SculptSession a(shell.deepCopy()), b(shell.deepCopy());
+    Document a = documentOf(shell.deepCopy()), b = documentOf(shell.deepCopy());
     std::vector<std::pair<std::uint64_t, std::uint64_t>> states{{checksumOf(a), 0}};
-    const auto maskOf = [](const SculptSession& s) { return s.field().mask() ? gridChecksum(*s.field().mask()) : 0; };
+    const auto maskOf = [](const Document& d) {
+        const FieldImage& field = d.session().field();
+        return field.mask() ? gridChecksum(*field.mask()) : 0;
+    };
     for (std::size_t i = 0; i < script.events.size(); ++i) {
         replayScript(a, StrokeScript{{script.events[i]}}, "original");
         states.emplace_back(checksumOf(a), maskOf(a));
@@ -519,7 +531,7 @@ TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEac
         ASSERT_TRUE(a.undo());
         EXPECT_EQ(std::make_pair(checksumOf(a), maskOf(a)), states[i - 1]) << "undoing event " << i - 1;
     }
-    EXPECT_EQ(a.history().undoCount(), 0u);
+    EXPECT_TRUE(a.undoLabels().empty());
 }
 
 TEST(StrokeScript, ErrorsNameTheEventAndTheField)
@@ -545,7 +557,8 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
               "s.json: events[0] ('add' stroke): field 'samples' is empty: a stroke needs at least one");
     EXPECT_EQ(
         parseError(R"([{"action": "again"}])"),
-        "s.json: events[0]: field 'action' is \"again\" (expected \"undo\", \"redo\", \"mask\", \"cut\" or \"drain\")");
+        "s.json: events[0]: field 'action' is \"again\" (expected \"undo\", \"redo\", \"mask\", \"cut\", \"drain\" or "
+        "\"piece\")");
     EXPECT_EQ(parseError(R"([{"tool": "primitive", "radius": 1, "primitives": "missing.json", )" + ok + "}]"),
               "s.json: events[0] ('primitive' stroke): field 'primitives': ./missing.json: cannot read the scene file");
     EXPECT_EQ(parseError(R"([{"tool": "follow", "radius": 1, )" + ok + "}]"),
@@ -561,7 +574,7 @@ TEST(StrokeScript, ErrorsNameTheEventAndTheField)
 
 TEST(StrokeScript, ReplayNamesTheEventThatCannotBeApplied)
 {
-    SculptSession session(makeSphere(10.0, 0.5));
+    Document session = documentOf(makeSphere(10.0, 0.5));
     const auto script = parseStrokeScript(
         R"({"events": [{"tool": "add", "radius": 1, "samples": [[10, 0, 0]]}, {"action": "undo"}, {"action": "undo"}]})",
         "s.json", ".");

@@ -1,7 +1,7 @@
 #include "ui/tools/gesture/gesture_tool.h"
 
+#include "sculpt/session/document.h"
 #include "ui/commands/command_registry.h"
-#include "ui/document/document.h"
 #include "ui/input/input_event.h"
 #include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"

@@ -1,12 +1,11 @@
 #include "ui/tools/pieces/pieces_tool.h"
 
+#include "core/base/errors.h"
 #include "core/field/placed_box.h"
 #include "core/pieces/contact.h"
-#include "core/pieces/lattice_transfer.h"
-#include "core/pieces/piece_edits.h"
-#include "core/pieces/push.h"
+#include "sculpt/session/document.h"
+#include "sculpt/session/piece_changes.h"
 #include "ui/commands/command_registry.h"
-#include "ui/document/document.h"
 #include "ui/input/input_event.h"
 #include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"
@@ -21,10 +20,6 @@
 namespace sculpt::ui {
 
 namespace {
-
-using Pieces = std::vector<DocumentPiece>;
-
-Piece asPiece(const DocumentPiece& piece) { return {piece.look, piece.session->field()}; }
 
 /// A piece as contact sees it; `box` its leafWorldBox if known (a gesture keeps them).
 ContactBody bodyOf(const DocumentPiece& piece, const openvdb::Mat4d& placement, const openvdb::BBoxd& box = {})
@@ -214,82 +209,60 @@ void PiecesTool::solo(std::size_t index)
     changeLooks(std::move(all), label);
 }
 
-void PiecesTool::remove(std::size_t index)
-{
-    if (mHost.busy()) return;
-    Document& document = mHost.document();
-    if (document.pieces().size() < 2) return mHost.showError("a document keeps at least one piece: this is its last");
-    const std::string name = document.pieces()[index].look.name;
-    document.replacePieces({index}, {}, "delete '" + name + "'");
-    mHost.notify("deleted '" + name + "' (Ctrl+Z brings it back)");
-}
-
-void PiecesTool::startPieceEdit(std::string label, std::vector<std::size_t> replaced,
-                                std::function<std::vector<Piece>()> make)
-{
-    if (mHost.busy()) return;
-    startJob<Pieces>(
-        mHost, label,
-        [make = std::move(make)](const Progress& progress) {
-            std::vector<Piece> made = make();
-            Pieces pieces;
-            for (std::size_t i = 0; i < made.size(); ++i) {
-                pieces.push_back(makeDocumentPiece(std::move(made[i]), scaledProgress(progress, double(i) / made.size(),
-                                                                                      double(i + 1) / made.size())));
-            }
-            return pieces;
-        },
-        [this, label, replaced](Pieces pieces) {
-            const std::size_t count = pieces.size();
-            mHost.document().replacePieces(replaced, std::move(pieces), label);
-            mHost.notify(label + ": " + std::to_string(count) + " piece" + (count == 1 ? "" : "s") +
-                         " (Ctrl+Z undoes it)");
-        });
-}
-
-void PiecesTool::duplicate(std::size_t index)
-{
-    Document& document = mHost.document();
-    Piece copy = asPiece(document.pieces()[index]);
-    copy.name = document.freeName(copy.name + " copy");
-    startPieceEdit("duplicate '" + document.pieces()[index].look.name + "'", {},
-                   [copy]() { return std::vector<Piece>{Piece(copy, copy.field.deepCopy())}; });
-}
-
+void PiecesTool::remove(std::size_t index) { replace(script::DeletePieceEvent{index}); }
+void PiecesTool::duplicate(std::size_t index) { replace(script::DuplicatePieceEvent{index}); }
+void PiecesTool::split(std::size_t index) { replace(script::SplitPieceEvent{index}); }
 void PiecesTool::merge(std::size_t a, std::size_t b)
 {
-    if (a == b) return;
-    const Document& document = mHost.document();
-    const Piece first = asPiece(document.pieces()[std::min(a, b)]), second = asPiece(document.pieces()[std::max(a, b)]);
-    startPieceEdit("merge '" + first.name + "' and '" + second.name + "'", {std::min(a, b), std::max(a, b)},
-                   [first, second]() { return std::vector<Piece>{mergePieces(first, second)}; });
-}
-
-void PiecesTool::split(std::size_t index)
-{
-    const Piece piece = asPiece(mHost.document().pieces()[index]);
-    startPieceEdit("split '" + piece.name + "'", {index}, [piece]() { return splitPiece(piece); });
+    if (a != b) replace(script::MergePiecesEvent{a, b});
 }
 
 void PiecesTool::applyPlacement(std::size_t index)
 {
+    const Document& document = mHost.document();
+    if (index < document.pieces().size() && document.pieces()[index].look.placement != openvdb::Mat4d::identity())
+        move(script::ApplyPlacementEvent{index}, ": its voxels resampled where it stands");
+}
+
+void PiecesTool::replace(const ScriptEvent& event)
+{
     if (mHost.busy()) return;
-    const Piece piece = asPiece(mHost.document().pieces()[index]);
-    if (piece.placement == openvdb::Mat4d::identity()) return;
-    const std::string label = "apply the placement of '" + piece.name + "'";
-    startJob<FieldImage>(
-        mHost, label,
-        [piece](const Progress&) {
-            // Resampled into its own lattice where it stands now: its placement becomes the identity.
-            return onLatticeOf(piece.field, piece.placement, piece.field, openvdb::Mat4d::identity(),
-                               piece.field.halfWidthVoxels());
+    using Pieces = std::vector<DocumentPiece>;
+    PieceReplacement replacement;
+    try {
+        replacement = replacementOf(mHost.document(), event);
+    } catch (const InputError& e) {
+        return mHost.showError(e.what());
+    }
+    startJob<Pieces>(
+        mHost, replacement.label,
+        [work = std::move(replacement.work)](const Progress& progress) {
+            std::vector<Piece> made = work(scaledProgress(progress, 0.0, 0.5));
+            Pieces pieces;  // meshed here, off the UI thread
+            for (std::size_t i = 0; i < made.size(); ++i) {
+                const double from = 0.5 + 0.5 * double(i) / double(made.size());
+                pieces.push_back(makeDocumentPiece(std::move(made[i]),
+                                                   scaledProgress(progress, from, from + 0.5 / double(made.size()))));
+            }
+            return pieces;
         },
-        [this, index, label](FieldImage placed) {
-            std::vector<std::pair<std::size_t, FieldImage>> resampled;
-            resampled.emplace_back(index, std::move(placed));
-            mHost.document().movePiece(index, openvdb::Mat4d::identity(), std::move(resampled), label);
-            mHost.notify(label + ": its voxels resampled where it stands (Ctrl+Z undoes it)");
+        [this, event, label = replacement.label, replaced = replacement.replaced](Pieces pieces) {
+            const std::size_t count = pieces.size();
+            mHost.document().replacePieces(replaced, std::move(pieces), label, event);
+            mHost.notify(count == 0 ? label + " (Ctrl+Z brings it back)"
+                                    : label + ": " + std::to_string(count) + " piece" + (count == 1 ? "" : "s") +
+                                          " (Ctrl+Z undoes it)");
         });
+}
+
+void PiecesTool::move(const ScriptEvent& event, const std::string& what)
+{
+    if (mHost.busy()) return;
+    PieceMove change = moveOf(mHost.document(), event);
+    startJob<PieceFields>(mHost, change.label, std::move(change.work), [this, event, change, what](PieceFields fields) {
+        mHost.document().movePiece(change.piece, change.placement, std::move(fields), change.label, event);
+        mHost.notify(change.label + what + " (Ctrl+Z undoes it)");
+    });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -367,33 +340,7 @@ void PiecesTool::endGesture(bool keep)
         mHost.notify(label + " (Ctrl+Z undoes it)");
         return;
     }
-    startPush(index, mShown, pushed, label);
-}
-
-void PiecesTool::startPush(std::size_t index, const openvdb::Mat4d& placement, std::vector<std::size_t> pushed,
-                           const std::string& label)
-{
-    using Dents = std::vector<std::pair<std::size_t, FieldImage>>;
-    const auto& pieces = mHost.document().pieces();
-    const FieldImage pusher = pieces[index].session->field();
-    std::vector<std::pair<Piece, std::size_t>> others;
-    for (std::size_t i : pushed) others.push_back({asPiece(pieces[i]), i});
-    startJob<Dents>(
-        mHost, label + ", pushing " + std::to_string(pushed.size()),
-        [pusher, placement, others](const Progress& progress) {
-            Dents dents;
-            for (std::size_t k = 0; k < others.size(); ++k) {
-                FieldImage dented = others[k].first.field.deepCopy();
-                pushAside(dented, others[k].first.placement, pusher, placement);
-                dents.emplace_back(others[k].second, std::move(dented));
-                sculpt::report(progress, double(k + 1) / double(others.size()));
-            }
-            return dents;
-        },
-        [this, index, placement, label](Dents dents) {
-            mHost.document().movePiece(index, placement, std::move(dents), label);
-            mHost.notify(label + ", the pieces in its way pushed aside (Ctrl+Z undoes both)");
-        });
+    move(script::MovePieceEvent{index, mShown, pushed}, ", the pieces in its way pushed aside (Ctrl+Z undoes both)");
 }
 
 bool PiecesTool::selectAt(double x, double y)

@@ -6,6 +6,7 @@
 ///        solo, delete, duplicate, merge, split, applying a placement (jobs where they make fields).
 
 #include "core/field/piece.h"
+#include "sculpt/session/script_event.h"
 #include "ui/tools/pieces/piece_gesture.h"
 #include "ui/tools/tool.h"
 
@@ -66,13 +67,12 @@ public:
 private:
     void point(double x, double y);
     void endGesture(bool keep);
-    /// Lands a move that dents the pieces `pushed` as a job (pushAside keeps their volumes).
-    void startPush(std::size_t index, const openvdb::Mat4d& placement, std::vector<std::size_t> pushed,
-                   const std::string& label);
     /// Makes the piece under the pixel the one sculpted; false if none is there.
     bool selectAt(double x, double y);
-    /// Runs `make` as a job; the pieces it makes take the place of those at `replaced`.
-    void startPieceEdit(std::string label, std::vector<std::size_t> replaced, std::function<std::vector<Piece>()> make);
+    /// A duplicate, delete, split or merge, made as a job, landing as one undo step.
+    void replace(const ScriptEvent& event);
+    /// A move that pushes pieces aside or a placement applied, made as a job; `what` ends its notice.
+    void move(const ScriptEvent& event, const std::string& what);
 
     ToolHost& mHost;
     bool mPush = false;

@@ -1,8 +1,8 @@
 #include "ui/tools/sculpt/sculpt_tool.h"
 
 #include "core/base/errors.h"
+#include "sculpt/session/document.h"
 #include "ui/commands/command_registry.h"
-#include "ui/document/document.h"
 #include "ui/input/input_event.h"
 #include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"

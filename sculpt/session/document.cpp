@@ -1,4 +1,4 @@
-#include "ui/document/document.h"
+#include "sculpt/session/document.h"
 
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
@@ -13,7 +13,7 @@
 #include <map>
 #include <stdexcept>
 
-namespace sculpt::ui {
+namespace sculpt {
 
 namespace {
 
@@ -28,27 +28,27 @@ std::string strokeLabel(const Stroke& stroke, std::size_t stamps)
 
 }  // namespace
 
-DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing)
+DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing, PieceMeshes meshes)
 {
     PieceLook look = piece;
-    return {std::move(look), std::make_shared<SculptSession>(std::move(piece.field), /*liveMesh=*/true,
+    return {std::move(look), std::make_shared<SculptSession>(std::move(piece.field), meshes == PieceMeshes::Live,
                                                              UndoHistory::kDefaultBudgetBytes, meshing)};
 }
 
-Document::Document(FieldImage field, std::filesystem::path path, const Progress& meshing)
+Document::Document(FieldImage field, std::filesystem::path path, const Progress& meshing, PieceMeshes meshes)
     : Document(std::vector<Piece>{{{field.grid().getName().empty() ? "surface" : field.grid().getName()}, field}},
-               std::move(path), meshing)
+               std::move(path), meshing, meshes)
 {}
 
-Document::Document(std::vector<Piece> pieces, std::filesystem::path path, const Progress& meshing)
-    : mPath(std::move(path))
+Document::Document(std::vector<Piece> pieces, std::filesystem::path path, const Progress& meshing, PieceMeshes meshes)
+    : mMeshes(meshes), mPath(std::move(path))
 {
     // Progress in proportion to each piece's voxels: meshing time follows them.
     double total = 0.0, done = 0.0;
     for (const Piece& piece : pieces) total += double(piece.field.grid().activeVoxelCount()) + 1.0;
     for (Piece& piece : pieces) {
         const double share = (double(piece.field.grid().activeVoxelCount()) + 1.0) / total;
-        mPieces.push_back(makeDocumentPiece(std::move(piece), scaledProgress(meshing, done, done + share)));
+        mPieces.push_back(makeDocumentPiece(std::move(piece), scaledProgress(meshing, done, done + share), meshes));
         done += share;
     }
 }
@@ -171,9 +171,8 @@ void Document::beginStroke(const Stroke& settings, StrokeSources sources, bool s
         if (i != mActive && mPieces[i].look.visible)
             others.push_back({mPieces[i].session->field(), placement * mPieces[i].look.placement.inverse()});
     session().beginStroke(settings, others);
-    // A stroke script replays strokes alone, without the pieces they stopped at.
-    if (!others.empty() && mUnscripted.empty()) mUnscripted = "a stroke that stopped at other pieces";
     mPendingSources = std::move(sources);
+    mPendingStopAtPieces = stopAtOthers;
 }
 
 SculptSession::StrokeReport Document::extendStroke(const StrokeSample& sample)
@@ -187,9 +186,7 @@ void Document::endStroke()
     ++mRevision;
     if (done.report.leavesChanged == 0) return;  // the history ignores a stroke that changed nothing
     recordStep(strokeLabel(done.stroke, done.report.stamps), {{mPieces[mActive].session}, {}, {}});
-    // A stroke script replays into a document's first piece.
-    if (mActive != 0 && mUnscripted.empty()) mUnscripted = "a stroke on piece '" + mPieces[mActive].look.name + "'";
-    mLog.events.push_back({ScriptEvent::Kind::Stroke, std::move(done.stroke), std::move(mPendingSources)});
+    logEvent(script::StrokeEvent{std::move(done.stroke), std::move(mPendingSources), mPendingStopAtPieces}, mActive);
 }
 
 void Document::replaceField(FieldImage result, const std::string& label, std::optional<ScriptEvent> scripted)
@@ -197,15 +194,21 @@ void Document::replaceField(FieldImage result, const std::string& label, std::op
     session().replaceField(std::move(result));
     ++mRevision;
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    if (scripted) logEdit(std::move(*scripted), label);
+    logEdit(std::move(scripted), label, mActive);
+}
+
+void Document::logEdit(std::optional<ScriptEvent> scripted, const std::string& label, std::size_t activeBefore)
+{
+    if (scripted) logEvent(std::move(*scripted), activeBefore);
     else if (mUnscripted.empty()) mUnscripted = label;
 }
 
-void Document::logEdit(ScriptEvent event, const std::string& label)
+void Document::logEvent(ScriptEvent event, std::size_t activeBefore)
 {
-    // The stroke log replays the first piece only: an edit of another leaves it incomplete.
-    if (mActive == 0) mLog.events.push_back(std::move(event));
-    else if (mUnscripted.empty()) mUnscripted = label + " on piece '" + mPieces[mActive].look.name + "'";
+    // A replay sculpts the piece the window sculpted: say so where the two would part.
+    if (activeBefore != mLoggedActive) mLog.events.push_back(script::SelectPieceEvent{activeBefore});
+    mLog.events.push_back(std::move(event));
+    mLoggedActive = mActive;
 }
 
 bool Document::editMask(MaskOperation operation, int times)
@@ -214,11 +217,7 @@ bool Document::editMask(MaskOperation operation, int times)
     ++mRevision;
     const std::string label = std::string(maskOperationName(operation)) + " mask";
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    ScriptEvent event;
-    event.kind = ScriptEvent::Kind::Mask;
-    event.maskOperation = operation;
-    event.maskTimes = times;
-    logEdit(std::move(event), label);
+    logEvent(script::MaskEvent{operation, times}, mActive);
     return true;
 }
 
@@ -227,7 +226,7 @@ void Document::replaceMask(openvdb::FloatGrid::Ptr mask, const std::string& labe
     session().replaceMask(std::move(mask));
     ++mRevision;
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    logEdit(std::move(scripted), label);
+    logEvent(std::move(scripted), mActive);
 }
 
 void Document::drillHoles(const std::vector<DrainHole>& holes)
@@ -236,39 +235,41 @@ void Document::drillHoles(const std::vector<DrainHole>& holes)
     ++mRevision;
     const std::string label = holes.size() == 1 ? "drain hole" : std::to_string(holes.size()) + " drain holes";
     recordStep(label, {{mPieces[mActive].session}, {}, {}});
-    for (const DrainHole& hole : holes) {
-        ScriptEvent event;
-        event.kind = ScriptEvent::Kind::Drain;
-        event.hole = hole;
-        logEdit(std::move(event), label);
-    }
+    for (const DrainHole& hole : holes) logEvent(script::DrainEvent{hole}, mActive);
 }
 
 void Document::setLooks(std::vector<PieceLook> looks, const std::string& label)
 {
-    if (looks.size() != mPieces.size()) throw std::logic_error("setLooks: one look per piece");
+    if (looks.size() != mPieces.size())
+        throw InputError("piece looks: " + std::to_string(looks.size()) + " looks for " +
+                         std::to_string(mPieces.size()) + " pieces");
     StepScope scope = piecesStep();
-    for (std::size_t i = 0; i < looks.size(); ++i) mPieces[i].look = std::move(looks[i]);
+    for (std::size_t i = 0; i < looks.size(); ++i) mPieces[i].look = looks[i];
     recordPiecesStep(label, std::move(scope));
+    logEvent(script::PieceLooksEvent{std::move(looks), label}, mActive);
 }
 
 void Document::movePiece(std::size_t index, const openvdb::Mat4d& placement,
-                         std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label)
+                         std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label,
+                         std::optional<ScriptEvent> scripted)
 {
     StepScope scope = piecesStep();
+    script::MovePieceEvent move{index, placement, {}};
     for (auto& [piece, field] : dented) {
         mPieces.at(piece).session->replaceField(std::move(field));
         scope.sessions.push_back(mPieces[piece].session);
+        move.pushed.push_back(piece);
     }
     mPieces.at(index).look.placement = placement;
     recordPiecesStep(label, std::move(scope));
-    if (!dented.empty() && mUnscripted.empty()) mUnscripted = label;
+    logEvent(scripted ? std::move(*scripted) : ScriptEvent(std::move(move)), mActive);
 }
 
 void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vector<DocumentPiece> added,
-                             const std::string& label)
+                             const std::string& label, std::optional<ScriptEvent> scripted)
 {
     if (mPieces.size() - replaced.size() + added.size() == 0) throw InputError("a document keeps at least one piece");
+    const std::size_t activeBefore = mActive;
     StepScope scope = piecesStep();
     const std::size_t at = replaced.empty() ? mPieces.size() : replaced.front();
     const bool activeGoes = std::find(replaced.begin(), replaced.end(), mActive) != replaced.end();
@@ -281,7 +282,7 @@ void Document::replacePieces(const std::vector<std::size_t>& replaced, std::vect
                   std::make_move_iterator(added.end()));
     restorePieces(pieces, activeGoes || !added.empty() ? first : nullptr);
     recordPiecesStep(label, std::move(scope));
-    if (mUnscripted.empty()) mUnscripted = label;
+    logEdit(std::move(scripted), label, activeBefore);
 }
 
 Document::StepScope Document::piecesStep() const
@@ -349,6 +350,7 @@ void Document::restorePieces(const std::vector<DocumentPiece>& pieces, std::shar
 bool Document::undo()
 {
     if (mUndoScopes.empty()) return false;
+    const std::size_t activeBefore = mActive;
     const StepScope scope = std::move(mUndoScopes.back());
     mUndoScopes.pop_back();
     countJournalUses(scope, false);
@@ -362,13 +364,14 @@ bool Document::undo()
     mRedoStates.push_back(mState);
     mState = mUndoStates.back();
     mUndoStates.pop_back();
-    mLog.events.push_back({ScriptEvent::Kind::Undo, {}, {}});
+    logEvent(script::UndoEvent{}, activeBefore);
     return true;
 }
 
 bool Document::redo()
 {
     if (mRedoScopes.empty()) return false;
+    const std::size_t activeBefore = mActive;
     const StepScope scope = std::move(mRedoScopes.back());
     mRedoScopes.pop_back();
     for (const auto& session : scope.sessions) session->redo();
@@ -382,8 +385,8 @@ bool Document::redo()
     mUndoStates.push_back(mState);
     mState = mRedoStates.back();
     mRedoStates.pop_back();
-    mLog.events.push_back({ScriptEvent::Kind::Redo, {}, {}});
+    logEvent(script::RedoEvent{}, activeBefore);
     return true;
 }
 
-}  // namespace sculpt::ui
+}  // namespace sculpt

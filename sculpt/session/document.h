@@ -11,6 +11,7 @@
 
 #include "core/io/vdb_file.h"
 #include "sculpt/session/piece_meshes.h"
+#include "sculpt/session/script_event.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/stroke_script.h"
 
@@ -21,7 +22,7 @@
 #include <string>
 #include <vector>
 
-namespace sculpt::ui {
+namespace sculpt {
 
 /// File > New: a starting shape centred at the origin.
 struct NewShape {
@@ -39,15 +40,22 @@ struct DocumentPiece {
 };
 
 /// A piece's session, meshed live as the window needs it. `meshing` reports its first mesh.
-DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing = {});
+/// Whether a document's pieces keep a live mesh (the window draws them) or none (a replay in batch).
+enum class PieceMeshes { Live, None };
+
+DocumentPiece makeDocumentPiece(Piece piece, const Progress& meshing = {}, PieceMeshes meshes = PieceMeshes::Live);
 
 class Document {
 public:
     /// A document of one piece, `field`, saved at `path` (empty: untitled).
     /// `meshing` reports building its mesh (Cancelled if it says stop).
-    explicit Document(FieldImage field, std::filesystem::path path = {}, const Progress& meshing = {});
+    explicit Document(FieldImage field, std::filesystem::path path = {}, const Progress& meshing = {},
+                      PieceMeshes meshes = PieceMeshes::Live);
     /// A document of `pieces` (at least one), the first edited.
-    explicit Document(std::vector<Piece> pieces, std::filesystem::path path = {}, const Progress& meshing = {});
+    explicit Document(std::vector<Piece> pieces, std::filesystem::path path = {}, const Progress& meshing = {},
+                      PieceMeshes meshes = PieceMeshes::Live);
+    /// Whether its pieces (those added later too) keep live meshes.
+    PieceMeshes meshes() const { return mMeshes; }
 
     /// @throws InputError naming the setting (sizes not positive, too many voxels).
     static Document create(const NewShape& shape);
@@ -75,9 +83,11 @@ public:
     std::vector<std::string> exportMesh(const std::filesystem::path& path) const;
     /// What exportMesh writes, welded (and checked against `path`'s extension) for a job to write.
     std::vector<PieceMesh> meshesToExport(const std::filesystem::path& path) const;
-    /// Writes every edit since the document was opened as a `sculpt apply` stroke script.
+    /// Writes every edit since the document was opened as a `sculpt apply` stroke script: strokes,
+    /// mask and cut edits, drain holes, undo and redo, and the pieces' edits (which is sculpted,
+    /// looks, moves and pushes, placements applied, duplicate, delete, split, merge).
     /// @throws InputError naming the file if an edit a stroke script cannot replay happened (a
-    ///         filter, a piece edit, a stroke on a piece but the first or stopping at others).
+    ///         filter, an import into the model, primitives baked, a morph frame kept).
     void saveStrokes(const std::filesystem::path& path) const;
 
     /// The active piece's session: what strokes and whole-model edits change.
@@ -98,14 +108,16 @@ public:
     /// The pieces' new looks, one per piece (renamed, recoloured, hidden, moved: no voxel changes).
     void setLooks(std::vector<PieceLook> looks, const std::string& label);
     /// Piece `index` moved to `placement`, and the pieces `dented` (index, new field) pushed
-    /// aside by it, as one step.
+    /// aside by it, as one step; in the stroke log as `scripted`, else as that move.
     void movePiece(std::size_t index, const openvdb::Mat4d& placement,
-                   std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label);
+                   std::vector<std::pair<std::size_t, FieldImage>> dented, const std::string& label,
+                   std::optional<ScriptEvent> scripted = {});
     /// The pieces at `replaced` (ascending) give way to `added`, inserted where the first of them
     /// was (at the end if none): a duplicate, a merge, a split, a delete. The first added becomes
-    /// active; else the active piece stays, or if it went, the piece before it.
+    /// active; else the active piece stays, or if it went, the piece before it. In the stroke log
+    /// as `scripted` (none: Save Strokes refuses the log from then on).
     void replacePieces(const std::vector<std::size_t>& replaced, std::vector<DocumentPiece> added,
-                       const std::string& label);
+                       const std::string& label, std::optional<ScriptEvent> scripted = {});
     /// A name for a new piece, not taken yet: `base`, else "base 2", "base 3"...
     std::string freeName(const std::string& base) const;
     /// "face.vdb" or "untitled", with " *" when modified.
@@ -141,8 +153,11 @@ public:
     const std::vector<std::string>& redoLabels() const { return mRedoLabels; }
 
 private:
-    /// Puts an edit of the active piece in the stroke log (only the first piece's replay).
-    void logEdit(ScriptEvent event, const std::string& label);
+    /// Puts `scripted` in the stroke log (none: the log cannot replay `label` and is refused).
+    void logEdit(std::optional<ScriptEvent> scripted, const std::string& label, std::size_t activeBefore);
+    /// Logs `event`, made with piece `activeBefore` sculpted, after selecting that piece in the
+    /// log if the log's replay would sculpt another.
+    void logEvent(ScriptEvent event, std::size_t activeBefore);
     /// What one undo step changed: one journal step of each of `sessions`, and, if the pieces
     /// changed, their list before and after.
     struct StepScope {
@@ -163,13 +178,16 @@ private:
     void restorePieces(const std::vector<DocumentPiece>& pieces, std::shared_ptr<SculptSession> active = {});
 
     std::vector<DocumentPiece> mPieces;
+    PieceMeshes mMeshes = PieceMeshes::Live;
     std::size_t mActive = 0;
     std::uint64_t mPiecesRevision = 0;
     std::filesystem::path mPath;
     VdbCompanions mCompanions;  // the opened file's other grids and metadata
     StrokeScript mLog;
     StrokeSources mPendingSources;
-    std::string mUnscripted;  // the first whole-model edit, which the stroke log cannot hold
+    bool mPendingStopAtPieces = false;
+    std::size_t mLoggedActive = 0;  // the piece the log's replay sculpts at its end
+    std::string mUnscripted;        // the first whole-model edit, which the stroke log cannot hold
     std::vector<std::string> mUndoLabels, mRedoLabels;
     std::vector<StepScope> mUndoScopes, mRedoScopes;
     std::map<const SculptSession*, std::size_t> mJournalUses;  // the undo steps holding a step of each
@@ -177,4 +195,4 @@ private:
     std::uint64_t mState = 0, mSavedState = 0, mNextState = 1, mRevision = 0;
 };
 
-}  // namespace sculpt::ui
+}  // namespace sculpt

@@ -3,12 +3,12 @@
 
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
+#include "sculpt/session/document.h"
 #include "tests/support/temp_dir.h"
-#include "ui/document/document.h"
 
 #include <gtest/gtest.h>
 
-namespace sculpt::ui {
+namespace sculpt {
 namespace {
 
 using test::TempDir;
@@ -129,4 +129,4 @@ TEST(Document, PieceEditsUndoAsOneStepEachAcrossPieces)
 }
 
 }  // namespace
-}  // namespace sculpt::ui
+}  // namespace sculpt
