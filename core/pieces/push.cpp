@@ -6,7 +6,7 @@
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetMeasure.h>
 #include <openvdb/tools/LevelSetRebuild.h>
-#include <openvdb/tools/ValueTransformer.h>
+#include <openvdb/tree/LeafManager.h>
 
 #include <algorithm>
 #include <cmath>
@@ -39,17 +39,16 @@ openvdb::FloatGrid::Ptr dented(const openvdb::FloatGrid& wide, const openvdb::Fl
                                double reach)
 {
     openvdb::FloatGrid::Ptr out = wide.deepCopy();
-    struct Dent {
-        openvdb::FloatGrid::ConstAccessor other;  // one per thread: the functor is copied
-        double swell, reach;
-        void operator()(const openvdb::FloatGrid::ValueOnIter& v) const
-        {
+    // Leaf by leaf, each with its own accessor: every voxel's value is its own, whatever the
+    // threads (tools::foreach with a shared accessor's copies gave other results run to run).
+    openvdb::tree::LeafManager<openvdb::FloatTree> leaves(out->tree());
+    leaves.foreach ([&](openvdb::FloatTree::LeafNodeType& leaf, std::size_t) {
+        const openvdb::tree::ValueAccessor<const openvdb::FloatTree, /*IsSafe=*/false> other(pusher.tree());
+        for (auto v = leaf.beginValueOn(); v; ++v) {
             const double q = other.getValue(v.getCoord()), w = std::exp(-(q / reach) * (q / reach));
             v.setValue(float(std::max(double(*v) - swell * w, -q)));
         }
-    };
-    openvdb::tools::foreach (out->beginValueOn(), Dent{pusher.getConstAccessor(), swell, reach}, /*threaded=*/true,
-                             /*shareOp=*/false);
+    });
     return out;
 }
 

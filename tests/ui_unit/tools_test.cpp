@@ -139,5 +139,56 @@ TEST(HeadlessTools, APieceMovedIntoAnotherStopsAtContactAndAPushIsOneUndoStep)
     EXPECT_EQ(reports["back"]["tool_chosen"], "sculpt") << "Tab again: the tool chosen before";
 }
 
+// Every edit of the pieces the window makes (a move, a push, a placement applied, duplicate,
+// split, merge, undo and redo, delete) and a stroke on another piece land in the stroke log, and
+// `sculpt apply` of it on the document the window opened gives every piece bit for bit: its
+// voxels, name and placement.
+TEST(HeadlessTools, PieceEditsReplayWithSculptApplyToEveryPieceBitForBit)
+{
+    TempDir dir;
+    std::vector<Piece> pieces{{{"body"}, makeSphere(10.0, 0.5)}, {{"ball", {0.9f, 0.3f, 0.2f}}, makeSphere(6.0, 0.5)}};
+    pieces[1].placement.setTranslation(openvdb::Vec3d(30.0, 0.0, 0.0));
+    writeVdbPieces(pieces, dir / "two.vdb");
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    const auto moveX = [&events](const std::string& amount) {
+        events.key("G").key("X");
+        for (char digit : amount) events.key(std::string(1, digit));
+        events.key("Enter").untilJobEnds();
+    };
+    events.untilJobEnds().key("Tab");
+    moveX("5");
+    events.key("P");
+    moveX("12");  // into the ball: it is dented aside
+    events.report(r, "pushed").key("A", {"ctrl"}).untilJobEnds().report(r, "applied");
+    events.key("D", {"shift"}).untilJobEnds().report(r, "duplicated");
+    events.key("P", {"alt"}).untilJobEnds().key("J", {"ctrl"}).untilJobEnds().report(r, "merged");
+    events.key("Z", {"ctrl"}).key("Z", {"ctrl", "shift"}).key("Delete").report(r, "deleted");
+    events.key("Tab").key("Home").drag(kCentreX - 40, kCentreY, kCentreX + 40, kCentreY + 20).report(r, "end");
+    ui::AppOptions options = headlessOptions(dir, (dir / "two.vdb").string());
+    options.strokeLog = dir / "strokes.json";
+    ASSERT_EQ(playHeadless(dir, events, options), 0);
+    const Reports reports(r);
+    EXPECT_NE(reports["pushed"]["pieces"][1]["checksum"], formatChecksum(gridChecksum(pieces[1].field.grid())))
+        << "the ball was dented";
+    EXPECT_EQ(reports["duplicated"]["pieces"].size(), 3u);
+    EXPECT_EQ(reports["merged"]["pieces"].size(), 2u);
+    EXPECT_EQ(reports["deleted"]["pieces"].size(), 1u);
+    EXPECT_GT(reports["end"]["undo"].get<int>(), reports["deleted"]["undo"].get<int>()) << "the stroke landed";
+
+    const CommandResult apply = runSculpt("apply two.vdb strokes.json -o applied.vdb", dir.path().string());
+    ASSERT_EQ(apply.exitCode, 0) << apply.err;
+    const VdbPieces replayed = readVdbPieces(dir / "applied.vdb");
+    const nlohmann::json& window = reports["end"]["pieces"];
+    ASSERT_EQ(replayed.pieces.size(), window.size());
+    for (std::size_t i = 0; i < replayed.pieces.size(); ++i) {
+        const Piece& piece = replayed.pieces[i];
+        EXPECT_EQ(formatChecksum(gridChecksum(piece.field.grid())), window[i]["checksum"]) << piece.name;
+        EXPECT_EQ(piece.name, window[i]["name"]);
+        std::vector<double> placement(piece.placement.asPointer(), piece.placement.asPointer() + 16);
+        EXPECT_EQ(nlohmann::json(placement), window[i]["placement"]) << piece.name;
+    }
+}
+
 }  // namespace
 }  // namespace sculpt::test

@@ -77,12 +77,12 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
     ImGui::SameLine();
     commandButton(app, Command::ApplyPlacement);
     if (doc.pieces().size() > 1) {
-        std::size_t& with = tool.mergeWith();
-        if (with >= doc.pieces().size() || with == index) with = index == 0 ? 1 : 0;
+        const std::size_t with = tool.mergePartner();
         ImGui::SetNextItemWidth(110);
         if (ImGui::BeginCombo("##with", doc.pieces()[with].look.name.c_str())) {
             for (std::size_t i = 0; i < doc.pieces().size(); ++i)
-                if (i != index && ImGui::Selectable(doc.pieces()[i].look.name.c_str(), i == with)) with = i;
+                if (i != index && ImGui::Selectable(doc.pieces()[i].look.name.c_str(), i == with))
+                    tool.setMergePartner(i);
             ImGui::EndCombo();
         }
         ImGui::SameLine();

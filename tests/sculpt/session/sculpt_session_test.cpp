@@ -534,6 +534,94 @@ TEST(StrokeScript, MaskSelectionsAndDrainHolesReplayBitForBitAndUndoAsOneStepEac
     EXPECT_TRUE(a.undoLabels().empty());
 }
 
+/// Three pieces apart: a body, an eye on a finer lattice, a hat above.
+std::vector<Piece> threePieces()
+{
+    std::vector<Piece> pieces{{{"body"}, makeSphere(10.0, 0.5)},
+                              {{"eye", {0.1f, 0.3f, 0.9f}}, makeSphere(3.0, 0.25)},
+                              {{"hat", {0.9f, 0.2f, 0.2f}}, makeBox(4.0, 0.5)}};
+    pieces[1].placement.setTranslation(Vec3d(20.0, 0.0, 0.0));
+    pieces[2].placement.setTranslation(Vec3d(0.0, 25.0, 0.0));
+    return pieces;
+}
+
+std::vector<Piece> copied(const std::vector<Piece>& pieces)
+{
+    std::vector<Piece> copies;
+    for (const Piece& piece : pieces) copies.emplace_back(piece, piece.field.deepCopy());
+    return copies;
+}
+
+// The pieces' edits (select, looks, a move pushing another aside, a placement applied,
+// duplicate, split, merge, delete, undo and redo, a stroke on another piece), applied as the
+// window lands them, are logged by the document; its log reads back and replays on the document
+// as it was to every piece bit for bit.
+TEST(StrokeScript, PieceEditsAreLoggedAndReplayToEveryPieceBitForBit)
+{
+    const std::vector<Piece> start = threePieces();
+    Document a(copied(start), {}, {}, PieceMeshes::None);
+    openvdb::Mat4d moved = openvdb::Mat4d::identity();
+    moved.setTranslation(Vec3d(8.0, 0.0, 0.0));  // the body into the eye: the eye is pushed aside
+    std::vector<PieceLook> looks;
+    for (const DocumentPiece& piece : a.pieces()) looks.push_back(piece.look);
+    looks[2].name = "cap";
+    looks[2].visible = false;
+    const std::vector<ScriptEvent> edits = {script::PieceLooksEvent{looks, "rename"},
+                                            script::MovePieceEvent{0, moved, {1}},
+                                            script::ApplyPlacementEvent{0},
+                                            script::DuplicatePieceEvent{1},
+                                            script::SplitPieceEvent{3},
+                                            script::MergePiecesEvent{0, 2},
+                                            script::UndoEvent{},
+                                            script::RedoEvent{},
+                                            script::SelectPieceEvent{1},
+                                            script::StrokeEvent{strokeOf(BrushTool::Add, 1.5, {Vec3d(0, 3, 0)}), {}},
+                                            script::DeletePieceEvent{2}};
+    ReplayReport done;
+    for (std::size_t i = 0; i < edits.size(); ++i) applyScriptEvent(a, edits[i], "edit " + std::to_string(i), done);
+    EXPECT_EQ(done.pieceEdits, 8u);
+    EXPECT_EQ(done.strokes, 1u);
+    ASSERT_EQ(a.pieces().size(), 2u);
+    EXPECT_EQ(a.pieces()[0].look.placement, openvdb::Mat4d::identity()) << "the placement was applied";
+
+    const test::TempDir dir;
+    a.saveStrokes(dir / "log.json");
+    const StrokeScript log = readStrokeScript(dir / "log.json");
+    Document b(copied(start), {}, {}, PieceMeshes::None);
+    replayScript(b, log, "log.json");
+    ASSERT_EQ(b.pieces().size(), a.pieces().size());
+    for (std::size_t i = 0; i < a.pieces().size(); ++i) {
+        const DocumentPiece &original = a.pieces()[i], &replayed = b.pieces()[i];
+        EXPECT_EQ(gridChecksum(replayed.session->field().grid()), gridChecksum(original.session->field().grid()))
+            << original.look.name;
+        EXPECT_EQ(replayed.look.name, original.look.name);
+        EXPECT_EQ(replayed.look.placement, original.look.placement);
+        EXPECT_EQ(replayed.look.visible, original.look.visible);
+    }
+    EXPECT_EQ(b.activePiece(), a.activePiece());
+}
+
+TEST(StrokeScript, APieceEditNamesTheEventAndWhatIsWrong)
+{
+    Document document(threePieces(), {}, {}, PieceMeshes::None);
+    ReplayReport done;
+    try {
+        applyScriptEvent(document, script::DeletePieceEvent{7}, "s.json: events[0]", done);
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_STREQ(e.what(), "s.json: events[0] (piece edit): piece 7: the document has 3 pieces");
+    }
+    EXPECT_EQ(document.pieces().size(), 3u);
+    EXPECT_EQ(
+        parseError(R"([{"action": "piece", "edit": "move", "piece": 0, "placement": [0,0,0,0, 0,0,0,0, )"
+                   R"(0,0,0,0, 0,0,0,1]}])"),
+        "s.json: events[0]: field 'placement' must be an affine map scaling by 1e-3 to 1e3 (last column 0 0 0 1)");
+    EXPECT_EQ(parseError(R"([{"action": "piece", "edit": "select", "piece": -1}])"),
+              "s.json: events[0]: field 'piece' must be a whole number from 0 to 100000 (got -1)");
+    EXPECT_EQ(parseError(R"([{"action": "piece", "edit": "glue", "piece": 0}])").substr(0, 47),
+              "s.json: events[0]: field 'edit' is \"glue\" (expe");
+}
+
 TEST(StrokeScript, ErrorsNameTheEventAndTheField)
 {
     const std::string ok = R"("samples": [[1, 2, 3]])";

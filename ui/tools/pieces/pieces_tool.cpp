@@ -116,28 +116,35 @@ void PiecesTool::addCommands(CommandRegistry& registry, ToolBox& box)
         {Command::SoloPiece, "Solo", "Shows this piece alone; again: shows them all", {}, idle, [this, active] {
              solo(active());
          }});
+    // Blender's object-mode keys where they are free here (P is push).
     registry.add({Command::DuplicatePiece,
                   "Duplicate",
                   "A copy of this piece, in the same place (a job)",
-                  {},
+                  {{GLFW_KEY_D, kShift}},
                   idle,
-                  [this, active] { duplicate(active()); }});
+                  [this, active] { duplicate(active()); },
+                  Scope::Pieces});
     registry.add({Command::DeletePiece,
                   "Delete",
                   "Deletes this piece (Ctrl+Z brings it back)",
-                  {},
+                  {{GLFW_KEY_DELETE}},
                   several("a document keeps at least one piece: this is its last"),
-                  [this, active] { remove(active()); }});
-    registry.add(
-        {Command::SplitPiece, "Split shells", "A piece per closed shell of this one (a job)", {}, idle, [this, active] {
-             split(active());
-         }});
+                  [this, active] { remove(active()); },
+                  Scope::Pieces});
+    registry.add({Command::SplitPiece,
+                  "Split shells",
+                  "A piece per closed shell of this one (a job)",
+                  {{GLFW_KEY_P, kAlt}},
+                  idle,
+                  [this, active] { split(active()); },
+                  Scope::Pieces});
     registry.add({Command::MergePieces,
                   "Merge",
-                  "One piece of this and the one chosen beside the button (CSG union)",
-                  {},
+                  "One piece of this and the one chosen beside the button (CSG union, a job)",
+                  {{GLFW_KEY_J, kControl}},
                   several("only one piece: nothing to merge with"),
-                  [this, active] { merge(active(), mMergeWith); }});
+                  [this, active] { merge(active(), mergePartner()); },
+                  Scope::Pieces});
 }
 
 bool PiecesTool::press(const InputEvent& event)
@@ -161,6 +168,14 @@ bool PiecesTool::key(const InputEvent& event)
     const glm::dvec2 at = mHost.pointer();
     if (mGesture->key(event.key)) point(at.x, at.y);
     return true;
+}
+
+std::size_t PiecesTool::mergePartner()
+{
+    const Document& document = mHost.document();
+    if (mMergeWith >= document.pieces().size() || mMergeWith == document.activePiece())
+        mMergeWith = document.activePiece() == 0 ? 1 : 0;
+    return mMergeWith;
 }
 
 void PiecesTool::finish()

@@ -48,8 +48,9 @@ public:
     void beginGesture(PieceGesture::Kind kind);
     /// A moved piece dents the pieces it meets (keeping their volumes) instead of stopping.
     bool& push() { return mPush; }
-    /// The piece the Merge button merges the sculpted one with.
-    std::size_t& mergeWith() { return mMergeWith; }
+    /// The piece Merge merges the sculpted one with (the Pieces panel chooses it): another one.
+    std::size_t mergePartner();
+    void setMergePartner(std::size_t index) { mMergeWith = index; }
 
     /// The Pieces panel's edits, each one undo step (a job where fields are made).
     void select(std::size_t index);
