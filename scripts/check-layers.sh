@@ -30,11 +30,12 @@ declare -A uiAllowed=(
   [view]=""
   [document]=""
   [jobs]=""
+  [status]="view"
   [sculpting]="view document input"
   [tools]="commands document input jobs sculpting view"
   [panels]="app commands document modes tools"
   [modes]="app commands document jobs panels sculpting view"
-  [app]="app commands document input jobs modes panels sculpting tools view window"
+  [app]="app commands document input jobs modes panels sculpting status tools view window"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }

@@ -12,18 +12,18 @@ namespace sculpt {
 
 namespace {
 
-constexpr EnumNames<BrushTool, 12> kToolNames{{{BrushTool::Add, "add"},
-                                               {BrushTool::Carve, "carve"},
-                                               {BrushTool::Inflate, "inflate"},
-                                               {BrushTool::Deflate, "deflate"},
-                                               {BrushTool::Smooth, "smooth"},
-                                               {BrushTool::Flatten, "flatten"},
-                                               {BrushTool::Grab, "grab"},
-                                               {BrushTool::Pinch, "pinch"},
-                                               {BrushTool::Follow, "follow"},
-                                               {BrushTool::Primitive, "primitive"},
-                                               {BrushTool::Mask, "mask"},
-                                               {BrushTool::Unmask, "unmask"}}};
+constexpr EnumNames<BrushTool, kBrushToolCount> kToolNames{{{BrushTool::Add, "add"},
+                                                            {BrushTool::Carve, "carve"},
+                                                            {BrushTool::Inflate, "inflate"},
+                                                            {BrushTool::Deflate, "deflate"},
+                                                            {BrushTool::Smooth, "smooth"},
+                                                            {BrushTool::Flatten, "flatten"},
+                                                            {BrushTool::Grab, "grab"},
+                                                            {BrushTool::Pinch, "pinch"},
+                                                            {BrushTool::Follow, "follow"},
+                                                            {BrushTool::Primitive, "primitive"},
+                                                            {BrushTool::Mask, "mask"},
+                                                            {BrushTool::Unmask, "unmask"}}};
 
 }  // namespace
 

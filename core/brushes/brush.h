@@ -42,6 +42,8 @@ class LeafJournal;
 enum class CsgOperation;
 
 enum class BrushTool { Add, Carve, Inflate, Deflate, Smooth, Flatten, Grab, Pinch, Follow, Primitive, Mask, Unmask };
+/// The number of tools: every value below it is a BrushTool (Unmask is the last).
+inline constexpr int kBrushToolCount = int(BrushTool::Unmask) + 1;
 
 /// "add", "carve", ... "follow", "primitive", "mask", "unmask". @throws InputError for other names, listing the valid ones.
 BrushTool brushToolFromName(const std::string& name);

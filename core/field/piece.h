@@ -2,7 +2,7 @@
 /// @file piece.h
 /// @brief One part of a document: a level set of its own that never blends with the others
 ///        (a head, an eye, a segmented organ), with the name, colour and visibility the user
-///        gave it (../shared/DESIGN.md, "pieces and collision").
+///        gave it (Desbrun, Tsingos and Cani 1995, section 5: parts that must not blend).
 
 #include "core/field/field_image.h"
 

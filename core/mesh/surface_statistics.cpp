@@ -69,7 +69,7 @@ void SurfaceStatistics::update(const IncrementalMesher& mesher)
     mVersion = mesher.version();
 }
 
-SurfaceStatistics::Topology SurfaceStatistics::topology(const IncrementalMesher& mesher) const
+SurfaceTopology SurfaceStatistics::topology(const IncrementalMesher& mesher) const
 {
     // One node per local component, numbered block after block.
     std::map<openvdb::Coord, std::uint32_t> firstNode;
@@ -79,7 +79,7 @@ SurfaceStatistics::Topology SurfaceStatistics::topology(const IncrementalMesher&
         nodes += t.components;
     }
     UnionFind sets(nodes);
-    Topology topo;
+    SurfaceTopology topo;
     const int B = mesher.blockVoxels();
     for (const auto& [origin, t] : mTallies) {
         const BlockMesh& mesh = mesher.blocks().at(origin);

@@ -11,6 +11,7 @@
 /// vertex (those on block faces), never a pass over the whole mesh.
 
 #include "core/mesh/incremental_mesher.h"
+#include "core/mesh/surface_topology.h"
 
 #include <cstdint>
 #include <map>
@@ -27,13 +28,8 @@ public:
     double area() const { return mArea; }
     std::size_t triangles() const { return mTriangles; }
 
-    struct Topology {
-        std::size_t vertices = 0;  ///< distinct, as in the welded mesh
-        long long euler = 0;       ///< V - E + F, with E = 3F/2 (closed surface)
-        std::size_t shells = 0;    ///< connected components
-    };
     /// Joins the blocks of the mesher this was last updated from.
-    Topology topology(const IncrementalMesher& mesher) const;
+    SurfaceTopology topology(const IncrementalMesher& mesher) const;
 
 private:
     struct Tally {

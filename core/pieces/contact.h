@@ -1,7 +1,7 @@
 #pragma once
 /// @file contact.h
 /// @brief Whether two pieces overlap, looked for only where their local boxes meet
-///        (Desbrun, Tsingos and Cani, section 5; ../shared/DESIGN.md, "pieces and collision").
+///        (Desbrun, Tsingos and Cani 1995, section 5).
 ///
 /// A piece's local boxes are its non-empty mesher blocks: together they hold its whole surface.
 /// A vertex of one piece penetrates another where the other's phi (trilinear) is negative, by

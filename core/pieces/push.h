@@ -1,7 +1,8 @@
 #pragma once
 /// @file push.h
-/// @brief Pieces that do not blend deform on contact (../shared/DESIGN.md, "pieces and
-///        collision"): where one piece is pushed into another, the other gives way like clay.
+/// @brief Pieces that do not blend deform on contact (Desbrun, Tsingos and Cani 1995, section 5;
+///        Cani, "Implicit representations in computer animation", section 5.1): where one piece
+///        is pushed into another, the other gives way like clay.
 ///
 /// The pushed piece is cut by the pusher, max(phi, -phi_pusher), and swells around the dent by
 /// what it lost: phi - s w, with w = exp(-(phi_pusher / R)^2) a falloff from the pusher's

@@ -2,7 +2,7 @@
 /// @file corotated_triangles.h
 /// @brief The tangential relaxation of a tracked mesh: co-rotational constant-strain triangles
 ///        that all rest as one equilateral triangle of side e, solved quasi-statically
-///        (Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
+///        (Nesme and Bouthors, dynamic triangulation of implicit surfaces).
 ///
 /// Each triangle j pulls its vertices towards the rest shape turned onto it:
 /// f_j = R_j K (R_j^T x - x0), R_j the rotation of its deformation gradient (re-extracted every

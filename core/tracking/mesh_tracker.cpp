@@ -56,13 +56,13 @@ TrackingStep MeshTracker::step(const FieldImage& field, const std::function<Vec3
     report.folded = double(report.inverted) > kLostFoldedShare * double(mMesh.triangles.size());
     if (report.folded) return reseed(field, mc, report);
     const SurfaceTopology truth = surfaceTopology(mc.triangles, mc.positions.size());
-    if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
+    if (truth.sameAs(surfaceTopology(mMesh.triangles, mMesh.positions.size()))) return report;
     // A part that shrank under the resolution has left the ground truth: it leaves the mesh too.
     report.vanishedShells = mMesh.dropShellsUnder(kResolvableEdges * mEdge);
     if (report.vanishedShells > 0) {
         project(field);  // the per-vertex normals and flags, renumbered
         report.quasiCritical = flagged();
-        if (truth == surfaceTopology(mMesh.triangles, mMesh.positions.size())) return report;
+        if (truth.sameAs(surfaceTopology(mMesh.triangles, mMesh.positions.size()))) return report;
     }
     report.surgery = operateOnTopology(mMesh, mNormals, mQuasiCritical, field, truth);
     if (report.surgery.kind != SurgeryKind::None) {

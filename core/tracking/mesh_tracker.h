@@ -1,7 +1,7 @@
 #pragma once
 /// @file mesh_tracker.h
 /// @brief A triangle mesh that moves with a changing level set instead of being re-meshed
-///        (dynamic triangulation: Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
+///        (Nesme and Bouthors, dynamic triangulation of implicit surfaces).
 ///
 /// Seeded from the welded marching-cubes mesh and relaxed on the field, it then follows the
 /// field step by step: each step moves the vertices by any known displacement, projects them
@@ -85,9 +85,9 @@ public:
     /// triangles, appearing and vanishing from step to step) are neither seeded nor counted in
     /// the ground truth, and a tracked shell under it is dropped once the truth has lost it.
     static constexpr double kResolvableEdges = 2.0;
-    /// Folds beyond this share of the triangles feed themselves (unfolding and remeshing there
-    /// fold more: elephant -> camel at 12 frames went from 0.7% to 30% of its triangles folded,
-    /// from 11 to 50 thousand vertices, in 50 steps); below it they are unfolded locally.
+    /// A mesh folded over more than this share of its triangles is seeded again: past it, folds
+    /// feed themselves (unfolding and remeshing there fold more); below it they are unfolded
+    /// locally. (The measurement that set it: the log of commit bf01850.)
     static constexpr double kLostFoldedShare = 0.01;
 
     /// Seeds from `field`'s welded marching-cubes mesh (its resolvable shells), relaxed

@@ -1,7 +1,7 @@
 #pragma once
 /// @file surface_projection.h
 /// @brief A point brought back onto the zero level set by Newton steps along the gradient
-///        (Nesme and Bouthors; ../shared/DESIGN.md, "tracked mesh").
+///        (Nesme and Bouthors, dynamic triangulation of implicit surfaces).
 ///
 /// phi is read trilinearly and its gradient is the lattice's central differences interpolated
 /// trilinearly, so both are continuous and Newton's step p <- p - phi grad / |grad|^2 converges

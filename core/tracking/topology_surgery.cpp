@@ -259,7 +259,7 @@ std::optional<TrackedMesh> cutAndClose(const TrackedMesh& mesh, std::vector<std:
     result.dropUnusedVertices();
     surgery.removedVertices = closed - result.positions.size();
     if (!closedOrientedManifold(result.triangles) ||
-        surfaceTopology(result.triangles, result.positions.size()) != truth)
+        !surfaceTopology(result.triangles, result.positions.size()).sameAs(truth))
         return std::nullopt;
     return result;
 }

@@ -1,7 +1,7 @@
 #pragma once
 /// @file topology_surgery.h
-/// @brief A topology event's second stage (Nesme and Bouthors; ../shared/DESIGN.md, "tracked
-///        mesh"): the tracked mesh is cut and closed only where the surface's topology changed,
+/// @brief A topology event's second stage (Nesme and Bouthors, dynamic triangulation of implicit
+///        surfaces): the tracked mesh is cut and closed only where the surface's topology changed,
 ///        so the vertices away from the event keep their ids.
 ///
 /// Where the topology changed, the mesh contradicts the field, and these mark the event:

@@ -111,7 +111,7 @@ SurfaceTopology topologyOf(const Triangles& triangles, std::size_t vertices)
         count += used[v] && shells.find(v) == v;
     }
     const auto f = (long long)triangles.size();
-    return {(long long)usedCount - 3 * f / 2 + f, count};
+    return {usedCount, (long long)usedCount - 3 * f / 2 + f, count};
 }
 
 }  // namespace

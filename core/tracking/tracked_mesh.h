@@ -6,6 +6,7 @@
 /// Vertex indices change when the mesh is compacted after a split or a collapse; ids never do:
 /// a vertex keeps its id for as long as it exists, and a new vertex takes an id never used.
 
+#include "core/mesh/surface_topology.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <openvdb/Types.h>
@@ -61,14 +62,6 @@ inline std::uint64_t edgeKey(std::uint32_t a, std::uint32_t b)
 
 /// A directed edge between two vertex indices, as one key.
 inline std::uint64_t halfEdgeKey(std::uint32_t from, std::uint32_t to) { return (std::uint64_t(from) << 32) | to; }
-
-/// What a topology event changes: the Euler characteristic and the number of shells.
-struct SurfaceTopology {
-    long long euler = 0;
-    std::size_t shells = 0;
-    bool operator==(const SurfaceTopology& o) const { return euler == o.euler && shells == o.shells; }
-    bool operator!=(const SurfaceTopology& o) const { return !(*this == o); }
-};
 
 /// The topology of a closed mesh of `vertices` vertices (V - 3F/2 + F; shells by shared vertices).
 SurfaceTopology surfaceTopology(const MeshArray<std::array<std::uint32_t, 3>>& triangles, std::size_t vertices);

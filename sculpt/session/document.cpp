@@ -59,17 +59,18 @@ Document Document::create(const NewShape& shape)
         throw InputError("New: the voxel size must be a positive number");
     }
     if (!(shape.size > 0.0 && std::isfinite(shape.size))) throw InputError("New: the size must be a positive number");
-    const double across = 2.0 * shape.size * (shape.shape == 2 ? 4.0 / 3.0 : 1.0) / shape.voxelSize;
+    const double across = 2.0 * shape.size * (shape.kind == NewShape::Kind::Torus ? 4.0 / 3.0 : 1.0) / shape.voxelSize;
     if (across > kMaxVoxelsAcross) {
         throw InputError("New: " + formatNumber(std::round(across)) + " voxels across is more than the limit of " +
                          formatNumber(kMaxVoxelsAcross) + ": choose a coarser voxel size");
     }
     if (across < 8.0) throw InputError("New: the shape is under 8 voxels across: choose a finer voxel size");
-    switch (shape.shape) {
-    case 1: return Document(makeBox(shape.size, shape.voxelSize));
-    case 2: return Document(makeTorus(shape.size, shape.size / 3.0, shape.voxelSize));
-    default: return Document(makeSphere(shape.size, shape.voxelSize));
+    switch (shape.kind) {
+    case NewShape::Kind::Box: return Document(makeBox(shape.size, shape.voxelSize));
+    case NewShape::Kind::Torus: return Document(makeTorus(shape.size, shape.size / 3.0, shape.voxelSize));
+    case NewShape::Kind::Sphere: break;
     }
+    return Document(makeSphere(shape.size, shape.voxelSize));
 }
 
 Document Document::open(const std::filesystem::path& path, const Progress& progress, std::vector<std::string>* warnings,

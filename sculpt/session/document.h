@@ -26,10 +26,12 @@ namespace sculpt {
 
 /// File > New: a starting shape centred at the origin.
 struct NewShape {
-    int shape = 0;           ///< 0 sphere, 1 box, 2 torus
+    enum class Kind { Sphere, Box, Torus };
+    Kind kind = Kind::Sphere;
     double size = 50.0;      ///< sphere radius, box half side, torus major radius
     double voxelSize = 0.5;  ///< world units
 };
+/// The kinds' names, in the order of NewShape::Kind (the New dialog's list).
 inline constexpr const char* kShapeNames[] = {"sphere", "box", "torus"};
 
 /// A piece of the open document: its look and its session, shared with the undo steps that

@@ -1,5 +1,7 @@
 #include "tests/support/grid_builders.h"
 
+#include "core/primitives/analytic_shapes.h"
+
 namespace sculpt::test {
 
 FieldImage fieldFromVoxels(const std::map<openvdb::Coord, float>& values)
@@ -24,6 +26,13 @@ FieldImage translated(const FieldImage& field, const openvdb::Vec3d& by)
     xform->postTranslate(by);
     grid->setTransform(xform);
     return FieldImage(grid);
+}
+
+std::vector<Piece> bodyAndBallApart()
+{
+    std::vector<Piece> pieces{{{"body"}, makeSphere(10.0, 0.5)}, {{"ball", {0.9f, 0.3f, 0.2f}}, makeSphere(6.0, 0.5)}};
+    pieces[1].placement.setTranslation(openvdb::Vec3d(30.0, 0.0, 0.0));
+    return pieces;
 }
 
 }  // namespace sculpt::test

@@ -1,5 +1,6 @@
 #include "tests/support/ui_events.h"
 
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -36,6 +37,15 @@ UiEvents& UiEvents::drag(double x0, double y0, double x1, double y1, int steps, 
 UiEvents& UiEvents::key(const std::string& name, const std::vector<std::string>& mods)
 {
     return add({{"type", "key"}, {"key", name}, {"mods", mods}});
+}
+
+UiEvents& UiEvents::ellipse(double cx, double cy, double rx, double ry)
+{
+    for (int i = 1; i <= 40; ++i) {
+        const double a = 2.0 * M_PI * i / 40;
+        move(cx + rx * std::cos(a), cy + ry * std::sin(a));
+    }
+    return *this;
 }
 
 UiEvents& UiEvents::text(const std::string& characters) { return add({{"type", "text"}, {"text", characters}}); }

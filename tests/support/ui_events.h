@@ -22,6 +22,9 @@ public:
     UiEvents& drag(double x0, double y0, double x1, double y1, int steps = 20,
                    const std::vector<std::string>& mods = {});
     UiEvents& key(const std::string& name, const std::vector<std::string>& mods = {});
+    /// 40 moves once around the ellipse of centre (cx, cy) and radii rx, ry, from and back to
+    /// its rightmost point: a lasso, with the button pressed there before.
+    UiEvents& ellipse(double cx, double cy, double rx, double ry);
     UiEvents& text(const std::string& characters);
     /// The state appended to `path` as a JSON line called `name` (Reports finds it by that).
     UiEvents& report(const std::filesystem::path& path, const std::string& name);
@@ -55,5 +58,8 @@ private:
     std::filesystem::path mPath;
     std::map<std::string, nlohmann::json> mLines;
 };
+
+/// A reported piece's placed x: its placement's translation (row 3, OpenVDB's row vectors).
+inline double placedX(const nlohmann::json& piece) { return piece["placement"][12].get<double>(); }
 
 }  // namespace sculpt::test

@@ -24,12 +24,13 @@ mode_t modeOf(const fs::path& path)
     return s.st_mode & 07777;
 }
 
-Document smallBall() { return Document::create(NewShape{0, 6.0, 0.5}); }
+Document smallBall() { return Document::create(NewShape{NewShape::Kind::Sphere, 6.0, 0.5}); }
 
 /// An edit: the ball becomes a larger one, one undo step.
 void grow(Document& document)
 {
-    document.replaceField(Document::create(NewShape{0, 7.0, 0.5}).session().field().deepCopy(), "grow");
+    document.replaceField(Document::create(NewShape{NewShape::Kind::Sphere, 7.0, 0.5}).session().field().deepCopy(),
+                          "grow");
 }
 
 TEST(Autosave, WritesOnlyChangedWorkOncePerIntervalAndNeverMidStroke)

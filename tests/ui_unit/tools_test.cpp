@@ -6,6 +6,7 @@
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
+#include "tests/support/grid_builders.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/ui_unit/headless_app.h"
 
@@ -61,11 +62,7 @@ TEST(HeadlessTools, ALassoCutLandsAsOneUndoStepAndItsLogReplaysToTheSameGrid)
     UiEvents events;
     const double cx = kCentreX + 250, cy = kCentreY;  // an ellipse over the ball's right edge
     events.untilJobEnds().report(r, "start").key("J").move(cx + 200, cy).press().report(r, "drawing");
-    for (int i = 1; i <= 40; ++i) {
-        const double a = 2.0 * M_PI * i / 40;
-        events.move(cx + 200 * std::cos(a), cy + 140 * std::sin(a));
-    }
-    events.release().untilJobEnds().report(r, "cut");
+    events.ellipse(cx, cy, 200, 140).release().untilJobEnds().report(r, "cut");
     events.key("Z", {"ctrl"}).report(r, "undone").key("Z", {"ctrl", "shift"}).report(r, "redone");
     ASSERT_EQ(playHeadless(dir, events, ballWithLog(dir)), 0);
     const Reports reports(r);
@@ -91,8 +88,13 @@ TEST(HeadlessTools, ABoxMaskMasksWithoutMovingClayAndItsLogReplaysToTheSameMask)
     events.untilJobEnds().report(r, "start").key("B", {"shift"});
     events.drag(kCentreX - 380, kCentreY - 300, kCentreX - 120, kCentreY + 300).untilJobEnds().report(r, "masked");
     events.key("Z", {"ctrl"}).report(r, "undone").key("Z", {"ctrl", "shift"}).report(r, "redone");
+    events.move(kCentreX + 100, kCentreY - 100).press().move(kCentreX + 200, kCentreY + 100).key("Escape");
+    events.release().untilJobEnds().report(r, "dropped");  // Esc while drawing: nothing is masked
     ASSERT_EQ(playHeadless(dir, events, ballWithLog(dir)), 0);
     const Reports reports(r);
+    EXPECT_EQ(reports["dropped"]["undo"], reports["redone"]["undo"]);
+    EXPECT_EQ(reports["dropped"]["mask_checksum"], reports["redone"]["mask_checksum"]);
+    EXPECT_EQ(reports["dropped"]["notice"], "mask dropped");
     EXPECT_EQ(reports["masked"]["gesture"]["masks"], true);
     EXPECT_EQ(reports["masked"]["undo"], 1);
     EXPECT_NE(reports["masked"]["mask_checksum"], "");
@@ -104,14 +106,10 @@ TEST(HeadlessTools, ABoxMaskMasksWithoutMovingClayAndItsLogReplaysToTheSameMask)
     EXPECT_EQ(formatChecksum(gridChecksum(*replayed.mask())), reports["redone"]["mask_checksum"]);
 }
 
-double placedX(const nlohmann::json& piece) { return piece["placement"][12].get<double>(); }  // row 3: translation
-
 TEST(HeadlessTools, APieceMovedIntoAnotherStopsAtContactAndAPushIsOneUndoStep)
 {
     TempDir dir;
-    std::vector<Piece> pieces{{{"body"}, makeSphere(10.0, 0.5)}, {{"ball", {0.9f, 0.3f, 0.2f}}, makeSphere(6.0, 0.5)}};
-    pieces[1].placement.setTranslation(openvdb::Vec3d(30.0, 0.0, 0.0));  // 14 apart: body to x = 10, ball from 24
-    writeVdbPieces(pieces, dir / "two.vdb");
+    writeVdbPieces(bodyAndBallApart(), dir / "two.vdb");  // body to x = 10, ball from 24
     const fs::path r = dir / "r.jsonl";
     UiEvents events;
     events.untilJobEnds().report(r, "opened").key("G").report(r, "grab").key("Tab").report(r, "pieces");
@@ -146,8 +144,7 @@ TEST(HeadlessTools, APieceMovedIntoAnotherStopsAtContactAndAPushIsOneUndoStep)
 TEST(HeadlessTools, PieceEditsReplayWithSculptApplyToEveryPieceBitForBit)
 {
     TempDir dir;
-    std::vector<Piece> pieces{{{"body"}, makeSphere(10.0, 0.5)}, {{"ball", {0.9f, 0.3f, 0.2f}}, makeSphere(6.0, 0.5)}};
-    pieces[1].placement.setTranslation(openvdb::Vec3d(30.0, 0.0, 0.0));
+    const std::vector<Piece> pieces = bodyAndBallApart();
     writeVdbPieces(pieces, dir / "two.vdb");
     const fs::path r = dir / "r.jsonl";
     UiEvents events;

@@ -29,10 +29,10 @@ void SculptApp::handle(const InputEvent& event)
     if (!mOptions.record.empty() && !scripted) {
         mRecording.push_back(event);
     }
-    if (event.type == EventType::Key) trackModifiers(event);
+    if (event.type == EventType::Key) mPointer.track(event);
     // Tab is pieces mode's key: ImGui would move the focus into a panel's field with it (a field
     // being edited keeps it, for completion).
-    if (!(event.type == EventType::Key && event.key == GLFW_KEY_TAB && !mItemActive)) feedImGui(event, mHeldMods);
+    if (!(event.type == EventType::Key && event.key == GLFW_KEY_TAB && !mItemActive)) feedImGui(event, mPointer.held());
     mLastInput = mWindow.time();
     mLastEventArrival = arrival(event);
     switch (event.type) {
@@ -62,9 +62,8 @@ void SculptApp::raiseFault(const std::string& kind)
 
 void SculptApp::routeMouse(const InputEvent& event)
 {
-    const double dx = event.x - mMouseX, dy = event.y - mMouseY;
-    if (event.type == EventType::MouseMove) mMouseX = event.x, mMouseY = event.y;
-    if (event.type == EventType::MouseButton) mMods = mHeldMods | event.mods;
+    const double dx = event.x - mPointer.x(), dy = event.y - mPointer.y();
+    mPointer.track(event);
     const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && !mTools.current().holding();
     if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
     if (event.type == EventType::Wheel) zoomAtPointer(event);
@@ -75,8 +74,8 @@ void SculptApp::routeMouse(const InputEvent& event)
 
 void SculptApp::zoomAtPointer(const InputEvent& event)
 {
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
-    const Ray ray = mViewport.rayThrough(mMouseX, mMouseY);
+    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
+    const Ray ray = mViewport.rayThrough(mPointer.x(), mPointer.y());
     const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
     const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
     mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
@@ -95,8 +94,8 @@ void SculptApp::pressButton(const InputEvent& event)
     }
     if (event.button == kLeftButton && !(event.mods & kAlt)) {
         if (mMode && tool.yieldsToMode()) {
-            const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);  // a button event has no position
-            if (hit && mMode->press(*hit)) {                                 // a primitive placed, say
+            const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());  // a button event has no position
+            if (hit && mMode->press(*hit)) {                                           // a primitive placed, say
                 mDrag = Drag::Mode;
                 return;
             }
@@ -138,13 +137,6 @@ void SculptApp::awaitFrame(const InputEvent& event, std::size_t stamps)
 {
     mMeasures.stamps += stamps;
     if (mMeasures.pendingSince < 0.0) mMeasures.pendingSince = arrival(event);
-}
-
-void SculptApp::trackModifiers(const InputEvent& event)
-{
-    const int bit = modifierOfKey(event.key);
-    if (bit) mHeldMods = event.press ? (mHeldMods | bit) : (mHeldMods & ~bit);
-    mMods = mHeldMods | (event.press ? event.mods : 0);
 }
 
 void SculptApp::routeKey(const InputEvent& event)

@@ -154,7 +154,7 @@ void SculptApp::startFilter(const ModelFilter& filter)
 void SculptApp::editIslandUnderPointer(bool keep)
 {
     if (busy()) return;
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
     if (!hit) return notify(std::string("point at the island to ") + (keep ? "keep" : "delete") + " first");
     const openvdb::Vec3d at(hit->position.x, hit->position.y, hit->position.z);
     const double reach = 2.0 * mDocument->session().field().voxelSize();
@@ -173,7 +173,7 @@ void SculptApp::editIslandUnderPointer(bool keep)
 void SculptApp::drillDrainHoleUnderPointer()
 {
     if (busy()) return;
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
     if (!hit) return notify("point at the wall to drill the drain hole through first");
     const FieldImage& field = mDocument->session().field();
     const openvdb::Vec3d at(hit->position.x, hit->position.y, hit->position.z);

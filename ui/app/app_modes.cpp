@@ -51,7 +51,7 @@ PrimitivesMode& SculptApp::primitivesMode()
 void SculptApp::addPrimitive(SkeletonType type)
 {
     if (!mode<PrimitivesMode>() && busy()) return;
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
     const glm::dvec3 at = hit ? hit->position : mCamera.focalPoint();
     // A soft object crosses iso 0.5 near half its reach: twice the brush gives a blob its size.
     primitivesMode().draft().add(type, {at.x, at.y, at.z}, 2.0 * mBrush.radius);

@@ -1,8 +1,8 @@
 // SculptApp: what it writes for replays and tests, the composed frame and the state report.
 
 #include "core/field/grid_checksum.h"
-#include "ui/app/process_memory.h"
 #include "ui/app/sculpt_app.h"
+#include "ui/status/process_memory.h"
 #include "ui/window/window.h"
 
 #include <nlohmann/json.hpp>
@@ -73,24 +73,15 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
     const openvdb::FloatGrid* mask = session.field().mask();
     r["mask_checksum"] = mask ? formatChecksum(gridChecksum(*mask)) : std::string();
-    r["volume"] = mStatus.volume;
-    r["area"] = mStatus.area;
-    r["triangles"] = mStatus.triangles;
-    r["euler"] = mStatus.euler;
-    r["shells"] = mStatus.shells;
     r["blocks"] = mDisplay.blockCount();
-    r["uploaded"] = mStatus.blocksUploaded;  // since the previous report
-    r["removed"] = mStatus.blocksRemoved;
     r["remeshed"] = mLastRemeshed;  // blocks the mesher re-meshed, empty candidates included
     const IncrementalMesher::Changes changes = session.mesher()->changesSince(mReportVersion);
     r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
     mReportVersion = session.mesher()->version();
-    r["bytes_uploaded"] = mStatus.bytesUploaded;
-    r["chunks_uploaded"] = mStatus.chunksUploaded;
     r["mesh_bytes"] = mDisplay.meshBytes();
-    mStatus.blocksUploaded = mStatus.blocksRemoved = mStatus.bytesUploaded = mStatus.chunksUploaded = 0;
+    mStatus.report(r);
     mLastRemeshed = 0;
-    const std::optional<SurfaceHit> hit = pickAt(mMouseX, mMouseY);
+    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
     r["pick"] =
         hit ? nlohmann::json{{"hit", true}, {"position", vec3Json(hit->position)}, {"normal", vec3Json(hit->normal)}}
             : nlohmann::json{{"hit", false}};
@@ -126,13 +117,13 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["target"] = mBrush.target.path.string();
     r["xray"] = mLook.xray();
     r["morph"] = nullptr;  // read by replays whether or not frames are on show
+    r["mode"] = mMode ? nlohmann::json(mMode->name()) : nlohmann::json();  // the open mode's report's key
     if (mMode) r[mMode->name()] = mMode->report();
     r["notice"] = mDialogs.notice;
     r["radius"] = mBrush.radius;
     r["tool"] = brushToolName(mBrush.tool);
     r["tool_chosen"] = mTools.current().name();
     mTools.current().report(r);
-    r["frame_ms"] = mStatus.frameMs;
     r["frame_times_ms"] = mMeasures.frameMs;  // since the previous report, as the next three
     r["latencies_ms"] = mMeasures.latencyMs;
     r["preview_latencies_ms"] = mMeasures.previewLatencyMs;
@@ -145,11 +136,6 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["triangles_drawn"] = mDisplay.trianglesDrawn();
     r["triangles_drawn_per_frame"] = mMeasures.trianglesDrawn;
     r["peak_rss"] = peakResidentBytes();
-    r["memory"] = {{"resident", residentBytes()},
-                   {"grid", mStatus.gridBytes},
-                   {"mesher", mStatus.mesherBytes},
-                   {"display", mStatus.displayBytes},
-                   {"undo", mStatus.undoBytes}};
     mMeasures = Measures();
     std::ofstream out(path, std::ios::app);
     out << r.dump() << "\n";

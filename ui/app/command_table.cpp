@@ -117,13 +117,15 @@ void SculptApp::addCommands()
          "Then move the mouse to size the brush; click or Enter to keep, Esc to undo",
          {{GLFW_KEY_F}},
          nullptr,
-         [](App& a) { a.mDrag = Drag::Radius, a.mDragStartX = a.mMouseX, a.mDragStartValue = a.mBrush.radius; }},
+         [](App& a) { a.mDrag = Drag::Radius, a.mDragStartX = a.mPointer.x(), a.mDragStartValue = a.mBrush.radius; }},
         {Command::StrengthDrag,
          "Strength",
          "Then move the mouse to set the strength",
          {{GLFW_KEY_F, kShift}},
          nullptr,
-         [](App& a) { a.mDrag = Drag::Strength, a.mDragStartX = a.mMouseX, a.mDragStartValue = a.mBrush.strength; }},
+         [](App& a) {
+             a.mDrag = Drag::Strength, a.mDragStartX = a.mPointer.x(), a.mDragStartValue = a.mBrush.strength;
+         }},
         {Command::Undo,
          "Undo",
          "Undo the last stroke",
@@ -299,7 +301,7 @@ void SculptApp::addCommands()
          {{GLFW_KEY_L, kControl}},
          idle,
          [](App& a) {
-             const std::optional<SurfaceHit> hit = a.pickAt(a.mMouseX, a.mMouseY);
+             const std::optional<SurfaceHit> hit = a.pickAt(a.mPointer.x(), a.mPointer.y());
              if (!hit) return a.notify("point at the island to mask first");
              MaskSelection selection;
              selection.kind = MaskSelectionKind::Island;

@@ -4,7 +4,6 @@
 #include "core/base/text_format.h"
 #include "core/field/placed_box.h"
 #include "sculpt/session/script_replay.h"
-#include "ui/app/process_memory.h"
 #include "ui/input/imgui_input.h"
 #include "ui/panels/panels.h"
 #include "ui/window/window.h"
@@ -93,8 +92,7 @@ void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
 {
     mDocument = std::move(document);
     mPicker.reset();
-    mStatistics = SurfaceStatistics();
-    mTopologyVersion = mMeasuredVersion = ~std::uint64_t(0);
+    mStatus.reset();
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
     mReportVersion = mDocument->session().mesher()->version();
     mActiveShown = &mDocument->session();
@@ -111,8 +109,7 @@ void SculptApp::showPieces()
     if (mActiveShown != &mDocument->session()) {  // another piece to sculpt: measures start again
         mActiveShown = &mDocument->session();
         mPicker.reset();
-        mStatistics = SurfaceStatistics();
-        mTopologyVersion = mMeasuredVersion = ~std::uint64_t(0);
+        mStatus.reset();
         mRemeshedAtSync = mDocument->session().remeshedBlocks();
     }
     std::vector<DrawnPiece> others;
@@ -158,8 +155,8 @@ SurfaceHit SculptApp::inWorld(const SurfaceHit& hit) const
 HoverKey SculptApp::hoverKey() const
 {
     const SculptSession& session = mDocument->session();
-    const bool inView = mMouseX >= 0 && mMouseY >= 0 && mMouseX < mViewport.width() && mMouseY < mViewport.height();
-    return {mViewport.rayThrough(mMouseX, mMouseY), session.field().id(), session.mesher()->id(),
+    const bool inView = mPointer.inside(mViewport.width(), mViewport.height());
+    return {mViewport.rayThrough(mPointer.x(), mPointer.y()), session.field().id(), session.mesher()->id(),
             session.mesher()->version(),
             inView && mDrag == Drag::None && (!mTools.current().holding() || mTools.current().showsBrush())};
 }
@@ -185,14 +182,14 @@ void SculptApp::updateCursor()
 {
     const HoverKey key = hoverKey();
     if (key != mHoverKey) {
-        mHover = key.picking ? pickAt(mMouseX, mMouseY) : std::nullopt;
+        mHover = key.picking ? pickAt(mPointer.x(), mPointer.y()) : std::nullopt;
         mHoverKey = key;
     }
     const bool show =
         mHover && mTools.current().showsBrush() && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
     // White for tools that add, red for those that take away, blue for smoothing (Shift), grey
     // for the mask.
-    const BrushTool tool = mTools.sculpt().toolUnder(mMods);
+    const BrushTool tool = mTools.sculpt().toolUnder(mPointer.current());
     if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
     else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
     else if (tool == BrushTool::Mask || tool == BrushTool::Unmask) mCursor.setColour(0.45, 0.45, 0.5);
@@ -210,37 +207,6 @@ void SculptApp::updateTitle()
     mTitle = title;
 }
 
-void SculptApp::refreshStatus(bool topology)
-{
-    const SculptSession& session = mDocument->session();
-    mStatistics.update(*session.mesher());
-    mStatus.triangles = mStatistics.triangles();
-    mStatus.pieces = mDocument->pieces().size();
-    mStatus.piece = mDocument->pieces()[mDocument->activePiece()].look.name;
-    mStatus.allTriangles = mStatus.triangles + mPieces.trianglesShown();
-    mStatus.volume = mStatistics.volume();
-    mStatus.area = mStatistics.area();
-    // Whole-tree passes: only after a change, and not per frame of a stroke (at its end).
-    if (mMeasuredVersion != session.mesher()->version() && !strokeActive()) {
-        mStatus.activeVoxels = std::size_t(session.field().grid().activeVoxelCount());
-        mStatus.gridBytes = std::size_t(session.field().grid().memUsage());
-        mStatus.mesherBytes = session.mesher()->memoryBytes();
-        mModelSize = session.modelSize();
-        mMeasuredVersion = session.mesher()->version();
-    }
-    mStatus.blocks = mDisplay.blockCount();
-    mStatus.undoBytes = 0;  // every piece's: the history spans them
-    for (const DocumentPiece& piece : mDocument->pieces()) mStatus.undoBytes += piece.session->history().memoryBytes();
-    if (mFramesDrawn % 30 == 0) mStatus.memoryBytes = residentBytes();
-    mStatus.displayBytes = mDisplay.heldBytes();
-    if (topology && mTopologyVersion != session.mesher()->version()) {
-        mTopology = mStatistics.topology(*session.mesher());
-        mTopologyVersion = session.mesher()->version();
-    }
-    mStatus.euler = mTopology.euler;
-    mStatus.shells = mTopology.shells;
-}
-
 DetailView SculptApp::detailView(double now)
 {
     if (mCamera.moves() != mCameraMovesSeen) {
@@ -249,7 +215,7 @@ DetailView SculptApp::detailView(double now)
     }
     const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
     DetailView view;
-    view.still = !(moving || strokeActive()) || mStatistics.triangles() <= mOptions.lodTriangles;
+    view.still = !(moving || strokeActive()) || mStatus.triangles() <= mOptions.lodTriangles;
     view.eye = mCamera.eye();
     view.pixelSizeAt = [this](const glm::dvec3& p) { return mViewport.pixelSizeAt(p); };
     if (mHover) {
@@ -283,13 +249,11 @@ void SculptApp::frame()
     mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     mPieces.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
     if (mOpeningAtStart) followStartupOpen(JobRunner::Ending::Running, {});
-    mStatus.blocksUploaded += mDisplay.lastUploads();
-    mStatus.blocksRemoved += mDisplay.lastRemovals();
-    mStatus.bytesUploaded += mDisplay.lastUploadBytes();
-    mStatus.chunksUploaded += mDisplay.lastChunkUploads();
-    refreshStatus(!strokeActive());
+    mStatus.countUploads(mDisplay);
+    mStatus.refresh(*mDocument, mDisplay, mPieces.trianglesShown(), strokeActive(), !strokeActive(),
+                    mFramesDrawn % 30 == 0);
     updateCursor();
-    mPlanes.show(mBrush.symmetry, 0.6 * mModelSize);
+    mPlanes.show(mBrush.symmetry, 0.6 * mStatus.modelSize());
     updateTitle();
 
     mViewport.renderer()->ResetCameraClippingRange();
@@ -314,9 +278,10 @@ void SculptApp::frame()
     if (mOptions.slowFramesMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(mOptions.slowFramesMs));
 
     const double end = mWindow.time();
-    mStatus.frameMs = 1000.0 * (end - now);
+    const double frameMs = 1000.0 * (end - now);
+    mStatus.setFrameMs(frameMs);
     if (!reporting) {
-        mMeasures.frameMs.push_back(mStatus.frameMs);
+        mMeasures.frameMs.push_back(frameMs);
         mMeasures.trianglesDrawn.push_back(double(mDisplay.trianglesDrawn()));
     }
     if (mPreviewPendingSince >= 0.0) {
@@ -344,10 +309,10 @@ void SculptApp::drawPanels()
     if (mDialogs.help) drawHelpPanel(*this);
     mTools.current().drawOverlay();
     if (!mHover && mTools.current().showsBrush() && !mTools.current().holding() && !ImGui::GetIO().WantCaptureMouse &&
-        mDrag == Drag::None && mMouseX >= 0) {
+        mDrag == Drag::None && mPointer.x() >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
         const double pixels = mBrush.radius / std::max(1e-12, mViewport.pixelSizeAt(mCamera.focalPoint()));
-        ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mMouseX), float(mMouseY)), float(pixels),
+        ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mPointer.x()), float(mPointer.y())), float(pixels),
                                                   IM_COL32(255, 255, 255, 140), 48, 1.5f);
     }
     if (mDrag == Drag::Radius || mDrag == Drag::Strength) {
@@ -489,7 +454,11 @@ int SculptApp::run()
             loopOnce(replayDone);
         } catch (const InputError& e) {
             if (mOpeningAtStart) throw;  // the command line's document failed: exit 2, as before the window
-            recoverFromInternalError(e.what());
+            // What the user gave was refused where no handler expected it: said as it is.
+            abandonImGuiFrame();
+            mTools.current().finish();
+            mDrag = Drag::None;
+            showError(e.what());
         } catch (const std::bad_alloc&) {
             recoverFromInternalError("out of memory");
         } catch (const std::exception& e) {

@@ -3,7 +3,6 @@
 /// @brief sculpt-ui: the window a sculptor works in. Owns the document, the 3D view and the
 ///        panels; every input, live or replayed, enters through handle().
 
-#include "core/mesh/surface_statistics.h"
 #include "core/motion/morph.h"
 #include "core/primitives/skeleton.h"
 #include "sculpt/session/document.h"
@@ -14,11 +13,13 @@
 #include "ui/document/open_preview.h"
 #include "ui/document/recent_files.h"
 #include "ui/input/event_player.h"
+#include "ui/input/pointer_state.h"
 #include "ui/jobs/job_runner.h"
 #include "ui/modes/mode.h"
 #include "ui/modes/mode_host.h"
 #include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/stroke_controller.h"
+#include "ui/status/status_tally.h"
 #include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"
 #include "ui/view/brush_cursor.h"
@@ -57,23 +58,6 @@ struct AppOptions {
     int chunkBlocks = 0;   ///< blocks per display chunk edge; 0: chosen from the model
     int slowFramesMs = 0;  ///< added to every frame (a slow machine, for tests)
     bool stay = false;     ///< keep the window open after a replay
-};
-
-/// The figures of the status bar.
-struct StatusFigures {
-    double frameMs = 0.0;
-    /// The piece sculpted (of several), and the triangles of every piece shown.
-    std::string piece;
-    std::size_t pieces = 1, allTriangles = 0;
-    std::size_t triangles = 0, activeVoxels = 0, blocks = 0, memoryBytes = 0, undoBytes = 0;
-    /// Where the memory goes: the field's tree, the mesher's block meshes, the display's VTK
-    /// geometry (the rest of memoryBytes: the GL driver's copy of it, libraries, the window).
-    std::size_t gridBytes = 0, mesherBytes = 0, displayBytes = 0;
-    double volume = 0.0, area = 0.0;
-    long long euler = 0;
-    std::size_t shells = 0;
-    /// Since the last report: blocks uploaded and dropped by the display, bytes handed to VTK.
-    std::size_t blocksUploaded = 0, blocksRemoved = 0, bytesUploaded = 0, chunksUploaded = 0;
 };
 
 /// The dialogs ImGui shows; at most one prompt at a time.
@@ -147,7 +131,7 @@ public:
     Dialogs& dialogs() { return mDialogs; }
     const Dialogs& dialogs() const { return mDialogs; }
     RecentFiles& recent() { return mRecent; }
-    const StatusFigures& status() const { return mStatus; }
+    const StatusFigures& status() const { return mStatus.figures(); }
     bool strokeActive() const { return mTools.sculpt().holding(); }
     ToolBox& tools() { return mTools; }
     const ToolBox& tools() const { return mTools; }
@@ -221,8 +205,8 @@ private:
     const Viewport& viewport() const override { return mViewport; }
     const CameraControl& camera() const override { return mCamera; }
     SurfacePicker& picker() override { return mPicker; }
-    glm::dvec2 pointer() const override { return {mMouseX, mMouseY}; }
-    int heldMods() const override { return mHeldMods; }
+    glm::dvec2 pointer() const override { return {mPointer.x(), mPointer.y()}; }
+    int heldMods() const override { return mPointer.held(); }
     JobRunner& jobs() override { return mJobs; }
     void showPlacement(const openvdb::Mat4d& placement) override { mDisplay.setPlacement(placement); }
     void awaitFrame(const InputEvent& event, std::size_t stamps) override;
@@ -248,10 +232,8 @@ private:
     void pressButton(const InputEvent& event);
     void releaseButton(const InputEvent& event);
     void dragTo(const InputEvent& event, double dx, double dy);
-    void trackModifiers(const InputEvent& event);
     void updateCursor();
     void updateTitle();
-    void refreshStatus(bool topology);
     void setDocument(std::unique_ptr<Document> document, bool frameIt);
     bool guardUnsaved(Command again) override;
     void saveTo(const std::filesystem::path& path);
@@ -334,12 +316,11 @@ private:
     Autosave mAutosave;
     RecentFiles mRecent;
     std::unique_ptr<Document> mDocument;
-    SurfaceStatistics mStatistics;
     BrushOptions mBrush;
     ToolBox mTools;
     CommandRegistry mCommands;
     Dialogs mDialogs;
-    StatusFigures mStatus;
+    StatusTally mStatus;
     std::unique_ptr<EventPlayer> mPlayer;
     JobRunner mJobs;
     std::shared_ptr<OpenPreview> mOpenPreview;  // of the open or import job running, if one is
@@ -354,9 +335,7 @@ private:
     std::vector<InputEvent> mRecording;
 
     // Pointer state.
-    double mMouseX = -1.0, mMouseY = -1.0;
-    int mMods = 0;      // modifiers of the current input
-    int mHeldMods = 0;  // modifier keys held down
+    PointerState mPointer;
     std::string mTitle;
     /// What a drag that is not the tool's does: the camera, a brush setting (F), a mode's handle.
     enum class Drag { None, Orbit, Pan, Zoom, Radius, Strength, Mode };
@@ -386,10 +365,6 @@ private:
     Measures mMeasures;
     std::vector<std::filesystem::path> mPendingScreenshots;
     std::vector<InputEvent> mPendingReports;
-    std::uint64_t mTopologyVersion = ~std::uint64_t(0);
-    std::uint64_t mMeasuredVersion = ~std::uint64_t(0);  // of the status's active voxels and mModelSize
-    double mModelSize = 0.0;                             // SculptSession::modelSize
-    SurfaceStatistics::Topology mTopology;
     std::uint64_t mFramesDrawn = 0;
 };
 

@@ -127,7 +127,8 @@ void newDialog(SculptApp& app)
 {
     Dialogs& d = app.dialogs();
     beginDialog("New document");
-    ImGui::Combo("shape", &d.newShape.shape, kShapeNames, int(std::size(kShapeNames)));
+    int kind = int(d.newShape.kind);
+    if (ImGui::Combo("shape", &kind, kShapeNames, int(std::size(kShapeNames)))) d.newShape.kind = NewShape::Kind(kind);
     ImGui::InputDouble("size", &d.newShape.size, 1.0, 10.0, "%.3g");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Sphere radius, box half side or torus major radius (world units)");
     ImGui::InputDouble("voxel size", &d.newShape.voxelSize, 0.05, 0.5, "%.3g");

@@ -387,11 +387,19 @@ TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
     blob.kernel.radius = 6.0;
     const auto stamp =
         std::make_shared<PrimitiveStamp>(PrimitiveStamp{PrimitiveSet({blob}, 0.5, false), CsgOperation::Union});
-    for (const BrushTool tool :
-         {BrushTool::Add, BrushTool::Carve, BrushTool::Inflate, BrushTool::Deflate, BrushTool::Smooth,
-          BrushTool::Flatten, BrushTool::Grab, BrushTool::Pinch, BrushTool::Follow, BrushTool::Primitive}) {
+    // The surface and the mask (what mask and unmask paint), as one state.
+    const auto stateOf = [](const FieldImage& f) {
+        return std::make_pair(gridChecksum(f.grid()), f.mask() ? gridChecksum(*f.mask()) : 0);
+    };
+    for (int t = 0; t < kBrushToolCount; ++t) {
+        const BrushTool tool = BrushTool(t);
         FieldImage field = makeSphere(12.0, 0.5);
-        const FieldImage original(field.grid().deepCopy());
+        if (tool == BrushTool::Unmask) {  // something to erase: the same path masked first
+            for (int i = 0; i < 4; ++i)
+                applyStamp(field, brush(BrushTool::Mask, 5.0, 1.0),
+                           stampAt(Vec3d(12.0 * std::cos(0.3 * i), 12.0 * std::sin(0.3 * i), 0.0)), nullptr);
+        }
+        const FieldImage original = field.deepCopy();
         LeafJournal journal;
         for (int i = 0; i < 4; ++i) {
             const Vec3d at(12.0 * std::cos(0.3 * i), 12.0 * std::sin(0.3 * i), 0.0);
@@ -401,13 +409,13 @@ TEST(Brush, JournalRestoresTheGridBitForBitAndRedoes)
             settings.primitive = stamp;
             applyStamp(field, settings, stampAt(at, i ? previous : at), &journal);
         }
-        const FieldImage edited(field.grid().deepCopy());
-        // A brush that did nothing would pass the rest: the stroke must have changed the grid.
-        ASSERT_NE(gridChecksum(edited.grid()), gridChecksum(original.grid())) << brushToolName(tool);
+        const auto edited = stateOf(field);
+        // A brush that did nothing would pass the rest: the stroke must have changed the grid or mask.
+        ASSERT_NE(edited, stateOf(original)) << brushToolName(tool);
         journal.swap(field);
-        EXPECT_EQ(gridChecksum(field.grid()), gridChecksum(original.grid())) << brushToolName(tool);
+        EXPECT_EQ(stateOf(field), stateOf(original)) << brushToolName(tool);
         journal.swap(field);
-        EXPECT_EQ(gridChecksum(field.grid()), gridChecksum(edited.grid())) << brushToolName(tool);
+        EXPECT_EQ(stateOf(field), edited) << brushToolName(tool);
     }
 }
 

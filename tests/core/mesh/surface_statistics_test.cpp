@@ -19,7 +19,7 @@ void expectAgreesWithWeldedMesh(const IncrementalMesher& mesher, const SurfaceSt
     EXPECT_EQ(stats.triangles(), welded.triangles.size());
     EXPECT_NEAR(stats.volume(), test::meshVolume(welded), 1e-9 * std::abs(stats.volume()));
     EXPECT_NEAR(stats.area(), test::meshArea(welded), 1e-9 * stats.area());
-    const SurfaceStatistics::Topology t = stats.topology(mesher);
+    const SurfaceTopology t = stats.topology(mesher);
     EXPECT_EQ(std::int64_t(t.vertices), topo.vertices);
     EXPECT_EQ(t.euler, topo.eulerCharacteristic());
     EXPECT_EQ(t.shells, shells);

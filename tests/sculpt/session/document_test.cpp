@@ -17,7 +17,7 @@ std::uint64_t checksumOf(const Document& document) { return gridChecksum(documen
 
 FieldImage ballOfRadius(double radius)
 {
-    return Document::create(NewShape{0, radius, 0.5}).session().field().deepCopy();
+    return Document::create(NewShape{NewShape::Kind::Sphere, radius, 0.5}).session().field().deepCopy();
 }
 
 TEST(Document, UndoAndRedoRestoreTheGridAndTheModifiedMarkFollowsTheSavedState)

@@ -91,6 +91,14 @@ void GestureTool::release(const InputEvent& event)
     if (event.button == kLeftButton) land();
 }
 
+bool GestureTool::key(const InputEvent& event)
+{
+    if (event.key != GLFW_KEY_ESCAPE) return false;
+    mCut.clear();
+    mHost.notify(std::string(mMasks ? "mask" : "cut") + " dropped");
+    return true;
+}
+
 void GestureTool::land()
 {
     const bool ctrl = (mMods & kControl) != 0, fill = ctrl && !mMasks;

@@ -31,6 +31,8 @@ public:
     /// The left button's release cuts (or masks) with the prism drawn.
     void release(const InputEvent& event) override;
     bool holding() const override { return mCut.active(); }
+    /// Esc while drawing drops the gesture: nothing is cut.
+    bool key(const InputEvent& event) override;
     /// Drops the gesture drawn so far: nothing is cut.
     void finish() override { mCut.clear(); }
     void drawOverlay() const override;

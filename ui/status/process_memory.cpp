@@ -1,4 +1,4 @@
-#include "ui/app/process_memory.h"
+#include "ui/status/process_memory.h"
 
 #include <fstream>
 #include <string>
