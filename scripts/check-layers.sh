@@ -32,10 +32,11 @@ declare -A uiAllowed=(
   [jobs]=""
   [status]="view"
   [sculpting]="view document input"
+  [scene]="sculpting view"
   [tools]="commands document input jobs sculpting view"
   [panels]="app commands document modes tools"
   [modes]="app commands document jobs panels sculpting view"
-  [app]="app commands document input jobs modes panels sculpting status tools view window"
+  [app]="app commands document input jobs modes panels scene sculpting status tools view window"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }

@@ -36,7 +36,7 @@ void SculptApp::handle(const InputEvent& event)
     mLastInput = mWindow.time();
     mLastEventArrival = arrival(event);
     switch (event.type) {
-    case EventType::Resize: mViewport.resize(event.width, event.height); break;
+    case EventType::Resize: mView.viewport().resize(event.width, event.height); break;
     case EventType::Quit:
         mTools.current().finish();  // closing the window ends the stroke, kept, then asks
         execute(Command::Quit);
@@ -66,19 +66,11 @@ void SculptApp::routeMouse(const InputEvent& event)
     mPointer.track(event);
     const bool overPanel = ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && !mTools.current().holding();
     if (modalOpen() || (overPanel && event.type != EventType::MouseMove)) return;
-    if (event.type == EventType::Wheel) zoomAtPointer(event);
+    if (event.type == EventType::Wheel)
+        mView.zoomAt(*mDocument, mPointer.x(), mPointer.y(), std::pow(kWheelZoomStep, event.y));
     else if (event.type == EventType::MouseButton && event.press) pressButton(event);
     else if (event.type == EventType::MouseButton) releaseButton(event);
     else dragTo(event, dx, dy);
-}
-
-void SculptApp::zoomAtPointer(const InputEvent& event)
-{
-    const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
-    const Ray ray = mViewport.rayThrough(mPointer.x(), mPointer.y());
-    const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
-    const glm::dvec3 anchor = hit ? hit->position : ray.origin + ray.direction * focalDistance;
-    mCamera.zoomTowards(anchor, std::pow(kWheelZoomStep, event.y));
 }
 
 void SculptApp::pressButton(const InputEvent& event)
@@ -119,9 +111,9 @@ void SculptApp::dragTo(const InputEvent& event, double dx, double dy)
     case Drag::Mode:
         if (const std::optional<SurfaceHit> hit = pickAt(event.x, event.y)) mMode->drag(*hit);
         break;
-    case Drag::Orbit: mCamera.orbit(dx, dy); break;
-    case Drag::Pan: mCamera.pan(dx, dy); break;
-    case Drag::Zoom: mCamera.zoom(std::pow(1.01, -dy)); break;
+    case Drag::Orbit: mView.camera().orbit(dx, dy); break;
+    case Drag::Pan: mView.camera().pan(dx, dy); break;
+    case Drag::Zoom: mView.camera().zoom(std::pow(1.01, -dy)); break;
     case Drag::Radius:
         mBrush.radius = std::max(0.5 * mDocument->session().field().voxelSize(),
                                  mDragStartValue * std::pow(2.0, (event.x - mDragStartX) / 120.0));

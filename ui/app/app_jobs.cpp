@@ -72,8 +72,8 @@ void SculptApp::pollJob()
     }
     mLastInput = mWindow.time();  // show the notice
     mOpenPreview.reset();
-    mPiecesShown = ~std::uint64_t(0);  // a push that did not land leaves its piece where it was
-    if (outcome.ending != JobRunner::Ending::Finished) mDisplay.dropPreview();
+    mView.redrawPieces();  // a push that did not land leaves its piece where it was
+    if (outcome.ending != JobRunner::Ending::Finished) mView.display().dropPreview();
     if (mOpeningAtStart) followStartupOpen(outcome.ending, outcome.error);
 }
 
@@ -81,11 +81,11 @@ void SculptApp::showOpenPreview()
 {
     std::optional<OpenPreview::Surface> preview = mOpenPreview ? mOpenPreview->take() : std::nullopt;
     if (!preview) return;
-    mDisplay.showPreview(preview->mesh, *preview->xform);
+    mView.display().showPreview(preview->mesh, *preview->xform);
     ++mPreviewsShown;
     if (!preview->mesh.positions.empty()) {
         const auto [lo, hi] = boundsOf(preview->mesh.positions.data(), preview->mesh.positions.size());
-        mCamera.frame(lo, hi);
+        mView.camera().frame(lo, hi);
     }
     if (mOpeningAtStart) std::cout << "sculpt-ui: preview in " << formatSeconds(mWindow.time()) << " s" << std::endl;
 }
@@ -94,7 +94,7 @@ void SculptApp::followStartupOpen(JobRunner::Ending ending, const std::string& e
 {
     switch (ending) {
     case JobRunner::Ending::Running:  // the job is done when its chunks all are
-        if (mJobs.running() || mDisplay.pendingChunks() > 0) return;
+        if (mJobs.running() || mView.display().pendingChunks() > 0) return;
         std::cout << "sculpt-ui: full detail in " << formatSeconds(mWindow.time()) << " s" << std::endl;
         break;
     case JobRunner::Ending::Finished:
@@ -135,7 +135,7 @@ void SculptApp::startDocument(std::string label, DocumentMaker make, std::functi
         },
         [this, landed = std::move(landed)](std::unique_ptr<Document> document) {
             // A preview was framed: the view stays as the user left it.
-            setDocument(std::move(document), !mDisplay.showsPreview());
+            setDocument(std::move(document), !mView.display().showsPreview());
             mDialogs.notice = landed();
         });
 }
@@ -198,8 +198,8 @@ void SculptApp::startMorph(const fs::path& target, const MorphOptions& options, 
         [this, label, target](MorphRun run) {
             // The target becomes the loaded one: its ghost shows where the frames go.
             mBrush.target = {target, run.target};
-            mGhost.set(run.target.get());
-            openMode(std::make_unique<MorphMode>(mViewport.renderer(), label, std::move(run)));
+            mView.ghost().set(run.target.get());
+            openMode(std::make_unique<MorphMode>(mView.viewport().renderer(), label, std::move(run)));
         });
 }
 
@@ -262,8 +262,8 @@ void SculptApp::startLoadTarget(const fs::path& path)
         [path, warnings](const Progress& p) { return loadShape(path, std::nullopt, *warnings, p); },
         [this, path, warnings](FieldImage shape) {
             mBrush.target = {path, std::make_shared<const FieldImage>(std::move(shape))};
-            mGhost.set(mBrush.target.shape.get());
-            mGhost.setShown(true);
+            mView.ghost().set(mBrush.target.shape.get());
+            mView.ghost().setShown(true);
             mDialogs.notice =
                 "target " + path.filename().string() + " loaded: O is the follow brush, H hides the ghost";
             if (!warnings->empty()) mDialogs.notice += " (" + warnings->front() + ")";
@@ -280,8 +280,8 @@ void SculptApp::startImportRead(const fs::path& path)
             const openvdb::CoordBBox box = draft.preview()->grid().evalActiveVoxelBoundingBox();
             const auto& xform = draft.preview()->grid().transform();
             const openvdb::Vec3d lo = xform.indexToWorld(box.min()), hi = xform.indexToWorld(box.max());
-            openMode(std::make_unique<ImportMode>(mViewport.renderer(), std::move(draft)));
-            mCamera.frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
+            openMode(std::make_unique<ImportMode>(mView.viewport().renderer(), std::move(draft)));
+            mView.camera().frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
         });
 }
 

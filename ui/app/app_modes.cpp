@@ -42,7 +42,7 @@ void SculptApp::drawModePanel()
 PrimitivesMode& SculptApp::primitivesMode()
 {
     if (!mode<PrimitivesMode>()) {
-        openMode(std::make_unique<PrimitivesMode>(mViewport.renderer(), mViewport.overlay(), mLook,
+        openMode(std::make_unique<PrimitivesMode>(mView.viewport().renderer(), mView.viewport().overlay(), mView.look(),
                                                   mDocument->session().field().grid().transform().copy()));
     }
     return *mode<PrimitivesMode>();
@@ -52,7 +52,7 @@ void SculptApp::addPrimitive(SkeletonType type)
 {
     if (!mode<PrimitivesMode>() && busy()) return;
     const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
-    const glm::dvec3 at = hit ? hit->position : mCamera.focalPoint();
+    const glm::dvec3 at = hit ? hit->position : mView.camera().focalPoint();
     // A soft object crosses iso 0.5 near half its reach: twice the brush gives a blob its size.
     primitivesMode().draft().add(type, {at.x, at.y, at.z}, 2.0 * mBrush.radius);
 }

@@ -49,7 +49,7 @@ void SculptApp::writeScreenshot(const fs::path& path)
 {
     if (!mWindow.draws())
         return showError(path.string() + ": no screenshot without a window (headless: nothing is drawn)");
-    const int w = mViewport.width(), h = mViewport.height();
+    const int w = mView.viewport().width(), h = mView.viewport().height();
     auto image = vtkSmartPointer<vtkImageData>::New();
     image->SetDimensions(w, h, 1);
     image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
@@ -73,13 +73,12 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["checksum"] = formatChecksum(gridChecksum(session.field().grid()));
     const openvdb::FloatGrid* mask = session.field().mask();
     r["mask_checksum"] = mask ? formatChecksum(gridChecksum(*mask)) : std::string();
-    r["blocks"] = mDisplay.blockCount();
     r["remeshed"] = mLastRemeshed;  // blocks the mesher re-meshed, empty candidates included
     const IncrementalMesher::Changes changes = session.mesher()->changesSince(mReportVersion);
     r["mesher_changed"] = changes.updated.size() + changes.removed.size();  // what it reports to viewers
     mReportVersion = session.mesher()->version();
-    r["mesh_bytes"] = mDisplay.meshBytes();
     mStatus.report(r);
+    mView.report(r);
     mLastRemeshed = 0;
     const std::optional<SurfaceHit> hit = pickAt(mPointer.x(), mPointer.y());
     r["pick"] =
@@ -100,11 +99,6 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["job"] = job ? nlohmann::json{{"label", job->label()}, {"progress", job->progress()}} : nlohmann::json();
     r["last_job"] = mLastJob;
     r["previews_shown"] = mPreviewsShown;
-    r["display_pending_chunks"] = mDisplay.pendingChunks();  // still drawn from a preview
-    r["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
-    r["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
-    r["other_pieces"] = mPieces.count();
-    r["other_pieces_triangles"] = mPieces.trianglesShown();
     r["active_piece"] = mDocument->activePiece();
     r["pieces"] = nlohmann::json::array();
     for (const DocumentPiece& piece : mDocument->pieces()) {
@@ -115,7 +109,6 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
                                {"placement", placement}});
     }
     r["target"] = mBrush.target.path.string();
-    r["xray"] = mLook.xray();
     r["morph"] = nullptr;  // read by replays whether or not frames are on show
     r["mode"] = mMode ? nlohmann::json(mMode->name()) : nlohmann::json();  // the open mode's report's key
     if (mMode) r[mMode->name()] = mMode->report();
@@ -128,12 +121,6 @@ void SculptApp::writeReport(const fs::path& path, const std::string& name)
     r["latencies_ms"] = mMeasures.latencyMs;
     r["preview_latencies_ms"] = mMeasures.previewLatencyMs;
     r["stamps"] = mMeasures.stamps;
-    r["coarse"] = mDisplay.coarseChunks() > 0;  // this frame, some chunks drawn coarse
-    r["coarse_chunks"] = mDisplay.coarseChunks();
-    r["chunks"] = mDisplay.chunkCount();
-    r["chunk_blocks"] = mDisplay.chunkBlocks();
-    r["actors"] = mDisplay.actorCount();
-    r["triangles_drawn"] = mDisplay.trianglesDrawn();
     r["triangles_drawn_per_frame"] = mMeasures.trianglesDrawn;
     r["peak_rss"] = peakResidentBytes();
     mMeasures = Measures();

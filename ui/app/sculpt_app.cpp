@@ -27,9 +27,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The coarse display stays on this long after the camera last moved.
-constexpr double kNavigationSettleSeconds = 0.25;
-
 std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& grid)
 {
     if (path.empty()) return std::make_unique<Document>(Document::create(NewShape{}));
@@ -39,11 +36,9 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 }  // namespace
 
 SculptApp::SculptApp(Window& window, AppOptions options)
-    : mWindow(window), mOptions(std::move(options)), mViewport(window.width(), window.height(), window.draws()),
-      mDisplay(mViewport.renderer(), mLook, mOptions.chunkBlocks), mScales(mViewport.renderer()),
-      mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()), mCursor(mViewport.overlay()),
-      mPlanes(mViewport.renderer()), mCamera(mViewport), mAutosave(mOptions.stateDir, mOptions.autosaveSeconds),
-      mRecent(mOptions.stateDir), mTools(*this)
+    : mWindow(window), mOptions(std::move(options)),
+      mView(window.width(), window.height(), window.draws(), mOptions.chunkBlocks),
+      mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir), mTools(*this)
 {
     if (!mOptions.play.empty()) mPlayer = std::make_unique<EventPlayer>(readInputEvents(mOptions.play.string()));
     mDialogs.recovery = mAutosave.pending(mOptions.document);
@@ -77,7 +72,7 @@ SculptApp::SculptApp(Window& window, AppOptions options)
     }
     mWindow.setListener([this](const InputEvent& e) {
         if (!mPlayer) handle(e);
-        else if (e.type == EventType::Resize) mViewport.resize(e.width, e.height);  // the replay's own resize
+        else if (e.type == EventType::Resize) mView.viewport().resize(e.width, e.height);  // the replay's own resize
     });
 }
 
@@ -91,74 +86,17 @@ SculptApp::~SculptApp()
 void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
 {
     mDocument = std::move(document);
-    mPicker.reset();
     mStatus.reset();
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
     mReportVersion = mDocument->session().mesher()->version();
-    mActiveShown = &mDocument->session();
-    mPiecesShown = ~std::uint64_t(0);
-    showPieces();
-    mDisplay.sync(*mDocument->session().mesher(), mDocument->session().field().voxelSize());
-    if (frameIt) frameModel();
+    mView.show(*mDocument, frameIt);
 }
 
 void SculptApp::showPieces()
 {
-    if (mPiecesShown == mDocument->piecesRevision() && mActiveShown == &mDocument->session()) return;
-    mPiecesShown = mDocument->piecesRevision();
-    if (mActiveShown != &mDocument->session()) {  // another piece to sculpt: measures start again
-        mActiveShown = &mDocument->session();
-        mPicker.reset();
-        mStatus.reset();
-        mRemeshedAtSync = mDocument->session().remeshedBlocks();
-    }
-    std::vector<DrawnPiece> others;
-    const auto& pieces = mDocument->pieces();
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-        const SculptSession& session = *pieces[i].session;
-        if (i != mDocument->activePiece())
-            others.push_back({&pieces[i].look, session.mesher(), session.field().voxelSize()});
-    }
-    mPieces.sync(others);
-    mDisplay.setPlacement(pieces[mDocument->activePiece()].look.placement);
-}
-
-void SculptApp::frameModel()
-{
-    openvdb::BBoxd world = mPieces.worldBox();
-    world.expand(placedBox(leafWorldBox(mDocument->session().field()),
-                           mDocument->pieces()[mDocument->activePiece()].look.placement));
-    if (world.empty()) return;
-    mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
-                  {world.max().x(), world.max().y(), world.max().z()});
-}
-
-std::optional<SurfaceHit> SculptApp::pickAt(double x, double y)
-{
-    if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
-    const SculptSession& session = mDocument->session();
-    // In the piece's own world: its placement moved the drawing, never the voxels.
-    const openvdb::Mat4d fromWorld = mDocument->pieces()[mDocument->activePiece()].look.placement.inverse();
-    return mPicker.pick(session.field(), session.mesher()->version(),
-                        transformedRay(mViewport.rayThrough(x, y), fromWorld), session.strokeJournal());
-}
-
-SurfaceHit SculptApp::inWorld(const SurfaceHit& hit) const
-{
-    const openvdb::Mat4d& placement = mDocument->pieces()[mDocument->activePiece()].look.placement;
-    const openvdb::Vec3d p = placement.transform(openvdb::Vec3d(hit.position.x, hit.position.y, hit.position.z));
-    // Rigid moves and uniform scales: the normal turns as a direction does.
-    const openvdb::Vec3d n = placement.transform3x3(openvdb::Vec3d(hit.normal.x, hit.normal.y, hit.normal.z)).unit();
-    return {{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}};
-}
-
-HoverKey SculptApp::hoverKey() const
-{
-    const SculptSession& session = mDocument->session();
-    const bool inView = mPointer.inside(mViewport.width(), mViewport.height());
-    return {mViewport.rayThrough(mPointer.x(), mPointer.y()), session.field().id(), session.mesher()->id(),
-            session.mesher()->version(),
-            inView && mDrag == Drag::None && (!mTools.current().holding() || mTools.current().showsBrush())};
+    if (!mView.syncPieces(*mDocument)) return;
+    mStatus.reset();
+    mRemeshedAtSync = mDocument->session().remeshedBlocks();
 }
 
 double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayStart + event.time : event.time; }
@@ -180,24 +118,11 @@ void SculptApp::showError(const std::string& message)
 
 void SculptApp::updateCursor()
 {
-    const HoverKey key = hoverKey();
-    if (key != mHoverKey) {
-        mHover = key.picking ? pickAt(mPointer.x(), mPointer.y()) : std::nullopt;
-        mHoverKey = key;
-    }
-    const bool show =
-        mHover && mTools.current().showsBrush() && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
-    // White for tools that add, red for those that take away, blue for smoothing (Shift), grey
-    // for the mask.
-    const BrushTool tool = mTools.sculpt().toolUnder(mPointer.current());
-    if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
-    else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
-    else if (tool == BrushTool::Mask || tool == BrushTool::Unmask) mCursor.setColour(0.45, 0.45, 0.5);
-    else mCursor.setColour(1.0, 1.0, 1.0);
-    if (show) {
-        const SurfaceHit shown = inWorld(*mHover);
-        mCursor.place(true, shown.position, shown.normal, mBrush.radius, mBrush.symmetry);
-    } else mCursor.place(false, {}, {}, 0.0, {});
+    const bool picking = mDrag == Drag::None && (!mTools.current().holding() || mTools.current().showsBrush());
+    mView.hover(*mDocument, mPointer.x(), mPointer.y(), picking);
+    const bool shown =
+        mTools.current().showsBrush() && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
+    mView.placeCursor(*mDocument, shown, mTools.sculpt().toolUnder(mPointer.current()), mBrush);
 }
 
 void SculptApp::updateTitle()
@@ -205,25 +130,6 @@ void SculptApp::updateTitle()
     const std::string title = "Sculpt - " + mDocument->title();
     if (title != mTitle) mWindow.setTitle(title);
     mTitle = title;
-}
-
-DetailView SculptApp::detailView(double now)
-{
-    if (mCamera.moves() != mCameraMovesSeen) {
-        mCameraMovesSeen = mCamera.moves();
-        mLastNavigation = now;
-    }
-    const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
-    DetailView view;
-    view.still = !(moving || strokeActive()) || mStatus.triangles() <= mOptions.lodTriangles;
-    view.eye = mCamera.eye();
-    view.pixelSizeAt = [this](const glm::dvec3& p) { return mViewport.pixelSizeAt(p); };
-    if (mHover) {
-        view.brushCentre = mHover->position;
-        view.brushRadius = mBrush.radius;
-    }
-    view.triangleBudget = std::size_t(mViewport.width()) * std::size_t(mViewport.height());
-    return view;
 }
 
 void SculptApp::frame()
@@ -239,33 +145,26 @@ void SculptApp::frame()
     mLastRemeshed += remeshed - mRemeshedAtSync;
     mRemeshedAtSync = remeshed;
     if (mMode && mMode->sync(now) && mPreviewPendingSince < 0.0) mPreviewPendingSince = mLastEventArrival;
-    const IncrementalMesher* modeMesh = mMode ? mMode->shownMesher() : nullptr;
-    const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
-    SurfaceTint tint = mCheck;
-    tint.mask = session.field().mask();
-    tint.surface = &session.field().grid();
-    mDisplay.sync(shown, session.field().voxelSize(), detailView(now), tint);
-    mScales.sync(shown, session.field().voxelSize());
-    mDisplay.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
-    mPieces.setHidden(mScales.shown() || (mMode && mMode->hidesDocument()));
+    mView.sync(*mDocument, mMode ? mMode->shownMesher() : nullptr, mMode && mMode->hidesDocument(), now, strokeActive(),
+               mStatus.triangles() <= mOptions.lodTriangles, mBrush, mStatus.modelSize());
     if (mOpeningAtStart) followStartupOpen(JobRunner::Ending::Running, {});
-    mStatus.countUploads(mDisplay);
-    mStatus.refresh(*mDocument, mDisplay, mPieces.trianglesShown(), strokeActive(), !strokeActive(),
+    mStatus.countUploads(mView.display());
+    mStatus.refresh(*mDocument, mView.display(), mView.pieces().trianglesShown(), strokeActive(), !strokeActive(),
                     mFramesDrawn % 30 == 0);
     updateCursor();
-    mPlanes.show(mBrush.symmetry, 0.6 * mStatus.modelSize());
     updateTitle();
 
-    mViewport.renderer()->ResetCameraClippingRange();
-    mViewport.render();
+    Viewport& viewport = mView.viewport();
+    viewport.renderer()->ResetCameraClippingRange();
+    viewport.render();
     if (mWindow.draws()) ImGui_ImplOpenGL3_NewFrame();
-    beginImGuiFrame(mViewport.width(), mViewport.height(), now - mLastFrame);
+    beginImGuiFrame(viewport.width(), viewport.height(), now - mLastFrame);
     ImGui::NewFrame();
     drawPanels();
     mItemActive = ImGui::IsAnyItemActive();
     ImGui::Render();
     if (mWindow.draws()) {
-        glViewport(0, 0, mViewport.width(), mViewport.height());
+        glViewport(0, 0, viewport.width(), viewport.height());
         ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     }
     for (const fs::path& path : mPendingScreenshots) writeScreenshot(path);
@@ -282,7 +181,7 @@ void SculptApp::frame()
     mStatus.setFrameMs(frameMs);
     if (!reporting) {
         mMeasures.frameMs.push_back(frameMs);
-        mMeasures.trianglesDrawn.push_back(double(mDisplay.trianglesDrawn()));
+        mMeasures.trianglesDrawn.push_back(double(mView.display().trianglesDrawn()));
     }
     if (mPreviewPendingSince >= 0.0) {
         mMeasures.previewLatencyMs.push_back(1000.0 * (end - mPreviewPendingSince));
@@ -308,10 +207,11 @@ void SculptApp::drawPanels()
     drawModePanel();
     if (mDialogs.help) drawHelpPanel(*this);
     mTools.current().drawOverlay();
-    if (!mHover && mTools.current().showsBrush() && !mTools.current().holding() && !ImGui::GetIO().WantCaptureMouse &&
-        mDrag == Drag::None && mPointer.x() >= 0) {
+    if (!mView.hovered() && mTools.current().showsBrush() && !mTools.current().holding() &&
+        !ImGui::GetIO().WantCaptureMouse && mDrag == Drag::None && mPointer.x() >= 0) {
         // Off the model: the brush as a screen circle of its size at the model's depth.
-        const double pixels = mBrush.radius / std::max(1e-12, mViewport.pixelSizeAt(mCamera.focalPoint()));
+        const double pixels =
+            mBrush.radius / std::max(1e-12, mView.viewport().pixelSizeAt(mView.camera().focalPoint()));
         ImGui::GetForegroundDrawList()->AddCircle(ImVec2(float(mPointer.x()), float(mPointer.y())), float(pixels),
                                                   IM_COL32(255, 255, 255, 140), 48, 1.5f);
     }
@@ -359,7 +259,7 @@ bool SculptApp::quiet() const
 {
     constexpr double kSettleSeconds = 0.5;  // frames go on a little after the last input (hover, LOD)
     return mDrag == Drag::None && !mTools.current().holding() && mWindow.time() - mLastInput > kSettleSeconds &&
-           mPendingScreenshots.empty() && mPendingReports.empty() && mDisplay.pendingChunks() == 0 &&
+           mPendingScreenshots.empty() && mPendingReports.empty() && mView.display().pendingChunks() == 0 &&
            !(mMode && mMode->holdsReplay());
 }
 

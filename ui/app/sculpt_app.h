@@ -17,20 +17,11 @@
 #include "ui/jobs/job_runner.h"
 #include "ui/modes/mode.h"
 #include "ui/modes/mode_host.h"
-#include "ui/sculpting/hover_key.h"
+#include "ui/scene/document_view.h"
 #include "ui/sculpting/stroke_controller.h"
 #include "ui/status/status_tally.h"
 #include "ui/tools/tool_box.h"
 #include "ui/tools/tool_host.h"
-#include "ui/view/brush_cursor.h"
-#include "ui/view/camera_control.h"
-#include "ui/view/model_display.h"
-#include "ui/view/pieces_display.h"
-#include "ui/view/scales_display.h"
-#include "ui/view/shape_display.h"
-#include "ui/view/surface_look.h"
-#include "ui/view/symmetry_planes.h"
-#include "ui/view/viewport.h"
 
 #include <filesystem>
 #include <functional>
@@ -126,8 +117,8 @@ public:
 
     Document& document() override { return *mDocument; }
     BrushOptions& brush() override { return mBrush; }
-    SurfaceLook& look() { return mLook; }
-    CameraControl& camera() { return mCamera; }
+    SurfaceLook& look() { return mView.look(); }
+    CameraControl& camera() { return mView.camera(); }
     Dialogs& dialogs() { return mDialogs; }
     const Dialogs& dialogs() const { return mDialogs; }
     RecentFiles& recent() { return mRecent; }
@@ -135,8 +126,8 @@ public:
     bool strokeActive() const { return mTools.sculpt().holding(); }
     ToolBox& tools() { return mTools; }
     const ToolBox& tools() const { return mTools; }
-    bool scalesShown() const { return mScales.shown(); }
-    bool ghostShown() const { return mGhost.shown(); }
+    bool scalesShown() const { return mView.scales().shown(); }
+    bool ghostShown() const { return mView.ghost().shown(); }
     /// The whole-model job running, or nullptr.
     const BackgroundJob* job() const { return mJobs.job(); }
     /// The open mode if it is an M (a MorphMode, an ImportMode...), else nullptr.
@@ -167,7 +158,7 @@ public:
     void drillDrainHoleUnderPointer();
     /// The print check the clay shows (View > Print Check): wall thickness or overhang, and their
     /// thresholds; its grids are filled in each frame.
-    SurfaceTint& printCheck() { return mCheck; }
+    SurfaceTint& printCheck() { return mView.printCheck(); }
 
     /// Dialog outcomes.
     void confirmPrompt();
@@ -181,8 +172,6 @@ private:
     /// The window's own commands (command_table.cpp); the tools add theirs.
     void addCommands();
     void frame();
-    /// What the display's level of detail needs of this frame (camera motion noticed here).
-    DetailView detailView(double now);
     /// One pass of the loop: input (live or replayed), autosave, a frame.
     void loopOnce(bool& replayDone);
     /// An exception no handler expected (out of memory, a bug, an OpenVDB error) reached the
@@ -202,13 +191,13 @@ private:
     void notify(std::string notice) override { mDialogs.notice = std::move(notice); }
     void startEdit(ModelEdit edit) override;
     // What the tools ask (ToolHost).
-    const Viewport& viewport() const override { return mViewport; }
-    const CameraControl& camera() const override { return mCamera; }
-    SurfacePicker& picker() override { return mPicker; }
+    const Viewport& viewport() const override { return mView.viewport(); }
+    const CameraControl& camera() const override { return mView.camera(); }
+    SurfacePicker& picker() override { return mView.picker(); }
     glm::dvec2 pointer() const override { return {mPointer.x(), mPointer.y()}; }
     int heldMods() const override { return mPointer.held(); }
     JobRunner& jobs() override { return mJobs; }
-    void showPlacement(const openvdb::Mat4d& placement) override { mDisplay.setPlacement(placement); }
+    void showPlacement(const openvdb::Mat4d& placement) override { mView.display().setPlacement(placement); }
     void awaitFrame(const InputEvent& event, std::size_t stamps) override;
     void startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed) override;
     /// Opens `mode` in place of the one open; the status bar shows its hint.
@@ -228,10 +217,10 @@ private:
     void routeKey(const InputEvent& event);
     /// While a dialog is open it takes every key: its answers are commands of Scope::Dialog.
     void routeDialogKey(const InputEvent& event);
-    void zoomAtPointer(const InputEvent& event);
     void pressButton(const InputEvent& event);
     void releaseButton(const InputEvent& event);
     void dragTo(const InputEvent& event, double dx, double dy);
+    /// The hover picked again if it went stale, and the brush cursor placed on it.
     void updateCursor();
     void updateTitle();
     void setDocument(std::unique_ptr<Document> document, bool frameIt);
@@ -245,16 +234,10 @@ private:
     /// Appends the state as a JSON line to `path`, called `name` (if not "").
     void writeReport(const std::filesystem::path& path, const std::string& name);
     void finishReplay();
-    void frameModel();
-    /// Brings the drawing of the pieces up to date once they changed: the active one in the
-    /// model display at its placement, the others in their colours.
+    std::optional<SurfaceHit> pickAt(double x, double y) override { return mView.pickAt(*mDocument, x, y); }
+    SurfaceHit inWorld(const SurfaceHit& hit) const override { return mView.inWorld(*mDocument, hit); }
+    /// Brings the drawing of the pieces up to date; another piece sculpted: its measures start again.
     void showPieces();
-    /// The active piece's surface under the pixel, in its field's world (where strokes are made).
-    std::optional<SurfaceHit> pickAt(double x, double y) override;
-    /// A hit of pickAt in the world (the active piece's placement applied).
-    SurfaceHit inWorld(const SurfaceHit& hit) const override;
-    /// What the hover depends on now.
-    HoverKey hoverKey() const;
     void replayStrokes();
     /// Runs `work` (Progress -> Result) as the background job; once it succeeded, `land`
     /// (Result) takes its result on the UI thread: the document's new field, frames, a target.
@@ -301,18 +284,7 @@ private:
 
     Window& mWindow;
     AppOptions mOptions;
-    Viewport mViewport;
-    SurfaceLook mLook;
-    ModelDisplay mDisplay;
-    ScalesDisplay mScales;
-    ShapeDisplay mGhost;                             // the follow target
-    PiecesDisplay mPieces;                           // the pieces not being sculpted
-    std::uint64_t mPiecesShown = ~std::uint64_t(0);  // the document's piecesRevision drawn
-    const SculptSession* mActiveShown = nullptr;     // the session the model display shows
-    BrushCursor mCursor;
-    SymmetryPlanes mPlanes;
-    CameraControl mCamera;
-    SurfacePicker mPicker;
+    DocumentView mView;
     Autosave mAutosave;
     RecentFiles mRecent;
     std::unique_ptr<Document> mDocument;
@@ -342,12 +314,7 @@ private:
     Drag mDrag = Drag::None;
     double mDragStartX = 0.0, mDragStartValue = 0.0;
     double mCreaseRadius = 0.0;
-    SurfaceTint mCheck;
-    std::optional<SurfaceHit> mHover;  // the surface under the pointer, picked for mHoverKey
-    HoverKey mHoverKey;
-    bool mItemActive = false;       // an ImGui item (a text field) was active at the end of the last frame
-    double mLastNavigation = -1.0;  // time of the last camera move (level of detail)
-    std::uint64_t mCameraMovesSeen = 0;
+    bool mItemActive = false;  // an ImGui item (a text field) was active at the end of the last frame
 
     // Frame bookkeeping.
     bool mQuit = false;

@@ -1,0 +1,173 @@
+#include "ui/scene/document_view.h"
+
+#include "core/field/placed_box.h"
+#include "sculpt/session/document.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+namespace sculpt::ui {
+
+namespace {
+
+/// The coarse display stays on this long after the camera last moved.
+constexpr double kNavigationSettleSeconds = 0.25;
+
+const openvdb::Mat4d& placementOf(const Document& document)
+{
+    return document.pieces()[document.activePiece()].look.placement;
+}
+
+}  // namespace
+
+DocumentView::DocumentView(int width, int height, bool draws, int chunkBlocks)
+    : mViewport(width, height, draws), mDisplay(mViewport.renderer(), mLook, chunkBlocks),
+      mScales(mViewport.renderer()), mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()),
+      mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport)
+{}
+
+void DocumentView::show(const Document& document, bool frameIt)
+{
+    mPicker.reset();
+    mActiveShown = &document.session();
+    mPiecesShown = ~std::uint64_t(0);
+    syncPieces(document);
+    mDisplay.sync(*document.session().mesher(), document.session().field().voxelSize());
+    if (frameIt) frameAll(document);
+}
+
+bool DocumentView::syncPieces(const Document& document)
+{
+    if (mPiecesShown == document.piecesRevision() && mActiveShown == &document.session()) return false;
+    mPiecesShown = document.piecesRevision();
+    const bool another = mActiveShown != &document.session();
+    if (another) {
+        mActiveShown = &document.session();
+        mPicker.reset();
+    }
+    std::vector<DrawnPiece> others;
+    const auto& pieces = document.pieces();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const SculptSession& session = *pieces[i].session;
+        if (i != document.activePiece())
+            others.push_back({&pieces[i].look, session.mesher(), session.field().voxelSize()});
+    }
+    mPieces.sync(others);
+    mDisplay.setPlacement(placementOf(document));
+    return another;
+}
+
+void DocumentView::frameAll(const Document& document)
+{
+    openvdb::BBoxd world = mPieces.worldBox();
+    world.expand(placedBox(leafWorldBox(document.session().field()), placementOf(document)));
+    if (world.empty()) return;
+    mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
+                  {world.max().x(), world.max().y(), world.max().z()});
+}
+
+std::optional<SurfaceHit> DocumentView::pickAt(const Document& document, double x, double y)
+{
+    if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
+    const SculptSession& session = document.session();
+    // In the piece's own world: its placement moved the drawing, never the voxels.
+    return mPicker.pick(session.field(), session.mesher()->version(),
+                        transformedRay(mViewport.rayThrough(x, y), placementOf(document).inverse()),
+                        session.strokeJournal());
+}
+
+SurfaceHit DocumentView::inWorld(const Document& document, const SurfaceHit& hit) const
+{
+    const openvdb::Mat4d& placement = placementOf(document);
+    const openvdb::Vec3d p = placement.transform(openvdb::Vec3d(hit.position.x, hit.position.y, hit.position.z));
+    // Rigid moves and uniform scales: the normal turns as a direction does.
+    const openvdb::Vec3d n = placement.transform3x3(openvdb::Vec3d(hit.normal.x, hit.normal.y, hit.normal.z)).unit();
+    return {{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}};
+}
+
+const std::optional<SurfaceHit>& DocumentView::hover(const Document& document, double x, double y, bool picking)
+{
+    const SculptSession& session = document.session();
+    const bool inView = x >= 0 && y >= 0 && x < mViewport.width() && y < mViewport.height();
+    const HoverKey key{mViewport.rayThrough(x, y), session.field().id(), session.mesher()->id(),
+                       session.mesher()->version(), inView && picking};
+    if (key != mHoverKey) {
+        mHover = key.picking ? pickAt(document, x, y) : std::nullopt;
+        mHoverKey = key;
+    }
+    return mHover;
+}
+
+void DocumentView::placeCursor(const Document& document, bool shown, BrushTool tool, const BrushOptions& brush)
+{
+    if (tool == BrushTool::Carve || tool == BrushTool::Deflate) mCursor.setColour(1.0, 0.55, 0.5);
+    else if (tool == BrushTool::Smooth) mCursor.setColour(0.6, 0.8, 1.0);
+    else if (tool == BrushTool::Mask || tool == BrushTool::Unmask) mCursor.setColour(0.45, 0.45, 0.5);
+    else mCursor.setColour(1.0, 1.0, 1.0);
+    if (shown && mHover) {
+        const SurfaceHit at = inWorld(document, *mHover);
+        mCursor.place(true, at.position, at.normal, brush.radius, brush.symmetry);
+    } else mCursor.place(false, {}, {}, 0.0, {});
+}
+
+void DocumentView::zoomAt(const Document& document, double x, double y, double factor)
+{
+    const std::optional<SurfaceHit> hit = pickAt(document, x, y);
+    const Ray ray = mViewport.rayThrough(x, y);
+    const double focalDistance = glm::length(mCamera.focalPoint() - ray.origin);
+    mCamera.zoomTowards(hit ? inWorld(document, *hit).position : ray.origin + ray.direction * focalDistance, factor);
+}
+
+DetailView DocumentView::detailView(double now, bool stroking, bool underBudget, double brushRadius)
+{
+    if (mCamera.moves() != mCameraMovesSeen) {
+        mCameraMovesSeen = mCamera.moves();
+        mLastNavigation = now;
+    }
+    const bool moving = mLastNavigation >= 0.0 && now - mLastNavigation < kNavigationSettleSeconds;
+    DetailView view;
+    view.still = !(moving || stroking) || underBudget;
+    view.eye = mCamera.eye();
+    view.pixelSizeAt = [this](const glm::dvec3& p) { return mViewport.pixelSizeAt(p); };
+    if (mHover) {
+        view.brushCentre = mHover->position;
+        view.brushRadius = brushRadius;
+    }
+    view.triangleBudget = std::size_t(mViewport.width()) * std::size_t(mViewport.height());
+    return view;
+}
+
+void DocumentView::sync(const Document& document, const IncrementalMesher* modeMesh, bool hideDocument, double now,
+                        bool stroking, bool underBudget, const BrushOptions& brush, double modelSize)
+{
+    const SculptSession& session = document.session();
+    const IncrementalMesher& shown = modeMesh ? *modeMesh : *session.mesher();
+    SurfaceTint tint = mCheck;
+    tint.mask = session.field().mask();
+    tint.surface = &session.field().grid();
+    mDisplay.sync(shown, session.field().voxelSize(), detailView(now, stroking, underBudget, brush.radius), tint);
+    mScales.sync(shown, session.field().voxelSize());
+    mDisplay.setHidden(mScales.shown() || hideDocument);
+    mPieces.setHidden(mScales.shown() || hideDocument);
+    mPlanes.show(brush.symmetry, 0.6 * modelSize);
+}
+
+void DocumentView::report(nlohmann::json& out) const
+{
+    out["blocks"] = mDisplay.blockCount();
+    out["mesh_bytes"] = mDisplay.meshBytes();
+    out["display_pending_chunks"] = mDisplay.pendingChunks();  // still drawn from a preview
+    out["scales"] = mScales.shown() ? mScales.scaleCount() : 0;
+    out["ghost_triangles"] = mGhost.shown() ? mGhost.triangleCount() : 0;
+    out["other_pieces"] = mPieces.count();
+    out["other_pieces_triangles"] = mPieces.trianglesShown();
+    out["xray"] = mLook.xray();
+    out["coarse"] = mDisplay.coarseChunks() > 0;  // this frame, some chunks drawn coarse
+    out["coarse_chunks"] = mDisplay.coarseChunks();
+    out["chunks"] = mDisplay.chunkCount();
+    out["chunk_blocks"] = mDisplay.chunkBlocks();
+    out["actors"] = mDisplay.actorCount();
+    out["triangles_drawn"] = mDisplay.trianglesDrawn();
+}
+
+}  // namespace sculpt::ui
