@@ -122,7 +122,7 @@ void SculptApp::updateCursor()
     mView.hover(*mDocument, mPointer.x(), mPointer.y(), picking);
     const bool shown =
         mTools.current().showsBrush() && !ImGui::GetIO().WantCaptureMouse && (!mMode || mMode->showsBrush());
-    mView.placeCursor(*mDocument, shown, mTools.sculpt().toolUnder(mPointer.current()), mBrush);
+    mView.placeCursor(*mDocument, shown, mTools.get<SculptTool>().toolUnder(mPointer.current()), mBrush);
 }
 
 void SculptApp::updateTitle()

@@ -123,7 +123,7 @@ public:
     const Dialogs& dialogs() const { return mDialogs; }
     RecentFiles& recent() { return mRecent; }
     const StatusFigures& status() const { return mStatus.figures(); }
-    bool strokeActive() const { return mTools.sculpt().holding(); }
+    bool strokeActive() const { return mTools.get<SculptTool>().holding(); }
     ToolBox& tools() { return mTools; }
     const ToolBox& tools() const { return mTools; }
     bool scalesShown() const { return mView.scales().shown(); }

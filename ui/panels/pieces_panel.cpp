@@ -94,7 +94,7 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
 
 void drawPiecesPanel(SculptApp& app)
 {
-    PiecesTool& tool = app.tools().pieces();
+    PiecesTool& tool = app.tools().get<PiecesTool>();
     const bool piecesMode = app.tools().isCurrent(tool);
     if (app.document().pieces().size() < 2 && !piecesMode) return;
     const ImVec2 size(236, 0);

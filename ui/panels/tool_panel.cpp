@@ -28,7 +28,7 @@ void toolPalette(SculptApp& app)
     BrushOptions& b = app.brush();
     ToolBox& tools = app.tools();
     for (int i = 0; i < int(std::size(kTools)); ++i) {
-        const bool current = b.tool == kTools[i].tool && tools.isCurrent(tools.sculpt());
+        const bool current = b.tool == kTools[i].tool && tools.isCurrent(tools.get<SculptTool>());
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         if (ImGui::Button(app.commands().row(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
@@ -47,8 +47,8 @@ void toolPalette(SculptApp& app)
                                      {CutGesture::Shape::Box, true, Command::ToolBoxMask}};
     for (int i = 0; i < int(std::size(kGestures)); ++i) {
         const Gesture& g = kGestures[i];
-        const bool current = tools.isCurrent(tools.gesture()) && tools.gesture().shape() == g.shape &&
-                             tools.gesture().masks() == g.masks;
+        const bool current = tools.isCurrent(tools.get<GestureTool>()) && tools.get<GestureTool>().shape() == g.shape &&
+                             tools.get<GestureTool>().masks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         // Three cuts to a row, the two masks (longer names) on one of their own.
         if (ImGui::Button(app.commands().row(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
