@@ -146,13 +146,20 @@ Stroke parseStroke(const json& j, const std::string& where, ParseContext& contex
 }
 
 /// A whole number from `least` to `most` in field `key`.
+/// `value`, named `what` ("field 'times'"), as a whole number from `least` to `most`.
+std::size_t wholeNumberOf(const json& value, const std::string& what, double least, double most,
+                          const std::string& where)
+{
+    const double number = value.is_number() ? value.get<double>() : -1.0;
+    if (!(number >= least && number <= most) || number != std::floor(number))
+        throw InputError(where + ": " + what + " must be a whole number from " + std::to_string(int(least)) + " to " +
+                         std::to_string(int(most)) + " (got " + value.dump() + ")");
+    return std::size_t(number);
+}
+
 std::size_t wholeNumber(const json& j, const char* key, double least, double most, const std::string& where)
 {
-    const double value = number(j, key, where);
-    if (!(value >= least && value <= most) || value != std::floor(value))
-        throw InputError(where + ": field '" + key + "' must be a whole number from " + std::to_string(int(least)) +
-                         " to " + std::to_string(int(most)) + " (got " + j[key].dump() + ")");
-    return std::size_t(value);
+    return wholeNumberOf(field(j, key, where), std::string("field '") + key + "'", least, most, where);
 }
 
 ScriptEvent parseMaskEvent(const json& j, const std::string& where)
@@ -321,7 +328,8 @@ ScriptEvent parsePieceEvent(const json& j, const std::string& where)
             if (!pushed.is_array() || pushed.size() > std::size_t(kMaxPieceIndex))
                 throw InputError(where + ": field 'push' must be an array of piece indices");
             for (std::size_t i = 0; i < pushed.size(); ++i)
-                event.pushed.push_back(pieceIndex(json{{"push", pushed[i]}}, "push", where));
+                event.pushed.push_back(
+                    wholeNumberOf(pushed[i], "field 'push[" + std::to_string(i) + "]'", 0.0, kMaxPieceIndex, where));
         }
         return event;
     }
