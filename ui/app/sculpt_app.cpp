@@ -10,9 +10,6 @@
 
 #include <imgui.h>
 #include <vtkRenderer.h>
-#include <vtk_glew.h>  // the OpenGL calls made here, as VTK loads them (no other GL header)
-
-#include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -36,7 +33,7 @@ std::unique_ptr<Document> openOrCreate(const fs::path& path, const std::string& 
 }  // namespace
 
 SculptApp::SculptApp(Window& window, AppOptions options)
-    : mWindow(window), mOptions(std::move(options)),
+    : mWindow(window), mOptions(std::move(options)), mGui(window.draws()),
       mView(window.width(), window.height(), window.draws(), mOptions.chunkBlocks),
       mAutosave(mOptions.stateDir, mOptions.autosaveSeconds), mRecent(mOptions.stateDir), mTools(*this)
 {
@@ -57,31 +54,13 @@ SculptApp::SculptApp(Window& window, AppOptions options)
     mTools.addCommands(mCommands);
     addCommands();
 
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // the same layout on every start (and in every test)
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().WindowRounding = 4.f;
-    ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 0.88f;
-    setUpImGuiKeys();
-    if (mWindow.draws()) {
-        ImGui_ImplOpenGL3_Init("#version 150");
-    } else {  // what the renderer's set-up would do: the panels lay out text in the font
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        ImGui::GetIO().Fonts->GetTexDataAsAlpha8(&pixels, &width, &height);
-    }
     mWindow.setListener([this](const InputEvent& e) {
         if (!mPlayer) handle(e);
         else if (e.type == EventType::Resize) mView.viewport().resize(e.width, e.height);  // the replay's own resize
     });
 }
 
-SculptApp::~SculptApp()
-{
-    mWindow.setListener({});
-    if (mWindow.draws()) ImGui_ImplOpenGL3_Shutdown();
-    ImGui::DestroyContext();
-}
+SculptApp::~SculptApp() { mWindow.setListener({}); }
 
 void SculptApp::setDocument(std::unique_ptr<Document> document, bool frameIt)
 {
@@ -157,16 +136,10 @@ void SculptApp::frame()
     Viewport& viewport = mView.viewport();
     viewport.renderer()->ResetCameraClippingRange();
     viewport.render();
-    if (mWindow.draws()) ImGui_ImplOpenGL3_NewFrame();
-    beginImGuiFrame(viewport.width(), viewport.height(), now - mLastFrame);
-    ImGui::NewFrame();
+    mGui.beginFrame(viewport.width(), viewport.height(), now - mLastFrame);
     drawPanels();
     mItemActive = ImGui::IsAnyItemActive();
-    ImGui::Render();
-    if (mWindow.draws()) {
-        glViewport(0, 0, viewport.width(), viewport.height());
-        ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    }
+    mGui.endFrame(viewport.width(), viewport.height());
     for (const fs::path& path : mPendingScreenshots) writeScreenshot(path);
     // A report's own checksum and whole-model figures would weigh on the frames it reports next.
     const bool reporting = !mPendingReports.empty();

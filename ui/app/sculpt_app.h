@@ -7,6 +7,7 @@
 #include "core/primitives/skeleton.h"
 #include "sculpt/session/document.h"
 #include "sculpt/session/model_filter.h"
+#include "ui/app/gui_context.h"
 #include "ui/commands/command_registry.h"
 #include "ui/document/autosave.h"
 #include "ui/document/file_listing.h"
@@ -284,6 +285,7 @@ private:
 
     Window& mWindow;
     AppOptions mOptions;
+    GuiContext mGui;  // before the parts whose panels it lays out, gone after them
     DocumentView mView;
     Autosave mAutosave;
     RecentFiles mRecent;

@@ -1,0 +1,26 @@
+#pragma once
+/// @file gui_context.h
+/// @brief Dear ImGui's context for the window's panels: the same layout on every start, the keys
+///        mapped, and its OpenGL renderer when the window draws (a headless window only lays the
+///        panels out). One frame at a time.
+
+namespace sculpt::ui {
+
+class GuiContext {
+public:
+    /// `draws`: the window has a current OpenGL 3.2 context to draw the panels into.
+    explicit GuiContext(bool draws);
+    ~GuiContext();
+    GuiContext(const GuiContext&) = delete;
+    GuiContext& operator=(const GuiContext&) = delete;
+
+    /// Starts a frame of `width` x `height` pixels, `deltaSeconds` after the last: panels draw now.
+    void beginFrame(int width, int height, double deltaSeconds);
+    /// Ends the frame, drawing the panels over the view (if the window draws).
+    void endFrame(int width, int height);
+
+private:
+    bool mDraws;
+};
+
+}  // namespace sculpt::ui
