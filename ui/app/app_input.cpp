@@ -46,7 +46,7 @@ void SculptApp::handle(const InputEvent& event)
     case EventType::Key: routeKey(event); break;
     case EventType::Text: break;
     case EventType::WaitForJob:
-        if (holdsReplay()) mWaitingSince = mWindow.time();
+        if (mPlayer && holdsReplay()) mPlayer->hold(mWindow.time());
         break;
     case EventType::Fault: raiseFault(event.text); break;
     default: routeMouse(event); break;

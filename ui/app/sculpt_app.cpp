@@ -78,7 +78,7 @@ void SculptApp::showPieces()
     mRemeshedAtSync = mDocument->session().remeshedBlocks();
 }
 
-double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayStart + event.time : event.time; }
+double SculptApp::arrival(const InputEvent& event) const { return mPlayer ? mPlayer->arrival(event) : event.time; }
 
 bool SculptApp::modalOpen() const
 {
@@ -269,19 +269,15 @@ void SculptApp::autosaveNow()
 
 void SculptApp::loopOnce(bool& replayDone)
 {
-    if (mWaitingSince >= 0.0 && !holdsReplay()) {  // the replay resumes, later events as far apart as recorded
-        mPlayStart += mWindow.time() - mWaitingSince;
-        mWaitingSince = -1.0;
-    }
-    const bool waiting = mWaitingSince >= 0.0;  // for a job or playback (wait event): frames go on
-    const bool replaying = mPlayer && (!mPlayer->finished() || waiting);
+    if (mPlayer && !holdsReplay()) mPlayer->resume(mWindow.time());  // a wait event's job ended
+    const bool replaying = mPlayer && !mPlayer->finished();
     if (replaying) {
-        for (const InputEvent& event :
-             waiting ? std::vector<InputEvent>{} : mPlayer->take(mWindow.time() - mPlayStart)) {
+        for (const InputEvent& event : mPlayer->take(mWindow.time())) {
             if (event.type == EventType::Resize) mWindow.resize(event.width, event.height);  // as a user would
             handle(event);
         }
-        mWindow.pollEvents(waiting ? inputWait() : 0.0);
+        // Held for a job or playback (wait event): frames go on, at the job's pace.
+        mWindow.pollEvents(mPlayer->held() ? inputWait() : 0.0);
     } else {
         if (mPlayer && !replayDone) {
             replayDone = true;
@@ -320,7 +316,7 @@ int SculptApp::run()
     }
     if (!mOptions.strokes.empty()) replayStrokes();
     if (!mPlayer && scripted) finishReplay();
-    mPlayStart = mWindow.time();
+    if (mPlayer) mPlayer->start(mWindow.time());
     bool replayDone = false;
     while (!mQuit) {
         try {

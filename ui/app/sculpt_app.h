@@ -305,7 +305,6 @@ private:
     double mLastEventArrival = 0.0;             // when the latest input was due (its replay time, if replayed)
     double mPreviewPendingSince = -1.0;         // a mode's settings changed then, its preview not yet on screen
     std::string mLastJob;                       // how the last job ended: "finished", "cancelled", "failed"
-    double mWaitingSince = -1.0;                // a replay waiting for the job (wait event): since when
     std::vector<InputEvent> mRecording;
 
     // Pointer state.
@@ -321,7 +320,7 @@ private:
     // Frame bookkeeping.
     bool mQuit = false;
     int mExitStatus = 0;
-    double mLastFrame = 0.0, mPlayStart = -1.0, mLastInput = 0.0;
+    double mLastFrame = 0.0, mLastInput = 0.0;
     std::size_t mRemeshedAtSync = 0, mLastRemeshed = 0;
     std::uint64_t mReportVersion = 0;
     /// Figures for reports, since the previous one: frame times, event-to-screen latencies,

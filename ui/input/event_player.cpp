@@ -8,14 +8,21 @@ bool endsFrame(EventType type) { return type != EventType::MouseMove && type != 
 
 }  // namespace
 
-std::vector<InputEvent> EventPlayer::take(double elapsed)
+std::vector<InputEvent> EventPlayer::take(double now)
 {
     std::vector<InputEvent> batch;
-    while (mNext < mEvents.size() && mEvents[mNext].time <= elapsed) {
+    while (!held() && mNext < mEvents.size() && mEvents[mNext].time <= now - mStart) {
         batch.push_back(mEvents[mNext++]);
         if (endsFrame(batch.back().type)) break;
     }
     return batch;
+}
+
+void EventPlayer::resume(double now)
+{
+    if (!held()) return;
+    mStart += now - mHeldSince;
+    mHeldSince = -1.0;
 }
 
 }  // namespace sculpt::ui
