@@ -42,15 +42,18 @@ void PiecesTool::addCommands(CommandRegistry& registry, ToolBox& box)
 {
     const auto active = [this] { return mHost.document().activePiece(); };
     const auto idle = [this] { return mHost.waitReason(); };
-    const auto inPiecesMode = [this, &box] {
-        if (!mHost.waitReason().empty()) return mHost.waitReason();
-        return box.isCurrent(*this) ? std::string() : std::string("Tab first: G, R and S move pieces in pieces mode");
-    };
-    const auto several = [this](const char* why) {
-        return [this, why] {
-            if (!mHost.waitReason().empty()) return mHost.waitReason();
-            return mHost.document().pieces().size() > 1 ? std::string() : std::string(why);
+    // A rule: why an edit must wait, else what `rule` says.
+    const auto idleAnd = [this](auto rule) {
+        return [this, rule] {
+            const std::string wait = mHost.waitReason();
+            return wait.empty() ? rule() : wait;
         };
+    };
+    const auto inPiecesMode = idleAnd([this, &box] {
+        return box.isCurrent(*this) ? std::string() : std::string("Tab first: G, R and S move pieces in pieces mode");
+    });
+    const auto several = [this, idleAnd](const char* why) {
+        return idleAnd([this, why] { return mHost.document().pieces().size() > 1 ? std::string() : std::string(why); });
     };
     registry.add({Command::PiecesMode,
                   "Pieces Mode",
@@ -103,13 +106,12 @@ void PiecesTool::addCommands(CommandRegistry& registry, ToolBox& box)
                   "Apply Move",
                   "Resamples the piece's voxels where it stands (a job): its placement becomes the identity",
                   {{GLFW_KEY_A, kControl}},
-                  [this] {
-                      if (!mHost.waitReason().empty()) return mHost.waitReason();
+                  idleAnd([this] {
                       const Document& document = mHost.document();
                       return document.pieces()[document.activePiece()].look.placement == openvdb::Mat4d::identity()
                                  ? std::string("the piece has not been moved: nothing to apply")
                                  : std::string();
-                  },
+                  }),
                   [this, active] { applyPlacement(active()); },
                   Scope::Pieces});
     registry.add(
