@@ -2,7 +2,8 @@
 # Checks the dependency rules of ARCHITECTURE.md on the includes (a CTest entry runs this): each
 # folder of core/ includes only the folders it may use, core/ nothing of sculpt/ or ui/, only
 # core/scan and core/io reach VTK, the session nothing of the command line; in ui/ each folder
-# includes only the ui/ folders it may use, nothing of the command line, and VTK, ImGui and GLFW
+# includes only the ui/ folders it may use (nothing below ui/app includes it: panels, modes and
+# tools see the window through their hosts), nothing of the command line, and VTK, ImGui and GLFW
 # stay in the folders that own them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -32,11 +33,13 @@ declare -A uiAllowed=(
   [jobs]=""
   [status]="view"
   [sculpting]="view document input"
-  [scene]="sculpting view"
-  [tools]="commands document input jobs sculpting view"
-  [panels]="app commands document modes tools"
-  [modes]="app commands document jobs panels sculpting view"
-  [app]="app commands document input jobs modes panels scene sculpting status tools view window"
+  [workspace]="commands document input jobs status"
+  [files]="commands document jobs status workspace"
+  [scene]="document input sculpting view"
+  [tools]="commands document input jobs scene sculpting status view workspace"
+  [panels]="commands document files input jobs scene sculpting status tools view workspace"
+  [modes]="commands document files input jobs panels scene sculpting status tools view workspace"
+  [app]="app commands document files input jobs modes panels scene sculpting status tools view window workspace"
 )
 failures=0
 fail() { echo "check-layers: $*"; failures=$((failures + 1)); }
@@ -62,7 +65,10 @@ grep -rlE '#include <vtk' core | grep -vE '^core/(scan|io)/' && fail "VTK includ
 grep -rlE '#include ("sculpt/cli/|"ui/|<CLI/)' sculpt/session && fail "the session includes the command line or the UI"
 grep -rlE '#include "sculpt/cli/' ui && fail "ui/ includes the command line"
 grep -rlE '#include <vtk' ui | grep -vE '^ui/(view|app)/' && fail "VTK included outside ui/view and ui/app"
-grep -rlE '#include <(imgui|backends/)' ui | grep -vE '^ui/(panels|tools|app|input)/' && fail "ImGui outside ui/panels, ui/tools, ui/input, ui/app"
-grep -rlE '#include <GLFW' ui | grep -vE '^ui/(window|input|app|panels|tools)/' && fail "GLFW outside ui/window, ui/input, ui/app, ui/panels, ui/tools"
+grep -rlE '#include <(imgui|backends/)' ui | grep -vE '^ui/(panels|modes|tools|app|input)/' &&
+  fail "ImGui outside ui/panels, ui/modes, ui/tools, ui/input, ui/app"
+# GLFW's key codes name the commands' keys where they are registered.
+grep -rlE '#include <GLFW' ui | grep -vE '^ui/(window|input|app|panels|modes|tools|workspace)/' &&
+  fail "GLFW outside ui/window, ui/input, ui/app and where commands are registered"
 if ((failures > 0)); then exit 1; fi
 echo "check-layers: every include follows ARCHITECTURE.md"

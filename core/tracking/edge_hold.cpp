@@ -1,5 +1,8 @@
 #include "core/tracking/edge_hold.h"
 
+#include "core/tracking/mesh_adjacency.h"
+#include "core/tracking/tracked_mesh_quality.h"
+
 #include <algorithm>
 
 namespace sculpt {

@@ -18,6 +18,7 @@
 /// cut's fresh fans, are left to the remesher (holding them folds triangles).
 
 #include "core/tracking/edge_remesher.h"
+#include "core/tracking/mesh_adjacency.h"
 
 namespace sculpt {
 

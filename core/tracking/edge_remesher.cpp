@@ -1,5 +1,7 @@
 #include "core/tracking/edge_remesher.h"
 
+#include "core/tracking/mesh_adjacency.h"
+
 #include <algorithm>
 #include <cstdlib>
 #include <tuple>

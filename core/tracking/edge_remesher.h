@@ -15,6 +15,8 @@
 /// longest split and the shortest collapsed first.
 /// Seeding also flips edges towards valence 6 (never while tracking: a flip changes connectivity).
 
+#include "core/tracking/mesh_adjacency.h"
+#include "core/tracking/mesh_edit.h"
 #include "core/tracking/tracked_mesh.h"
 
 #include <unordered_map>

@@ -2,6 +2,7 @@
 
 #include "core/mesh/incremental_mesher.h"
 #include "core/tracking/edge_hold.h"
+#include "core/tracking/mesh_adjacency.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

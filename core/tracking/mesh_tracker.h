@@ -17,6 +17,7 @@
 #include "core/field/field_image.h"
 #include "core/tracking/corotated_triangles.h"
 #include "core/tracking/edge_remesher.h"
+#include "core/tracking/mesh_edit.h"
 #include "core/tracking/surface_projection.h"
 #include "core/tracking/topology_surgery.h"
 

@@ -1,5 +1,6 @@
 #include "core/tracking/topology_surgery.h"
 
+#include "core/tracking/mesh_adjacency.h"
 #include "core/tracking/surface_projection.h"
 
 #include <algorithm>

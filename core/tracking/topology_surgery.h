@@ -25,6 +25,7 @@
 /// long: project, relax and remesh after.
 
 #include "core/field/field_image.h"
+#include "core/mesh/surface_topology.h"
 #include "core/tracking/tracked_mesh.h"
 
 namespace sculpt {

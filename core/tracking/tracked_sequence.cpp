@@ -1,5 +1,7 @@
 #include "core/tracking/tracked_sequence.h"
 
+#include "core/tracking/mesh_adjacency.h"
+
 #include <algorithm>
 #include <optional>
 #include <unordered_map>

@@ -18,6 +18,7 @@
 /// only the segment has (its id counts down from kFirstExportOnlyId, far above the tracker's).
 
 #include "core/mesh/triangle_mesh.h"
+#include "core/tracking/mesh_edit.h"
 #include "core/tracking/tracked_mesh.h"
 
 #include <array>

@@ -5,6 +5,7 @@
 ///        apart than the band), kept at every frame with its quality.
 
 #include "core/tracking/mesh_tracker.h"
+#include "core/tracking/tracked_mesh_quality.h"
 #include "core/tracking/tracked_sequence.h"
 
 #include <optional>

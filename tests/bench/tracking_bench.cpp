@@ -19,6 +19,7 @@
 #include "core/motion/morph.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/tracking/mesh_tracker.h"
+#include "core/tracking/tracked_mesh_quality.h"
 #include "core/tracking/tracked_sequence.h"
 #include "tests/support/cgal_data.h"
 

@@ -89,9 +89,9 @@ TEST_F(CommandTable, ADialogsKeysAreItsAnswersAndTheViewsKeysStayTheTools)
 
 TEST_F(CommandTable, APanelsButtonIsACommandWhoseRuleGreysItOut)
 {
-    EXPECT_EQ(mApp.whyNot(Command::DeletePiece), "a document keeps at least one piece: this is its last");
-    EXPECT_EQ(mApp.whyNot(Command::SoloPiece), "");
-    EXPECT_EQ(mApp.whyNot(Command::MovePiece), "Tab first: G, R and S move pieces in pieces mode");
+    EXPECT_EQ(mApp.commands().whyNot(Command::DeletePiece), "a document keeps at least one piece: this is its last");
+    EXPECT_EQ(mApp.commands().whyNot(Command::SoloPiece), "");
+    EXPECT_EQ(mApp.commands().whyNot(Command::MovePiece), "Tab first: G, R and S move pieces in pieces mode");
 }
 
 CommandRow rowOf(Command command, const char* label, std::vector<Chord> chords, Scope scope = Scope::View)

@@ -41,6 +41,7 @@ void GuiContext::beginFrame(int width, int height, double deltaSeconds)
 
 void GuiContext::endFrame(int width, int height)
 {
+    mItemActive = ImGui::IsAnyItemActive();
     ImGui::Render();
     if (!mDraws) return;
     glViewport(0, 0, width, height);

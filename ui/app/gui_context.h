@@ -18,9 +18,14 @@ public:
     void beginFrame(int width, int height, double deltaSeconds);
     /// Ends the frame, drawing the panels over the view (if the window draws).
     void endFrame(int width, int height);
+    /// An item (a text field being edited, a slider held) was active when the last frame ended:
+    /// it takes the keys. ImGui's WantTextInput lags a frame (it still claims keys for a prompt
+    /// just closed).
+    bool itemActive() const { return mItemActive; }
 
 private:
     bool mDraws;
+    bool mItemActive = false;
 };
 
 }  // namespace sculpt::ui

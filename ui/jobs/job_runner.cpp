@@ -2,6 +2,8 @@
 
 #include "core/base/errors.h"
 
+#include <nlohmann/json.hpp>
+
 namespace sculpt::ui {
 
 void JobRunner::cancel()
@@ -14,14 +16,25 @@ JobRunner::Outcome JobRunner::poll()
     if (!mJob || !mJob->finished()) return {};
     const std::unique_ptr<BackgroundJob> job = std::move(mJob);
     const std::function<void()> land = std::move(mLand);
-    if (job->cancelled()) return {Ending::Cancelled, job->label(), {}};
-    if (!job->succeeded()) return {Ending::Failed, job->label(), job->error()};
-    try {
-        land();
-    } catch (const InputError& e) {  // the result does not fit (a grid too large to mesh)
-        return {Ending::Failed, job->label(), e.what()};
+    Outcome outcome{Ending::Finished, job->label(), {}};
+    if (job->cancelled()) outcome.ending = Ending::Cancelled;
+    else if (!job->succeeded()) outcome = {Ending::Failed, job->label(), job->error()};
+    else {
+        try {
+            land();
+        } catch (const InputError& e) {  // the result does not fit (a grid too large to mesh)
+            outcome = {Ending::Failed, job->label(), e.what()};
+        }
     }
-    return {Ending::Finished, job->label(), {}};
+    mLastEnding = outcome.ending;
+    return outcome;
+}
+
+void JobRunner::report(nlohmann::json& out) const
+{
+    out["job"] = mJob ? nlohmann::json{{"label", mJob->label()}, {"progress", mJob->progress()}} : nlohmann::json();
+    constexpr const char* kEndings[] = {"", "finished", "cancelled", "failed"};
+    out["last_job"] = kEndings[int(mLastEnding)];
 }
 
 }  // namespace sculpt::ui

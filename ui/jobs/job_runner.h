@@ -6,6 +6,8 @@
 
 #include "ui/jobs/background_job.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -34,8 +36,11 @@ public:
     void cancel();
     /// If the job has finished: lands its result (when it succeeded) and says how it ended.
     Outcome poll();
+    /// The job running (its label and progress) and how the last one ended, for the window's report.
+    void report(nlohmann::json& out) const;
 
 private:
+    Ending mLastEnding = Ending::Running;  // Running: none has ended yet
     std::unique_ptr<BackgroundJob> mJob;
     std::function<void()> mLand;  // hands the finished work's result to its landing
 };

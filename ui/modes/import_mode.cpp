@@ -4,12 +4,16 @@
 #include "core/field/csg_combine.h"
 #include "sculpt/session/document.h"
 #include "sculpt/session/shape_import.h"
-#include "ui/modes/mode_host.h"
+#include "ui/input/input_event.h"
+#include "ui/modes/mode_slot.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
+#include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 
 namespace sculpt::ui {
 
@@ -27,7 +31,62 @@ std::string importSummary(const ImportReport& report)
     return text;
 }
 
+/// The scan or mesh at `path` read for the Import panel, with a first preview.
+ImportDraft readForImport(const std::filesystem::path& path)
+{
+    auto file = std::make_shared<ImportPreview>(path);
+    // Sensible defaults for a printable model: the largest piece only, at the file's resolution.
+    ImportOptions defaults;
+    defaults.largestComponent = true;
+    const auto start = std::chrono::steady_clock::now();
+    FieldImage first = file->surface(defaults);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return ImportDraft(file, std::move(first), ms, defaults);
+}
+
+/// Reads the scan or mesh at `path` as a job, then opens the Import panel on it, framed.
+void startRead(ModeSlot& slot, const std::filesystem::path& path)
+{
+    Workspace& work = slot.host().workspace();
+    if (work.busy()) return;
+    work.autosaveNow();
+    work.startJob<ImportDraft>(
+        "read " + path.filename().string(), [path](const Progress&) { return readForImport(path); },
+        [&slot](ImportDraft draft) {
+            const openvdb::CoordBBox box = draft.preview()->grid().evalActiveVoxelBoundingBox();
+            const auto& xform = draft.preview()->grid().transform();
+            const openvdb::Vec3d lo = xform.indexToWorld(box.min()), hi = xform.indexToWorld(box.max());
+            DocumentView& view = slot.host().view();
+            slot.open(std::make_unique<ImportMode>(view.viewport().renderer(), std::move(draft)));
+            view.camera().frame({lo.x(), lo.y(), lo.z()}, {hi.x(), hi.y(), hi.z()});
+        });
+}
+
 }  // namespace
+
+void ImportMode::addCommands(CommandRegistry& commands, ModeSlot& slot)
+{
+    Workspace& work = slot.host().workspace();
+    commands.add({Command::Import,
+                  "Import...",
+                  "A scan (NIfTI, NRRD, MetaImage, DICOM) or a mesh: preview the surface, then a new document, or "
+                  "union/difference with this one",
+                  {{GLFW_KEY_I, kControl}},
+                  [&work] { return work.waitReason(); },
+                  [&slot] {
+                      slot.host().dialogs().ask(Prompt::Kind::Import, {},
+                                                [&slot](const std::filesystem::path& path) { startRead(slot, path); });
+                  }});
+    commands.add({Command::ApplyImport,
+                  "Apply Import",
+                  "Import with the panel's settings (a job)",
+                  {},
+                  [&slot] {
+                      return slot.as<ImportMode>() ? std::string()
+                                                   : std::string("no import is open: File > Import (Ctrl+I) opens one");
+                  },
+                  [&slot] { slot.accept(); }});
+}
 
 ImportMode::ImportMode(vtkRenderer* scene, ImportDraft draft)
     : mDraft(std::move(draft)), mPreview(scene, ShapeStyle::preview())
@@ -56,20 +115,21 @@ void ImportMode::step(int direction)
     mDraft.options.iso = std::clamp(mDraft.iso() + direction * kIsoStep * (hi - lo), lo, hi);
 }
 
-bool ImportMode::accept(ModeHost& host)
+bool ImportMode::accept(PanelHost& host)
 {
     const ImportDraft::Result result = mDraft.result;
     const bool replaces = result == ImportDraft::Result::NewDocument;
-    if (replaces && !host.guardUnsaved(Command::Confirm)) return false;
-    host.autosaveNow();
+    if (replaces && !host.files().guardUnsaved(Command::Confirm)) return false;
+    Workspace& work = host.workspace();
+    work.autosaveNow();
     ImportOptions options = mDraft.options;
-    if (!replaces) options.voxelSize = host.document().session().field().voxelSize();  // the document's lattice
+    if (!replaces) options.voxelSize = work.document().session().field().voxelSize();  // the document's lattice
     const std::filesystem::path path = mDraft.file().path();
     auto report = std::make_shared<ImportReport>();
     if (replaces && mDraft.labelPieces) {  // a piece per label, each meshed on the job's thread
-        host.startDocument(
+        work.startDocument(
             "import " + path.filename().string() + " as pieces",
-            [path, options, report](const Progress& p, const ModeHost::FieldReady& ready) {
+            [path, options, report](const Progress& p, const Workspace::FieldReady& ready) {
                 std::vector<Piece> pieces = importLabelPieces(path, options, *report, scaledProgress(p, 0.0, 0.7));
                 ready(pieces.front().field);
                 return std::make_unique<Document>(std::move(pieces), std::filesystem::path(),
@@ -81,9 +141,9 @@ bool ImportMode::accept(ModeHost& host)
         return true;
     }
     if (replaces) {  // the new document, its mesh too, made on the job's thread
-        host.startDocument(
+        work.startDocument(
             "import " + path.filename().string(),
-            [path, options, report](const Progress& p, const ModeHost::FieldReady& ready) {
+            [path, options, report](const Progress& p, const Workspace::FieldReady& ready) {
                 FieldImage field = importShape(path, options, *report, scaledProgress(p, 0.0, 0.7));
                 ready(field);
                 return std::make_unique<Document>(std::move(field), std::filesystem::path(),
@@ -94,7 +154,7 @@ bool ImportMode::accept(ModeHost& host)
     }
     const CsgOperation operation =
         result == ImportDraft::Result::Union ? CsgOperation::Union : CsgOperation::Difference;
-    host.startEdit({"import " + std::string(importResultName(result)) + " " + path.filename().string(),
+    work.startEdit({"import " + std::string(importResultName(result)) + " " + path.filename().string(),
                     [path, options, operation, report](FieldImage model, const Progress& p) {
                         combine(model, importShape(path, options, *report, p), operation);
                         return model;
@@ -102,8 +162,6 @@ bool ImportMode::accept(ModeHost& host)
                     [report] { return importSummary(*report); }});
     return true;
 }
-
-void ImportMode::drawPanel(SculptApp& app) { drawImportPanel(app, mDraft); }
 
 nlohmann::json ImportMode::report()
 {

@@ -10,9 +10,14 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ModeSlot;
+
 class ImportMode final : public Mode {
 public:
     ImportMode(vtkRenderer* scene, ImportDraft draft);
+    /// File > Import (the file read as a job, then this mode opened in `slot`) and Apply Import.
+    static void addCommands(CommandRegistry& commands, ModeSlot& slot);
 
     ImportDraft& draft() { return mDraft; }
 
@@ -22,8 +27,8 @@ public:
     bool sync(double now) override;
     bool hidesDocument() const override { return mDraft.result == ImportDraft::Result::NewDocument; }
     void step(int direction) override;
-    bool accept(ModeHost& host) override;
-    void drawPanel(SculptApp& app) override;
+    bool accept(PanelHost& host) override;
+    void drawPanel(PanelHost& host) override;
     nlohmann::json report() override;
 
 private:

@@ -2,8 +2,9 @@
 /// @file mode.h
 /// @brief A panel that owns the view until it is accepted (Enter) or cancelled (Esc): an
 ///        import's preview, primitives being placed, a morph's frames. The window holds at most
-///        one; what waits for it, the keys, the frame and the report ask the mode, so a new mode
-///        is one class in this folder and no change to SculptApp.
+///        one (ModeSlot); what waits for it, the keys, the frame and the report ask the mode, and
+///        it draws its own panel and adds its own commands, so a new mode is one class in this
+///        folder and a line in ModeSlot::addCommands.
 ///
 /// A mode owns what it puts on screen: dropping it (Esc, or once accepted) takes it off.
 
@@ -17,8 +18,7 @@ class IncrementalMesher;
 
 namespace sculpt::ui {
 
-class ModeHost;
-class SculptApp;
+class PanelHost;
 struct SurfaceHit;
 
 class Mode {
@@ -49,9 +49,9 @@ public:
 
     /// Enter: hands its result to the host (a job, an edit). @return true once the mode is done
     /// (false: it waits, for instance for the answer to "save changes?").
-    virtual bool accept(ModeHost& host) = 0;
+    virtual bool accept(PanelHost& host) = 0;
 
-    virtual void drawPanel(SculptApp& app) = 0;
+    virtual void drawPanel(PanelHost& host) = 0;
     virtual nlohmann::json report() = 0;
 };
 

@@ -11,8 +11,14 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ModeSlot;
+
 class MorphMode final : public Mode {
 public:
+    /// Morph To (the morph run as a job, then this mode opened in `slot`), Play, Keep, Export.
+    static void addCommands(CommandRegistry& commands, ModeSlot& slot);
+
     /// `label` names the morph ("morph to cat.vdb").
     MorphMode(vtkRenderer* scene, std::string label, MorphRun run);
 
@@ -28,8 +34,8 @@ public:
     bool showsBrush() const override { return false; }  // no brush on a frame
     bool holdsReplay() const override { return mFrames.playing(); }
     void step(int direction) override { mFrames.show(mFrames.shown() - direction); }
-    bool accept(ModeHost& host) override;
-    void drawPanel(SculptApp& app) override;
+    bool accept(PanelHost& host) override;
+    void drawPanel(PanelHost& host) override;
     nlohmann::json report() override;
 
 private:

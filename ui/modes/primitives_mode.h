@@ -11,10 +11,19 @@
 
 namespace sculpt::ui {
 
+class CommandRegistry;
+class ModeSlot;
+class PanelHost;
 class SurfaceLook;
 
 class PrimitivesMode final : public Mode {
 public:
+    /// Add Primitive (opening this mode in `slot`), Remove, Bake, Load and Save Scene.
+    static void addCommands(CommandRegistry& commands, ModeSlot& slot);
+    /// Adds a primitive of `type` to `draft` where the pointer is on the surface (else at the
+    /// view's centre), as large as the brush.
+    static void addAtPointer(PanelHost& host, PrimitiveDraft& draft, SkeletonType type);
+
     /// Previews on `voxels` (the document's lattice); the clay is see-through while it is open.
     PrimitivesMode(vtkRenderer* scene, vtkRenderer* overlay, SurfaceLook& look,
                    openvdb::math::Transform::ConstPtr voxels);
@@ -28,8 +37,8 @@ public:
     bool sync(double now) override;
     bool press(const SurfaceHit& hit) override;
     void drag(const SurfaceHit& hit) override;
-    bool accept(ModeHost& host) override;
-    void drawPanel(SculptApp& app) override;
+    bool accept(PanelHost& host) override;
+    void drawPanel(PanelHost& host) override;
     nlohmann::json report() override;
 
 private:

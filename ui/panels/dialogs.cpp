@@ -1,6 +1,4 @@
-#include "core/motion/morph_verdict.h"
-#include "ui/app/sculpt_app.h"
-#include "ui/modes/morph_mode.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <GLFW/glfw3.h>
@@ -27,20 +25,20 @@ bool beginDialog(const char* title)
 bool pressed(int key) { return ImGui::IsKeyPressed(key, false); }
 
 /// A button for a dialog's answer, "Save (S)": its key reaches the command through the table.
-bool answerButton(SculptApp& app, Command command, const char* label = nullptr)
+bool answerButton(PanelHost& host, Command command, const char* label = nullptr)
 {
-    const std::string keys = app.commands().shortcutText(command);
+    const std::string keys = host.commands().shortcutText(command);
     const std::string text =
-        std::string(label ? label : app.commands().row(command).label) + " (" + keys.substr(0, keys.find(", ")) + ")";
+        std::string(label ? label : host.commands().row(command).label) + " (" + keys.substr(0, keys.find(", ")) + ")";
     const bool clicked = ImGui::Button(text.c_str());
-    if (clicked) app.execute(command);
+    if (clicked) host.execute(command);
     return clicked;
 }
 
 /// What each prompt's file chooser lists.
-FileKinds kindsOf(Dialogs::Prompt prompt)
+FileKinds kindsOf(Prompt::Kind prompt)
 {
-    using P = Dialogs::Prompt;
+    using P = Prompt::Kind;
     const std::vector<std::string> scans = {".nii", ".nii.gz", ".nrrd",   ".nhdr", ".mha",
                                             ".mhd", ".inr",    ".inr.gz", ".dcm"};
     const std::vector<std::string> meshes = {".obj", ".ply", ".stl", ".off"};
@@ -66,66 +64,66 @@ FileKinds kindsOf(Dialogs::Prompt prompt)
 /// "`okLabel` (Enter)" and "Cancel (Esc)" closing the dialog's window. `entered`: Enter ended the
 /// edit of one of its fields (the routed Enter waits for a field being edited: its text is
 /// complete only here).
-void okOrCancel(SculptApp& app, const char* okLabel, bool entered)
+void okOrCancel(PanelHost& host, const char* okLabel, bool entered)
 {
-    const bool ok = answerButton(app, Command::DialogConfirm, okLabel);
+    const bool ok = answerButton(host, Command::DialogConfirm, okLabel);
     ImGui::SameLine();
-    answerButton(app, Command::DialogCancel, "Cancel");
+    answerButton(host, Command::DialogCancel, "Cancel");
     ImGui::End();
-    if (entered && !ok && app.whyNot(Command::DialogConfirm).empty()) app.execute(Command::DialogConfirm);
+    if (entered && !ok && host.whyNot(Command::DialogConfirm).empty()) host.execute(Command::DialogConfirm);
 }
 
-void errorDialog(SculptApp& app)
+void errorDialog(PanelHost& host)
 {
     beginDialog("Error");
     ImGui::PushTextWrapPos(520.f);
-    ImGui::TextUnformatted(app.dialogs().error.c_str());
+    ImGui::TextUnformatted(host.notices().error().c_str());
     ImGui::PopTextWrapPos();
-    answerButton(app, Command::DialogConfirm);
+    answerButton(host, Command::DialogConfirm);
     ImGui::End();
 }
 
-void recoveryDialog(SculptApp& app)
+void recoveryDialog(PanelHost& host)
 {
     beginDialog("Recover unsaved work?");
     ImGui::Text("Sculpt did not close cleanly. An autosave newer than the document exists:");
-    ImGui::TextDisabled("%s", app.dialogs().recovery->string().c_str());
-    if (!answerButton(app, Command::AnswerRecover)) {
+    ImGui::TextDisabled("%s", host.files().offeringRecovery()->string().c_str());
+    if (!answerButton(host, Command::AnswerRecover)) {
         ImGui::SameLine();
-        answerButton(app, Command::AnswerDiscard);
+        answerButton(host, Command::AnswerDiscard);
     }
     ImGui::End();
 }
 
-void gridDialog(SculptApp& app)
+void gridDialog(PanelHost& host)
 {
-    const Dialogs::GridChoice choice = *app.dialogs().gridChoice;  // a copy: a button closes the dialog
+    const DocumentFiles::GridChoice choice = *host.files().askingGrid();  // a copy: a button closes the dialog
     beginDialog("Which level set?");
     ImGui::Text("%s holds several level sets and none is named 'surface'.", choice.file.filename().string().c_str());
     ImGui::Text("Choose the one to sculpt; the others are kept in the file when it is saved.");
-    for (std::size_t i = 0; i < choice.grids.size() && app.dialogs().gridChoice; ++i) {
-        if (i < 9) answerButton(app, Command(int(Command::ChooseGrid1) + int(i)), choice.grids[i].c_str());
-        else if (ImGui::Button(choice.grids[i].c_str())) app.openChosenGrid(choice.grids[i]);
+    for (std::size_t i = 0; i < choice.grids.size() && host.files().askingGrid(); ++i) {
+        if (i < 9) answerButton(host, Command(int(Command::ChooseGrid1) + int(i)), choice.grids[i].c_str());
+        else if (ImGui::Button(choice.grids[i].c_str())) host.files().chooseGrid(choice.grids[i]);
     }
-    answerButton(app, Command::DialogCancel, "Cancel");
+    answerButton(host, Command::DialogCancel, "Cancel");
     ImGui::End();
 }
 
-void unsavedDialog(SculptApp& app)
+void unsavedDialog(PanelHost& host)
 {
     beginDialog("Unsaved changes");
-    ImGui::Text("%s has unsaved changes. Save them first?", app.document().title().c_str());
-    if (answerButton(app, Command::AnswerSave)) return ImGui::End();
+    ImGui::Text("%s has unsaved changes. Save them first?", host.document().title().c_str());
+    if (answerButton(host, Command::AnswerSave)) return ImGui::End();
     ImGui::SameLine();
-    if (answerButton(app, Command::AnswerDiscard)) return ImGui::End();
+    if (answerButton(host, Command::AnswerDiscard)) return ImGui::End();
     ImGui::SameLine();
-    answerButton(app, Command::DialogCancel, "Cancel");
+    answerButton(host, Command::DialogCancel, "Cancel");
     ImGui::End();
 }
 
-void newDialog(SculptApp& app)
+void newDialog(PanelHost& host)
 {
-    Dialogs& d = app.dialogs();
+    Dialogs& d = host.dialogs();
     beginDialog("New document");
     int kind = int(d.newShape.kind);
     if (ImGui::Combo("shape", &kind, kShapeNames, int(std::size(kShapeNames)))) d.newShape.kind = NewShape::Kind(kind);
@@ -133,15 +131,15 @@ void newDialog(SculptApp& app)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Sphere radius, box half side or torus major radius (world units)");
     ImGui::InputDouble("voxel size", &d.newShape.voxelSize, 0.05, 0.5, "%.3g");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Smaller is finer and costs more memory");
-    okOrCancel(app, "Create", pressed(GLFW_KEY_ENTER));
+    okOrCancel(host, "Create", pressed(GLFW_KEY_ENTER));
 }
 
-void pathDialog(SculptApp& app, const char* title, const char* hint)
+void pathDialog(PanelHost& host, const char* title, const char* hint)
 {
-    Dialogs& d = app.dialogs();
+    Dialogs& d = host.dialogs();
     beginDialog(title);
     ImGui::TextDisabled("%s", hint);
-    okOrCancel(app, "OK", fileField(app, kindsOf(d.prompt), "##path"));
+    okOrCancel(host, "OK", fileField(host, kindsOf(d.prompt.kind), "##path"));
 }
 
 void hollowFields(ModelFilter& f)
@@ -167,14 +165,14 @@ void hollowFields(ModelFilter& f)
     f.up = openvdb::Vec3d(axis == 0, axis == 1, axis == 2);
 }
 
-void filterDialog(SculptApp& app)
+void filterDialog(PanelHost& host)
 {
-    Dialogs& d = app.dialogs();
+    Dialogs& d = host.dialogs();
     ModelFilter& f = d.filter;
     static const char* kTitles[] = {"Smooth Model", "Offset Model", "Hollow", "Remove Small Islands"};
     beginDialog(kTitles[int(f.kind)]);
-    if (d.focusField) ImGui::SetKeyboardFocusHere();
-    d.focusField = false;
+    if (d.prompt.focusField) ImGui::SetKeyboardFocusHere();
+    d.prompt.focusField = false;
     switch (f.kind) {
     case ModelFilter::Kind::Smooth:
         ImGui::InputInt("iterations", &f.iterations, 1, 10);
@@ -195,17 +193,17 @@ void filterDialog(SculptApp& app)
         break;
     }
     ImGui::TextDisabled("Runs as a job: the view stays live, Esc cancels, Ctrl+Z undoes it");
-    okOrCancel(app, "Run", pressed(GLFW_KEY_ENTER));
+    okOrCancel(host, "Run", pressed(GLFW_KEY_ENTER));
 }
 
-void morphDialog(SculptApp& app)
+void morphDialog(PanelHost& host)
 {
-    Dialogs& d = app.dialogs();
+    Dialogs& d = host.dialogs();
     MorphOptions& m = d.morph;
     beginDialog("Morph To");
     ImGui::TextDisabled(
         "The target: a .vdb document, a scan or a mesh (path, then Enter; Tab completes; the loaded target if any)");
-    const bool entered = fileField(app, kindsOf(d.prompt), "##target");
+    const bool entered = fileField(host, kindsOf(d.prompt.kind), "##target");
     ImGui::InputInt("frames", &m.frames, 1, 5);
     m.frames = std::clamp(m.frames, 2, 1000);
     ImGui::InputInt("max steps", &m.maxSteps, 100, 1000);
@@ -227,102 +225,59 @@ void morphDialog(SculptApp& app)
         m.toleranceVoxels = tolerance;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Converged once the surface is this close to the target's everywhere it resolves it");
-    okOrCancel(app, "Run", entered);
+    okOrCancel(host, "Run", entered);
 }
 
 }  // namespace
 
-/// The tracked mesh's line: the shown frame's quality, and the wireframe's switch.
-void trackedMeshLine(MorphMode& mode)
+void beginBottomPanel(const char* title, bool titleBar)
 {
-    const MorphTracking& tracking = *mode.frames().run().tracking;
-    const TrackedFrame& f = tracking.frames().at(std::size_t(mode.frames().shown()));
-    bool shown = mode.wire().shown();
-    if (ImGui::Checkbox("tracked mesh", &shown)) mode.wire().setShown(shown);
-    ImGui::SameLine();
-    const double e = tracking.edgeLength();
-    // A segment holds every vertex its frames have had (tracked_sequence.h); the quality is this frame's.
-    const std::vector<TrackedSegment>& segments = tracking.sequence().segments();
-    ImGui::TextDisabled("segment %zu of %zu, %zu vertices; this frame %zu, smallest angle %.1f deg, edges %.2f-%.2f e, "
-                        "%zu flagged",
-                        f.segment + 1, segments.size(), segments.at(f.segment).ids.size(), f.quality.vertices,
-                        f.quality.smallestAngle, f.quality.shortestEdge / e, f.quality.longestEdge / e, f.flagged);
-}
-
-void drawMorphPanel(SculptApp& app, MorphMode& mode)
-{
-    MorphFrames& frames = mode.frames();
     const ImVec2 size = ImGui::GetIO().DisplaySize;
     ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
-    ImGui::Begin("Morph", nullptr, kDialogFlags);
-    int shown = frames.shown();
-    ImGui::SetNextItemWidth(360.f);
-    if (ImGui::SliderInt("frame", &shown, 0, frames.count() - 1)) frames.show(shown);
-    const auto button = [&app](const char* label, Command command) {
-        if (ImGui::Button(label)) app.execute(command);
-        commandTooltip(app, command);
-        ImGui::SameLine();
-    };
-    button("<", Command::StepUp);
-    button(frames.playing() ? "Pause" : "Play", Command::MorphPlay);
-    button(">", Command::StepDown);
-    button("Keep frame", Command::MorphKeep);
-    button("Export frames...", Command::MorphExport);
-    if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
-    if (frames.run().tracking) trackedMeshLine(mode);
-    const MorphSummary& s = frames.run().summary;
-    const std::string verdict = morphVerdict(s, frames.shownField().voxelSize());
-    ImGui::PushTextWrapPos(560.f);
-    ImGui::TextDisabled("%d steps, final distance %.3g: %s", s.steps, s.finalDistanceWorld, verdict.c_str());
-    ImGui::PopTextWrapPos();
-    ImGui::End();
+    ImGui::Begin(title, nullptr, kDialogFlags | (titleBar ? 0 : ImGuiWindowFlags_NoTitleBar));
 }
 
-void drawJobPanel(SculptApp& app)
+void drawJobPanel(PanelHost& host)
 {
-    const BackgroundJob* job = app.job();
+    const BackgroundJob* job = host.workspace().jobs().job();
     if (!job) return;
-    const ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos(ImVec2(size.x * 0.5f, size.y - 48.f), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
-    ImGui::Begin("Job", nullptr, kDialogFlags | ImGuiWindowFlags_NoTitleBar);
+    beginBottomPanel("Job", false);
     ImGui::Text("%s%s", job->label().c_str(), job->cancelRequested() ? ": cancelling..." : "");
     ImGui::ProgressBar(float(job->progress()), ImVec2(320.f, 0.f));
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.execute(Command::Cancel);
+    if (ImGui::Button("Cancel (Esc)")) host.execute(Command::Cancel);
     ImGui::End();
 }
 
-void drawDialogs(SculptApp& app)
+void drawDialogs(PanelHost& host)
 {
-    Dialogs& d = app.dialogs();
-    if (!d.error.empty()) return errorDialog(app);
-    if (d.recovery) return recoveryDialog(app);
-    if (d.gridChoice) return gridDialog(app);
-    if (d.afterUnsaved) return unsavedDialog(app);
-    switch (d.prompt) {
-    case Dialogs::Prompt::New: return newDialog(app);
-    case Dialogs::Prompt::Open: return pathDialog(app, "Open", "A .vdb document (path, then Enter; Tab completes)");
-    case Dialogs::Prompt::SaveAs: return pathDialog(app, "Save As", "A .vdb file to write");
-    case Dialogs::Prompt::ExportMesh: return pathDialog(app, "Export Mesh", "A .ply, .obj or .stl file to write");
-    case Dialogs::Prompt::SaveStrokes:
-        return pathDialog(app, "Save Strokes", "A .json stroke script for `sculpt apply`");
-    case Dialogs::Prompt::SmoothModel:
-    case Dialogs::Prompt::OffsetModel:
-    case Dialogs::Prompt::HollowModel:
-    case Dialogs::Prompt::RemoveIslands: return filterDialog(app);
-    case Dialogs::Prompt::Morph: return morphDialog(app);
-    case Dialogs::Prompt::MorphExport: return pathDialog(app, "Export Frames", "A directory for frame_0000.vdb ...");
-    case Dialogs::Prompt::LoadScene:
-        return pathDialog(app, "Load Scene", "A primitive scene (.json) to place and bake");
-    case Dialogs::Prompt::SaveScene: return pathDialog(app, "Save Scene", "A .json scene file for `sculpt build`");
-    case Dialogs::Prompt::Import:
+    const DocumentFiles& files = host.files();
+    if (!host.notices().error().empty()) return errorDialog(host);
+    if (files.offeringRecovery()) return recoveryDialog(host);
+    if (files.askingGrid()) return gridDialog(host);
+    if (files.askingUnsaved()) return unsavedDialog(host);
+    switch (host.dialogs().prompt.kind) {
+    case Prompt::Kind::New: return newDialog(host);
+    case Prompt::Kind::Open: return pathDialog(host, "Open", "A .vdb document (path, then Enter; Tab completes)");
+    case Prompt::Kind::SaveAs: return pathDialog(host, "Save As", "A .vdb file to write");
+    case Prompt::Kind::ExportMesh: return pathDialog(host, "Export Mesh", "A .ply, .obj or .stl file to write");
+    case Prompt::Kind::SaveStrokes: return pathDialog(host, "Save Strokes", "A .json stroke script for `sculpt apply`");
+    case Prompt::Kind::SmoothModel:
+    case Prompt::Kind::OffsetModel:
+    case Prompt::Kind::HollowModel:
+    case Prompt::Kind::RemoveIslands: return filterDialog(host);
+    case Prompt::Kind::Morph: return morphDialog(host);
+    case Prompt::Kind::MorphExport: return pathDialog(host, "Export Frames", "A directory for frame_0000.vdb ...");
+    case Prompt::Kind::LoadScene: return pathDialog(host, "Load Scene", "A primitive scene (.json) to place and bake");
+    case Prompt::Kind::SaveScene: return pathDialog(host, "Save Scene", "A .json scene file for `sculpt build`");
+    case Prompt::Kind::Import:
         return pathDialog(
-            app, "Import",
+            host, "Import",
             "A scan (.nii, .nii.gz, .nrrd, .mha, a DICOM directory or file) or a mesh (.obj, .ply, .stl, .off)");
-    case Dialogs::Prompt::Target:
-        return pathDialog(app, "Load Target",
+    case Prompt::Kind::Target:
+        return pathDialog(host, "Load Target",
                           "A document, scan or mesh for the follow brush (O) and the morph, shown as a ghost (H)");
-    case Dialogs::Prompt::None: return;
+    case Prompt::Kind::None: return;
     }
 }
 

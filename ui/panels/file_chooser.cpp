@@ -4,7 +4,7 @@
 // it like any other input.
 
 #include "core/base/text_format.h"
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -30,7 +30,7 @@ int completeOnTab(ImGuiInputTextCallbackData* data)
 }
 
 /// The listing of the directory `d.path` names, read again when that changes or has aged.
-const DirectoryListing& listingFor(Dialogs& d, const FileKinds& kinds)
+const DirectoryListing& listingFor(Prompt& d, const FileKinds& kinds)
 {
     const fs::path directory = directoryOf(d.path);
     const double now = ImGui::GetTime();
@@ -42,7 +42,7 @@ const DirectoryListing& listingFor(Dialogs& d, const FileKinds& kinds)
 }
 
 /// Puts `path` in the field (a folder with its "/", so the chooser lists it), the field focused.
-void choose(Dialogs& d, const fs::path& path, bool folder)
+void choose(Prompt& d, const fs::path& path, bool folder)
 {
     d.path = path.string();
     if (folder && (d.path.empty() || d.path.back() != '/')) d.path += '/';
@@ -59,15 +59,15 @@ fs::path fullPath(const fs::path& directory)
     return ec ? directory : full;
 }
 
-void navigationRow(SculptApp& app, const DirectoryListing& listing)
+void navigationRow(PanelHost& host, const DirectoryListing& listing)
 {
-    Dialogs& d = app.dialogs();
+    Prompt& d = host.dialogs().prompt;
     const fs::path full = fullPath(listing.directory);
     if (ImGui::Button("Up")) choose(d, full.parent_path(), true);
     ImGui::SameLine();
     if (ImGui::Button("Home")) choose(d, expandHome("~"), true);
     ImGui::SameLine();
-    const std::vector<fs::path>& recent = app.recent().entries();
+    const std::vector<fs::path>& recent = host.files().recent().entries();
     ImGui::SetNextItemWidth(300.f);
     if (ImGui::BeginCombo("##recent", "Recent files", ImGuiComboFlags_HeightLarge)) {
         for (const fs::path& path : recent) {
@@ -81,7 +81,7 @@ void navigationRow(SculptApp& app, const DirectoryListing& listing)
 }
 
 /// One row; true if a file was double-clicked (the prompt is answered).
-bool entryRow(Dialogs& d, const DirectoryListing& listing, const FileEntry& entry)
+bool entryRow(Prompt& d, const DirectoryListing& listing, const FileEntry& entry)
 {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -104,7 +104,7 @@ bool entryRow(Dialogs& d, const DirectoryListing& listing, const FileEntry& entr
 }
 
 /// The directory's entries; true if a file was double-clicked.
-bool entryTable(Dialogs& d, const DirectoryListing& listing)
+bool entryTable(Prompt& d, const DirectoryListing& listing)
 {
     if (!listing.error.empty())
         ImGui::TextDisabled("%s: %s", listing.directory.string().c_str(), listing.error.c_str());
@@ -129,9 +129,9 @@ bool entryTable(Dialogs& d, const DirectoryListing& listing)
 
 }  // namespace
 
-bool fileField(SculptApp& app, const FileKinds& kinds, const char* id)
+bool fileField(PanelHost& host, const FileKinds& kinds, const char* id)
 {
-    Dialogs& d = app.dialogs();
+    Prompt& d = host.dialogs().prompt;
     char buffer[4096];
     std::snprintf(buffer, sizeof buffer, "%s", d.path.c_str());
     if (d.focusField) ImGui::SetKeyboardFocusHere();
@@ -142,7 +142,7 @@ bool fileField(SculptApp& app, const FileKinds& kinds, const char* id)
         ImGui::InputText(id, buffer, sizeof buffer, flags, completeOnTab, const_cast<FileKinds*>(&kinds));
     d.path = buffer;
     const DirectoryListing& listing = listingFor(d, kinds);
-    navigationRow(app, listing);
+    navigationRow(host, listing);
     return entryTable(d, listing) || entered;
 }
 

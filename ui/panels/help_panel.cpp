@@ -1,4 +1,4 @@
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -47,11 +47,11 @@ void keyTable(const CommandRegistry& commands, const char* title, Scope scope)
 
 }  // namespace
 
-void drawHelpPanel(SculptApp& app)
+void drawHelpPanel(PanelHost& host)
 {
     ImGui::SetNextWindowSize(ImVec2(720, 600), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(260, 40), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Help", &app.dialogs().help)) return ImGui::End();
+    if (!ImGui::Begin("Help", &host.dialogs().help)) return ImGui::End();
     ImGui::TextUnformatted("Mouse");
     if (ImGui::BeginTable("mouse", 2, ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("input", ImGuiTableColumnFlags_WidthFixed, 220.f);
@@ -65,9 +65,9 @@ void drawHelpPanel(SculptApp& app)
         }
         ImGui::EndTable();
     }
-    keyTable(app.commands(), "Keys", Scope::View);
-    keyTable(app.commands(), "In pieces mode (Tab)", Scope::Pieces);
-    keyTable(app.commands(), "In a dialog", Scope::Dialog);
+    keyTable(host.commands(), "Keys", Scope::View);
+    keyTable(host.commands(), "In pieces mode (Tab)", Scope::Pieces);
+    keyTable(host.commands(), "In a dialog", Scope::Dialog);
     ImGui::End();
 }
 

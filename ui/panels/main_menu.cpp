@@ -1,4 +1,4 @@
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -7,29 +7,29 @@
 
 namespace sculpt::ui {
 
-void commandMenuItem(SculptApp& app, Command command)
+void commandMenuItem(PanelHost& host, Command command)
 {
-    const std::string keys = app.commands().shortcutText(command);
-    const bool enabled = app.whyNot(command).empty();  // the rule execute() checks
-    if (ImGui::MenuItem(app.commands().row(command).label, keys.empty() ? nullptr : keys.c_str(), false, enabled))
-        app.execute(command);
-    commandTooltip(app, command);
+    const std::string keys = host.commands().shortcutText(command);
+    const bool enabled = host.whyNot(command).empty();  // the rule execute() checks
+    if (ImGui::MenuItem(host.commands().row(command).label, keys.empty() ? nullptr : keys.c_str(), false, enabled))
+        host.execute(command);
+    commandTooltip(host, command);
 }
 
-void commandButton(SculptApp& app, Command command)
+void commandButton(PanelHost& host, Command command)
 {
-    const bool enabled = app.whyNot(command).empty();
+    const bool enabled = host.whyNot(command).empty();
     if (!enabled) ImGui::BeginDisabled();
-    if (ImGui::Button(app.commands().row(command).label)) app.execute(command);
+    if (ImGui::Button(host.commands().row(command).label)) host.execute(command);
     if (!enabled) ImGui::EndDisabled();
-    commandTooltip(app, command);
+    commandTooltip(host, command);
 }
 
-void commandTooltip(const SculptApp& app, Command command)
+void commandTooltip(const PanelHost& host, Command command)
 {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
-    const std::string keys = app.commands().shortcutText(command), blocked = app.whyNot(command);
-    ImGui::SetTooltip("%s%s%s%s%s", app.commands().row(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
+    const std::string keys = host.commands().shortcutText(command), blocked = host.whyNot(command);
+    ImGui::SetTooltip("%s%s%s%s%s", host.commands().row(command).help, keys.empty() ? "" : "\nKey: ", keys.c_str(),
                       blocked.empty() ? "" : "\nNot now: ", blocked.c_str());
 }
 
@@ -62,33 +62,34 @@ void printCheckMenu(SurfaceTint& check)
 
 /// The mask selections and their settings: a crease radius (0: four voxels) and the print
 /// check's thickness threshold.
-void selectionItems(SculptApp& app)
+void selectionItems(PanelHost& host)
 {
-    commandMenuItem(app, Command::MaskIsland);
-    commandMenuItem(app, Command::MaskCavities);
+    commandMenuItem(host, Command::MaskIsland);
+    commandMenuItem(host, Command::MaskCavities);
     ImGui::SetNextItemWidth(120);
-    if (ImGui::InputDouble("crease radius", &app.creaseRadius(), 0.1, 1.0,
-                           app.creaseRadius() > 0.0 ? "%.3g" : "4 voxels"))
-        app.creaseRadius() = std::max(app.creaseRadius(), 0.0);
+    if (ImGui::InputDouble("crease radius", &host.dialogs().creaseRadius, 0.1, 1.0,
+                           host.dialogs().creaseRadius > 0.0 ? "%.3g" : "4 voxels"))
+        host.dialogs().creaseRadius = std::max(host.dialogs().creaseRadius, 0.0);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Creases curving inwards this tightly or more are masked fully, wider ones in part");
-    commandMenuItem(app, Command::MaskThinWalls);
-    thicknessField(app.printCheck(), "Walls thinner than this (world units) are masked (and show red in the "
-                                     "print check)");
+    commandMenuItem(host, Command::MaskThinWalls);
+    thicknessField(host.view().printCheck(), "Walls thinner than this (world units) are masked (and show red in the "
+                                             "print check)");
 }
 
 }  // namespace
 
-void drawMainMenu(SculptApp& app)
+void drawMainMenu(PanelHost& host)
 {
     if (!ImGui::BeginMainMenuBar()) return;
-    const auto item = [&app](Command c) { commandMenuItem(app, c); };
+    const auto item = [&host](Command c) { commandMenuItem(host, c); };
     if (ImGui::BeginMenu("File")) {
         item(Command::New);
         item(Command::Open);
-        if (ImGui::BeginMenu("Open Recent", !app.recent().entries().empty())) {
-            for (const auto& path : app.recent().entries()) {
-                if (ImGui::MenuItem(path.string().c_str())) app.openRecent(path);
+        if (ImGui::BeginMenu("Open Recent", !host.files().recent().entries().empty())) {
+            for (const auto& path : host.files().recent().entries()) {
+                if (ImGui::MenuItem(path.string().c_str()) && host.files().guardUnsaved(Command::Open))
+                    host.files().open(path);
             }
             ImGui::EndMenu();
         }
@@ -125,7 +126,7 @@ void drawMainMenu(SculptApp& app)
                           Command::GrowMask, Command::ShrinkMask})
             item(c);
         ImGui::Separator();
-        selectionItems(app);
+        selectionItems(host);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Filters")) {
@@ -142,27 +143,28 @@ void drawMainMenu(SculptApp& app)
     }
     if (ImGui::BeginMenu("View")) {
         for (int s = 0; s < 4; ++s) {
-            if (ImGui::MenuItem(kShadingNames[s], nullptr, int(app.look().shading()) == s))
-                app.look().setShading(Shading(s));
+            if (ImGui::MenuItem(kShadingNames[s], nullptr, int(host.look().shading()) == s))
+                host.look().setShading(Shading(s));
         }
         ImGui::Separator();
-        if (ImGui::MenuItem("Flat Shading", app.commands().shortcutText(Command::ToggleFlat).c_str(),
-                            app.look().flat()))
-            app.execute(Command::ToggleFlat);
-        if (ImGui::MenuItem("Wireframe", app.commands().shortcutText(Command::ToggleWireframe).c_str(),
-                            app.look().wireframe()))
-            app.execute(Command::ToggleWireframe);
-        if (ImGui::MenuItem("Scales", app.commands().shortcutText(Command::ToggleScales).c_str(), app.scalesShown()))
-            app.execute(Command::ToggleScales);
-        if (ImGui::MenuItem("X-Ray", app.commands().shortcutText(Command::ToggleXRay).c_str(), app.look().xray()))
-            app.execute(Command::ToggleXRay);
-        if (ImGui::MenuItem("Target Ghost", app.commands().shortcutText(Command::ToggleGhost).c_str(), app.ghostShown(),
-                            app.whyNot(Command::ToggleGhost).empty()))
-            app.execute(Command::ToggleGhost);
-        if (ImGui::MenuItem("Trackball Orbit", app.commands().shortcutText(Command::ToggleTrackball).c_str(),
-                            app.camera().trackball))
-            app.execute(Command::ToggleTrackball);
-        printCheckMenu(app.printCheck());
+        if (ImGui::MenuItem("Flat Shading", host.commands().shortcutText(Command::ToggleFlat).c_str(),
+                            host.look().flat()))
+            host.execute(Command::ToggleFlat);
+        if (ImGui::MenuItem("Wireframe", host.commands().shortcutText(Command::ToggleWireframe).c_str(),
+                            host.look().wireframe()))
+            host.execute(Command::ToggleWireframe);
+        if (ImGui::MenuItem("Scales", host.commands().shortcutText(Command::ToggleScales).c_str(),
+                            host.view().scales().shown()))
+            host.execute(Command::ToggleScales);
+        if (ImGui::MenuItem("X-Ray", host.commands().shortcutText(Command::ToggleXRay).c_str(), host.look().xray()))
+            host.execute(Command::ToggleXRay);
+        if (ImGui::MenuItem("Target Ghost", host.commands().shortcutText(Command::ToggleGhost).c_str(),
+                            host.view().ghost().shown(), host.whyNot(Command::ToggleGhost).empty()))
+            host.execute(Command::ToggleGhost);
+        if (ImGui::MenuItem("Trackball Orbit", host.commands().shortcutText(Command::ToggleTrackball).c_str(),
+                            host.camera().trackball))
+            host.execute(Command::ToggleTrackball);
+        printCheckMenu(host.view().printCheck());
         ImGui::Separator();
         for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight,
                           Command::ViewLeft, Command::ViewTop, Command::ViewBottom}) {

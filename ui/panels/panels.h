@@ -1,7 +1,8 @@
 #pragma once
 /// @file panels.h
 /// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,
-///        the history, the status bar, the dialogs and the help.
+///        the history, the pieces, the status bar, the dialogs and the help; and the commands of
+///        their menus and dialogs. They see the window through PanelHost only.
 
 #include "ui/commands/commands.h"
 #include "ui/document/file_listing.h"
@@ -10,46 +11,47 @@
 
 namespace sculpt::ui {
 
-class ImportDraft;
-class MorphMode;
-class PrimitiveDraft;
-class SculptApp;
+class CommandRegistry;
+class PanelHost;
 
-void drawMainMenu(SculptApp& app);
-void drawToolPanel(SculptApp& app);
-void drawHistoryPanel(SculptApp& app);
+void drawMainMenu(PanelHost& host);
+void drawToolPanel(PanelHost& host);
+void drawHistoryPanel(PanelHost& host);
 /// The document's pieces (when it has several, or in pieces mode): pick the one to sculpt, its
 /// name, colour, visibility, solo, duplicate, delete, split and merge, push on contact.
-void drawPiecesPanel(SculptApp& app);
-void drawStatusBar(SculptApp& app);
-void drawDialogs(SculptApp& app);
-void drawHelpPanel(SculptApp& app);
+void drawPiecesPanel(PanelHost& host);
+void drawStatusBar(PanelHost& host);
+void drawDialogs(PanelHost& host);
+void drawHelpPanel(PanelHost& host);
 /// The running job's progress bar and Cancel button, if a job runs.
-void drawJobPanel(SculptApp& app);
-/// A finished morph's frames: slider, play/pause, step, keep, export, close.
-void drawMorphPanel(SculptApp& app, MorphMode& mode);
-/// The scan or mesh being imported: what it holds, the iso-value over its histogram, crop,
-/// smoothing, cleanup, voxel size and what the result becomes; Apply or Cancel.
-void drawImportPanel(SculptApp& app, ImportDraft& draft);
-/// The primitives being placed: their list, the selected one's skeleton and kernel, the scene's
-/// iso-value and operation; Bake, Load and Save.
-void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft);
+void drawJobPanel(PanelHost& host);
+
+/// The commands of the panels' menus and dialogs, each file adding its own: File
+/// (file_commands.cpp), Filters and Mask (model_commands.cpp), View (view_commands.cpp), the
+/// dialogs' answers (dialog_commands.cpp).
+void addPanelCommands(CommandRegistry& commands, PanelHost& host);
+void addFileCommands(CommandRegistry& commands, PanelHost& host);
+void addModelCommands(CommandRegistry& commands, PanelHost& host);
+void addViewCommands(CommandRegistry& commands, PanelHost& host);
+void addDialogCommands(CommandRegistry& commands, PanelHost& host);
 
 /// A prompt's path field (focused when the prompt opens, Tab completes) and the file chooser
 /// under it, listing what `kinds` accepts. True: answered (Enter in the field, or a file
 /// double-clicked).
-bool fileField(SculptApp& app, const FileKinds& kinds, const char* id);
+bool fileField(PanelHost& host, const FileKinds& kinds, const char* id);
 
 /// A fixed window under the brush palette (the Import and Primitives panels); End() closes it.
 void beginSidePanel(const char* title, float width);
+/// A fixed window centred at the bottom (the job's progress, the morph's frames); End() closes it.
+void beginBottomPanel(const char* title, bool titleBar);
 /// Text in the warning colour, wrapped to `width` pixels.
 void warningText(const std::string& text, float width);
 
 /// A menu item running `command`, its keys shown beside it, greyed out when it cannot run.
-void commandMenuItem(SculptApp& app, Command command);
+void commandMenuItem(PanelHost& host, Command command);
 /// A button running `command`, labelled as it is, greyed out when it cannot run, with its tooltip.
-void commandButton(SculptApp& app, Command command);
+void commandButton(PanelHost& host, Command command);
 /// The tooltip of the last item: what `command` does, its keys, and why it cannot run now.
-void commandTooltip(const SculptApp& app, Command command);
+void commandTooltip(const PanelHost& host, Command command);
 
 }  // namespace sculpt::ui

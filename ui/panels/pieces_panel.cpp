@@ -1,4 +1,4 @@
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -12,9 +12,9 @@ constexpr std::size_t kSwatches = 8;
 ImVec4 colourOf(const openvdb::Vec3f& c) { return ImVec4(c[0], c[1], c[2], 1.f); }
 
 /// One row per piece: its colour, an eye (shown or hidden) and its name, selected if sculpted.
-void pieceList(SculptApp& app, PiecesTool& tool)
+void pieceList(PanelHost& host, PiecesTool& tool)
 {
-    const Document& doc = app.document();
+    const Document& doc = host.document();
     for (std::size_t i = 0; i < doc.pieces().size(); ++i) {
         const PieceLook& look = doc.pieces()[i].look;
         ImGui::PushID(int(i));
@@ -34,30 +34,30 @@ void pieceList(SculptApp& app, PiecesTool& tool)
 }
 
 /// The sculpted piece's name, colour and edits.
-void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
+void activePiece(PanelHost& host, PiecesTool& tool, PieceNameField& d)
 {
-    const Document& doc = app.document();
+    const Document& doc = host.document();
     const std::size_t index = doc.activePiece();
     const PieceLook& look = doc.pieces()[index].look;
-    if (d.pieceNameOf != index || d.pieceNameSeen != look.name) {  // another piece, or renamed (undo)
-        d.pieceName = look.name;
-        d.pieceNameOf = index;
-        d.pieceNameSeen = look.name;
+    if (d.of != index || d.seen != look.name) {  // another piece, or renamed (undo)
+        d.text = look.name;
+        d.of = index;
+        d.seen = look.name;
     }
     char buffer[128];
-    std::snprintf(buffer, sizeof buffer, "%s", d.pieceName.c_str());
+    std::snprintf(buffer, sizeof buffer, "%s", d.text.c_str());
     ImGui::SetNextItemWidth(150);
     if (ImGui::InputText("name", buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue) && buffer[0] &&
         look.name != buffer) {
         if (doc.freeName(buffer) != buffer) {
-            app.dialogs().notice = std::string("a piece is named '") + buffer + "' already";
+            host.notices().say(std::string("a piece is named '") + buffer + "' already");
         } else {
             std::vector<PieceLook> looks = tool.looks();
             looks[index].name = buffer;
             tool.changeLooks(std::move(looks), "rename '" + look.name + "' to '" + buffer + "'");
         }
     }
-    d.pieceName = buffer;
+    d.text = buffer;
     for (std::size_t k = 0; k < kSwatches; ++k) {
         ImGui::PushID(int(k));
         if (ImGui::ColorButton("##swatch", colourOf(paletteColour(k)), 0, ImVec2(20, 20))) {
@@ -68,14 +68,14 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
         ImGui::PopID();
         if (k + 1 < kSwatches) ImGui::SameLine();
     }
-    commandButton(app, Command::SoloPiece);
+    commandButton(host, Command::SoloPiece);
     ImGui::SameLine();
-    commandButton(app, Command::DuplicatePiece);
+    commandButton(host, Command::DuplicatePiece);
     ImGui::SameLine();
-    commandButton(app, Command::DeletePiece);
-    commandButton(app, Command::SplitPiece);
+    commandButton(host, Command::DeletePiece);
+    commandButton(host, Command::SplitPiece);
     ImGui::SameLine();
-    commandButton(app, Command::ApplyPlacement);
+    commandButton(host, Command::ApplyPlacement);
     if (doc.pieces().size() > 1) {
         const std::size_t with = tool.mergePartner();
         ImGui::SetNextItemWidth(110);
@@ -86,32 +86,32 @@ void activePiece(SculptApp& app, PiecesTool& tool, Dialogs& d)
             ImGui::EndCombo();
         }
         ImGui::SameLine();
-        commandButton(app, Command::MergePieces);
+        commandButton(host, Command::MergePieces);
     }
 }
 
 }  // namespace
 
-void drawPiecesPanel(SculptApp& app)
+void drawPiecesPanel(PanelHost& host)
 {
-    PiecesTool& tool = app.tools().get<PiecesTool>();
-    const bool piecesMode = app.tools().isCurrent(tool);
-    if (app.document().pieces().size() < 2 && !piecesMode) return;
+    PiecesTool& tool = host.tools().get<PiecesTool>();
+    const bool piecesMode = host.tools().isCurrent(tool);
+    if (host.document().pieces().size() < 2 && !piecesMode) return;
     const ImVec2 size(236, 0);
     ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - size.x - 8, 296), ImGuiCond_Always);
     ImGui::SetNextWindowSize(size, ImGuiCond_Always);
     ImGui::Begin("Pieces", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    pieceList(app, tool);
+    pieceList(host, tool);
     ImGui::Separator();
-    activePiece(app, tool, app.dialogs());
+    activePiece(host, tool, host.dialogs().pieceName);
     ImGui::Separator();
     bool modeOn = piecesMode;
-    if (ImGui::Checkbox("pieces mode", &modeOn)) app.execute(Command::PiecesMode);
-    commandTooltip(app, Command::PiecesMode);
+    if (ImGui::Checkbox("pieces mode", &modeOn)) host.execute(Command::PiecesMode);
+    commandTooltip(host, Command::PiecesMode);
     ImGui::SameLine();
     ImGui::Checkbox("push", &tool.push());
-    commandTooltip(app, Command::TogglePush);
-    ImGui::Checkbox("strokes stop at other pieces", &app.brush().stopAtPieces);
+    commandTooltip(host, Command::TogglePush);
+    ImGui::Checkbox("strokes stop at other pieces", &host.brush().stopAtPieces);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("clay added to this piece stops where another piece is (the others are never edited)");
     if (piecesMode) ImGui::TextDisabled("click picks; G R S move it");

@@ -1,12 +1,12 @@
 #include "core/base/text_format.h"
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
 
 namespace sculpt::ui {
 
-void drawStatusBar(SculptApp& app)
+void drawStatusBar(PanelHost& host)
 {
     const ImGuiIO& io = ImGui::GetIO();
     const float height = ImGui::GetFrameHeight() + 6.f;
@@ -15,8 +15,8 @@ void drawStatusBar(SculptApp& app)
     ImGui::Begin("Status", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoBringToFrontOnFocus);
-    const StatusFigures& s = app.status();
-    const std::string& units = app.document().session().field().units();
+    const StatusFigures& s = host.status();
+    const std::string& units = host.document().session().field().units();
     if (s.pieces > 1) {  // the figures after it are the sculpted piece's
         ImGui::Text("%s, one of %zu pieces (all shown: %s tris) |", s.piece.c_str(), s.pieces,
                     formatCount(s.allTriangles).c_str());
@@ -34,9 +34,9 @@ void drawStatusBar(SculptApp& app)
                           formatBytes(double(s.mesherBytes)).c_str(), formatBytes(double(s.displayBytes)).c_str(),
                           formatBytes(double(s.undoBytes)).c_str());
     }
-    if (!app.dialogs().notice.empty()) {
+    if (!host.notices().notice().empty()) {
         ImGui::SameLine();
-        ImGui::TextDisabled("| %s", app.dialogs().notice.c_str());
+        ImGui::TextDisabled("| %s", host.notices().notice().c_str());
     }
     ImGui::End();
 }

@@ -1,4 +1,4 @@
-#include "ui/app/sculpt_app.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -23,16 +23,16 @@ constexpr ToolButton kTools[] = {
 
 constexpr const char* kFalloffs[] = {"smooth", "sphere", "sharp", "constant"};
 
-void toolPalette(SculptApp& app)
+void toolPalette(PanelHost& host)
 {
-    BrushOptions& b = app.brush();
-    ToolBox& tools = app.tools();
+    BrushOptions& b = host.brush();
+    ToolBox& tools = host.tools();
     for (int i = 0; i < int(std::size(kTools)); ++i) {
         const bool current = b.tool == kTools[i].tool && tools.isCurrent(tools.get<SculptTool>());
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
-        if (ImGui::Button(app.commands().row(kTools[i].command).label, ImVec2(68, 0))) app.execute(kTools[i].command);
+        if (ImGui::Button(host.commands().row(kTools[i].command).label, ImVec2(68, 0))) host.execute(kTools[i].command);
         if (current) ImGui::PopStyleColor();
-        commandTooltip(app, kTools[i].command);
+        commandTooltip(host, kTools[i].command);
         if (i % 3 != 2 && i + 1 < int(std::size(kTools))) ImGui::SameLine();
     }
     struct Gesture {
@@ -51,9 +51,9 @@ void toolPalette(SculptApp& app)
                              tools.get<GestureTool>().masks() == g.masks;
         if (current) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
         // Three cuts to a row, the two masks (longer names) on one of their own.
-        if (ImGui::Button(app.commands().row(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) app.execute(g.command);
+        if (ImGui::Button(host.commands().row(g.command).label, ImVec2(g.masks ? 106 : 68, 0))) host.execute(g.command);
         if (current) ImGui::PopStyleColor();
-        commandTooltip(app, g.command);
+        commandTooltip(host, g.command);
         if (i != 2 && i + 1 < int(std::size(kGestures))) ImGui::SameLine();
     }
     tools.current().drawSettings();
@@ -61,20 +61,20 @@ void toolPalette(SculptApp& app)
 
 }  // namespace
 
-void drawToolPanel(SculptApp& app)
+void drawToolPanel(PanelHost& host)
 {
     ImGui::SetNextWindowPos(ImVec2(8, 28), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(236, 0), ImGuiCond_Always);
     ImGui::Begin("Brush", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    toolPalette(app);
-    BrushOptions& b = app.brush();
+    toolPalette(host);
+    BrushOptions& b = host.brush();
     ImGui::PushItemWidth(130);
     float radius = float(b.radius), strength = float(b.strength), spacing = float(b.spacing);
-    const float voxel = float(app.document().session().field().voxelSize());
+    const float voxel = float(host.document().session().field().voxelSize());
     if (ImGui::DragFloat("radius", &radius, 0.02f * radius, 0.5f * voxel, 400.f * voxel, "%.3g")) b.radius = radius;
-    commandTooltip(app, Command::RadiusDrag);
+    commandTooltip(host, Command::RadiusDrag);
     if (ImGui::SliderFloat("strength", &strength, 0.01f, 1.f, "%.2f")) b.strength = strength;
-    commandTooltip(app, Command::StrengthDrag);
+    commandTooltip(host, Command::StrengthDrag);
     int falloff = int(b.falloff);
     if (ImGui::Combo("falloff", &falloff, kFalloffs, int(std::size(kFalloffs)))) b.falloff = Falloff(falloff);
     if (ImGui::SliderFloat("spacing", &spacing, 0.05f, 1.f, "%.2f r")) b.spacing = spacing;
@@ -82,13 +82,13 @@ void drawToolPanel(SculptApp& app)
     ImGui::Text("mirror");
     ImGui::SameLine();
     ImGui::Checkbox("X", &b.symmetry.x);
-    commandTooltip(app, Command::SymmetryX);
+    commandTooltip(host, Command::SymmetryX);
     ImGui::SameLine();
     ImGui::Checkbox("Y", &b.symmetry.y);
-    commandTooltip(app, Command::SymmetryY);
+    commandTooltip(host, Command::SymmetryY);
     ImGui::SameLine();
     ImGui::Checkbox("Z", &b.symmetry.z);
-    commandTooltip(app, Command::SymmetryZ);
+    commandTooltip(host, Command::SymmetryZ);
     ImGui::Checkbox("pressure from speed", &b.pressureFromSpeed);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("A mouse has no pressure: faster strokes press lighter");
     if (b.tool == BrushTool::Smooth) ImGui::Checkbox("keep volume", &b.keepVolume);

@@ -2,6 +2,7 @@
 
 #include "core/field/placed_box.h"
 #include "sculpt/session/document.h"
+#include "ui/view/block_polydata.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -34,6 +35,14 @@ void DocumentView::show(const Document& document, bool frameIt)
     syncPieces(document);
     mDisplay.sync(*document.session().mesher(), document.session().field().voxelSize());
     if (frameIt) frameAll(document);
+}
+
+void DocumentView::showPreview(const OpenPreview::Surface& preview)
+{
+    mDisplay.showPreview(preview.mesh, *preview.xform);
+    if (preview.mesh.positions.empty()) return;
+    const auto [lo, hi] = boundsOf(preview.mesh.positions.data(), preview.mesh.positions.size());
+    mCamera.frame(lo, hi);
 }
 
 bool DocumentView::syncPieces(const Document& document)

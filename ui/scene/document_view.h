@@ -9,6 +9,7 @@
 /// displays upload what the meshers changed, the hover is picked again only when what it
 /// depends on changed (HoverKey).
 
+#include "ui/document/open_preview.h"
 #include "ui/sculpting/brush_options.h"
 #include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/surface_picker.h"
@@ -62,6 +63,8 @@ public:
 
     /// A new document: what was drawn and picked of the old one goes; `frameIt` fits the camera.
     void show(const Document& document, bool frameIt);
+    /// A document being made shows its coarse preview meanwhile, framed by the camera.
+    void showPreview(const OpenPreview::Surface& preview);
     /// Brings the drawing of the pieces up to date once they changed: the sculpted one in the
     /// model display at its placement, the others in their colours. @return true if another
     /// piece became the one sculpted (what is measured of it starts again).

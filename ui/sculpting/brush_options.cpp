@@ -8,6 +8,13 @@
 
 namespace sculpt::ui {
 
+void BrushOptions::report(nlohmann::json& out) const
+{
+    out["target"] = target.path.string();
+    out["radius"] = radius;
+    out["tool"] = brushToolName(tool);
+}
+
 BrushTool effectiveTool(BrushTool tool, int mods)
 {
     if (mods & kShift) return BrushTool::Smooth;

@@ -5,6 +5,8 @@
 #include "core/brushes/brush.h"
 #include "sculpt/session/stroke_script.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <filesystem>
 #include <memory>
 
@@ -27,6 +29,9 @@ struct BrushOptions {
     bool pressureFromSpeed = true;  ///< a mouse has no pressure: faster strokes press lighter
     FollowTarget target;            ///< follow
     bool stopAtPieces = false;      ///< strokes keep out of the document's other pieces
+
+    /// The tool, radius and target in the window's report.
+    void report(nlohmann::json& out) const;
 };
 
 /// The tool a stroke uses: Shift smooths while held; Ctrl inverts add/carve, inflate/deflate

@@ -109,7 +109,12 @@ void AppWindow::pollEvents(double timeoutSeconds)
 }
 
 void AppWindow::swapBuffers() { glfwSwapBuffers(mWindow); }
-void AppWindow::setTitle(const std::string& title) { glfwSetWindowTitle(mWindow, title.c_str()); }
+void AppWindow::setTitle(const std::string& title)
+{
+    if (title == mTitle) return;  // the window manager's round trip, every frame otherwise
+    glfwSetWindowTitle(mWindow, title.c_str());
+    mTitle = title;
+}
 void AppWindow::resize(int width, int height)
 {
     // Framebuffer pixels asked for; the window is sized in screen coordinates.

@@ -43,6 +43,7 @@ private:
 
     GLFWwindow* mWindow = nullptr;
     std::function<void(const InputEvent&)> mListener;
+    std::string mTitle;  // shown
 };
 
 }  // namespace sculpt::ui

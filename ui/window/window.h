@@ -22,6 +22,7 @@ public:
     /// Delivers pending events to the listener; waits up to `timeoutSeconds` for one (0: none).
     virtual void pollEvents(double timeoutSeconds) = 0;
     virtual void swapBuffers() = 0;
+    /// Shows `title`; called every frame, so cheap when it is the one shown.
     virtual void setTitle(const std::string& title) = 0;
     /// As a user resizing the window (a replayed resize), to this many framebuffer pixels.
     virtual void resize(int width, int height) = 0;

@@ -5,6 +5,7 @@
 #include "core/primitives/analytic_shapes.h"
 #include "core/tracking/edge_hold.h"
 #include "core/tracking/mesh_tracker.h"
+#include "core/tracking/tracked_mesh_quality.h"
 
 #include <gtest/gtest.h>
 

@@ -8,8 +8,10 @@
 #include "core/motion/morph.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/sdf_rasterizer.h"
+#include "core/tracking/mesh_adjacency.h"
 #include "core/tracking/mesh_tracker.h"
 #include "core/tracking/surface_projection.h"
+#include "core/tracking/tracked_mesh_quality.h"
 #include "tests/support/grid_builders.h"
 #include "tests/support/mesh_checks.h"
 

@@ -119,10 +119,11 @@ void GestureTool::land()
         selection.prism = *prism;
         selection.erase = ctrl;
         const char* shape = mShape == CutGesture::Shape::Box ? " box" : " lasso";
-        return mHost.startEdit(maskSelectionEdit(selection, std::string(ctrl ? "unmask" : "mask") + shape + slab));
+        return mHost.workspace().startEdit(
+            maskSelectionEdit(selection, std::string(ctrl ? "unmask" : "mask") + shape + slab));
     }
-    mHost.autosaveNow();
-    mHost.startEdit(
+    mHost.workspace().autosaveNow();
+    mHost.workspace().startEdit(
         prismEdit(*prism, fill ? PrismMode::Fill : PrismMode::Cut, std::string(fill ? "fill" : "cut") + slab));
 }
 

@@ -251,8 +251,8 @@ void PiecesTool::replace(const ScriptEvent& event)
     } catch (const InputError& e) {
         return mHost.showError(e.what());
     }
-    startJob<Pieces>(
-        mHost, replacement.label,
+    mHost.workspace().startJob<Pieces>(
+        replacement.label,
         [work = std::move(replacement.work)](const Progress& progress) {
             std::vector<Piece> made = work(scaledProgress(progress, 0.0, 0.5));
             Pieces pieces;  // meshed here, off the UI thread
@@ -276,10 +276,11 @@ void PiecesTool::move(const ScriptEvent& event, const std::string& what)
 {
     if (mHost.busy()) return;
     PieceMove change = moveOf(mHost.document(), event);
-    startJob<PieceFields>(mHost, change.label, std::move(change.work), [this, event, change, what](PieceFields fields) {
-        mHost.document().movePiece(change.piece, change.placement, std::move(fields), change.label, event);
-        mHost.notify(change.label + what + " (Ctrl+Z undoes it)");
-    });
+    mHost.workspace().startJob<PieceFields>(
+        change.label, std::move(change.work), [this, event, change, what](PieceFields fields) {
+            mHost.document().movePiece(change.piece, change.placement, std::move(fields), change.label, event);
+            mHost.notify(change.label + what + " (Ctrl+Z undoes it)");
+        });
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -90,7 +90,7 @@ bool SculptTool::press(const InputEvent& event)
         mStrokeMods = event.mods | mHost.heldMods();
         mStroke.begin(document, mHost.brush(), mStrokeMods, *hit, mHost.viewport().rayThrough(at.x, at.y), event.time,
                       at.x, at.y);
-        mHost.awaitFrame(event, 0);
+        mHost.awaitFrame(0);
     } catch (const InputError& e) {
         mHost.picker().thaw();
         mHost.showError(e.what());
@@ -105,7 +105,7 @@ void SculptTool::drag(const InputEvent& event)
         const std::size_t stamps = mStroke.move(mHost.document(), hit, mHost.viewport().rayThrough(event.x, event.y),
                                                 event.time, event.x, event.y);
         // From when the pointer got there (a replayed event: when it was due) to the frame showing it.
-        if (stamps > 0) mHost.awaitFrame(event, stamps);
+        if (stamps > 0) mHost.awaitFrame(stamps);
     } catch (const InputError& e) {
         mHost.showError(e.what());
     }

@@ -1,5 +1,8 @@
-#include "ui/app/sculpt_app.h"
-#include "ui/document/primitive_draft.h"
+// PrimitivesMode's panel: the primitives' list, the selected one's skeleton and kernel, the
+// scene's iso-value and operation; Bake, Load and Save.
+
+#include "ui/modes/primitives_mode.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -31,12 +34,12 @@ bool vec3Field(const char* label, openvdb::Vec3d& v)
     return true;
 }
 
-void addButtons(SculptApp& app)
+void addButtons(PanelHost& host, PrimitiveDraft& draft)
 {
     ImGui::TextUnformatted("add at the pointer:");
     for (int t = 0; t < 4; ++t) {
         if (t) ImGui::SameLine();
-        if (ImGui::Button(kSkeletons[t])) app.addPrimitive(SkeletonType(t));
+        if (ImGui::Button(kSkeletons[t])) PrimitivesMode::addAtPointer(host, draft, SkeletonType(t));
     }
 }
 
@@ -87,7 +90,7 @@ void neighbourFields(PrimitiveDraft& draft)
     }
 }
 
-void selectedFields(SculptApp& app, PrimitiveDraft& draft)
+void selectedFields(PanelHost& host, PrimitiveDraft& draft)
 {
     if (draft.selected < 0) return;
     Primitive& p = draft.primitives[size_t(draft.selected)];
@@ -102,17 +105,18 @@ void selectedFields(SculptApp& app, PrimitiveDraft& draft)
     ImGui::SetNextItemWidth(190.f);
     if (ImGui::SliderFloat("strength", &strength, 0.05f, 2.f, "%.2f")) p.kernel.strength = strength;
     neighbourFields(draft);
-    if (ImGui::Button("Remove (Delete)")) app.execute(Command::RemovePrimitive);
+    if (ImGui::Button("Remove (Delete)")) host.execute(Command::RemovePrimitive);
 }
 
 }  // namespace
 
-void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft)
+void PrimitivesMode::drawPanel(PanelHost& host)
 {
+    PrimitiveDraft& draft = mDraft;
     beginSidePanel("Primitives", kPanelWidth);
-    addButtons(app);
+    addButtons(host, draft);
     primitiveList(draft);
-    selectedFields(app, draft);
+    selectedFields(host, draft);
     ImGui::Separator();
     float iso = float(draft.iso);
     ImGui::SetNextItemWidth(120.f);
@@ -125,16 +129,16 @@ void drawPrimitivesPanel(SculptApp& app, PrimitiveDraft& draft)
     ImGui::PushTextWrapPos(kPanelWidth - 10.f);
     ImGui::TextDisabled("click or drag on the surface moves the selected one");
     ImGui::PopTextWrapPos();
-    if (ImGui::Button("Bake (Enter)")) app.execute(Command::Confirm);
-    commandTooltip(app, Command::BakePrimitives);
+    if (ImGui::Button("Bake (Enter)")) host.execute(Command::Confirm);
+    commandTooltip(host, Command::BakePrimitives);
     ImGui::SameLine();
-    if (ImGui::Button("Save...")) app.execute(Command::SaveScene);
-    commandTooltip(app, Command::SaveScene);
+    if (ImGui::Button("Save...")) host.execute(Command::SaveScene);
+    commandTooltip(host, Command::SaveScene);
     ImGui::SameLine();
-    if (ImGui::Button("Load...")) app.execute(Command::LoadScene);
-    commandTooltip(app, Command::LoadScene);
+    if (ImGui::Button("Load...")) host.execute(Command::LoadScene);
+    commandTooltip(host, Command::LoadScene);
     ImGui::SameLine();
-    if (ImGui::Button("Close (Esc)")) app.execute(Command::Cancel);
+    if (ImGui::Button("Close (Esc)")) host.execute(Command::Cancel);
     ImGui::End();
 }
 

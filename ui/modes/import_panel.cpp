@@ -1,5 +1,8 @@
-#include "ui/app/sculpt_app.h"
-#include "ui/document/import_draft.h"
+// ImportMode's panel: what the file holds, the iso-value over its histogram, crop, smoothing,
+// cleanup, voxel size and what the result becomes; Apply or Cancel.
+
+#include "ui/modes/import_mode.h"
+#include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"
 
 #include <imgui.h>
@@ -154,7 +157,7 @@ void meshFacts(const ImportDraft& draft)
     }
 }
 
-void resultControls(SculptApp& app, ImportDraft& draft)
+void resultControls(PanelHost& host, ImportDraft& draft)
 {
     ImGui::Checkbox("largest piece only", &draft.options.largestComponent);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Drop islands and fill closed cavities: one printable solid");
@@ -166,7 +169,7 @@ void resultControls(SculptApp& app, ImportDraft& draft)
     ImGui::RadioButton("difference", &result, 2);
     draft.result = ImportDraft::Result(result);
     if (draft.result != ImportDraft::Result::NewDocument) draft.labelPieces = false;  // pieces make a document
-    const double documentVoxel = app.document().session().field().voxelSize();
+    const double documentVoxel = host.document().session().field().voxelSize();
     if (draft.result != ImportDraft::Result::NewDocument) {
         ImGui::Text("voxel size %.4g (the document's)", documentVoxel);
         return;
@@ -181,13 +184,14 @@ void resultControls(SculptApp& app, ImportDraft& draft)
 
 }  // namespace
 
-void drawImportPanel(SculptApp& app, ImportDraft& draft)
+void ImportMode::drawPanel(PanelHost& host)
 {
+    ImportDraft& draft = mDraft;
     beginSidePanel("Import", kPanelWidth);
     ImGui::TextUnformatted(draft.file().path().filename().string().c_str());
     if (draft.file().isScan()) scanControls(draft);
     else meshFacts(draft);
-    resultControls(app, draft);
+    resultControls(host, draft);
     ImGui::Separator();
     if (!draft.problem().empty()) {
         warningText(draft.problem(), kPanelWidth - 20.f);
@@ -195,10 +199,10 @@ void drawImportPanel(SculptApp& app, ImportDraft& draft)
         ImGui::TextDisabled("preview at voxel size %.3g, made in %.0f ms", draft.file().previewVoxelSize(),
                             draft.previewMs());
     }
-    if (ImGui::Button("Apply (Enter)")) app.execute(Command::Confirm);
-    commandTooltip(app, Command::ApplyImport);
+    if (ImGui::Button("Apply (Enter)")) host.execute(Command::Confirm);
+    commandTooltip(host, Command::ApplyImport);
     ImGui::SameLine();
-    if (ImGui::Button("Cancel (Esc)")) app.execute(Command::Cancel);
+    if (ImGui::Button("Cancel (Esc)")) host.execute(Command::Cancel);
     ImGui::End();
 }
 
