@@ -132,7 +132,7 @@ bool MorphMode::accept(PanelHost& host)
 {
     const std::string frame = std::to_string(mFrames.shown());
     host.document().replaceField(mFrames.shownField().deepCopy(), "morph frame " + frame);
-    host.notices().say("kept morph frame " + frame + " (Ctrl+Z undoes it)");
+    host.workspace().landed("keep morph frame " + frame);
     return true;
 }
 

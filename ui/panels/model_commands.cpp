@@ -67,7 +67,7 @@ void drillDrainHoleUnderPointer(PanelHost& host)
     const std::optional<DrainHole> hole = drainHoleAt(field, at, normal, radius, farthest);
     if (!hole) return host.notices().say("no hollow behind the wall here: Filters > Hollow makes one");
     work.document().drillHoles({*hole});
-    host.notices().say("drain hole drilled (Ctrl+Z undoes it)");
+    work.landed("drill drain hole");
 }
 
 /// A mask operation on the sculpted piece, one undo step (the status bar says when it changed nothing).

@@ -39,15 +39,19 @@ void Workspace::startEdit(ModelEdit edit)
     // The job works on its own copy: the document stays as it is until the result lands.
     auto copy = std::make_shared<FieldImage>(mDocument->session().field().deepCopy());
     const std::string label = edit.label;
-    startJob<FieldImage>(
+    startUndoable<FieldImage>(
         label, [copy, work = std::move(edit.work)](const Progress& p) { return work(std::move(*copy), p); },
         [this, label, summary = std::move(edit.summary), scripted = std::move(edit.scripted),
          takes = edit.takes](FieldImage result) {
             if (takes == ModelEdit::Takes::Mask) mDocument->replaceMask(result.maskPtr(), label, *scripted);
             else mDocument->replaceField(std::move(result), label, scripted);
-            const std::string extra = summary ? summary() : std::string();
-            mNotices.say(label + " done" + (extra.empty() ? "" : ": " + extra) + " (Ctrl+Z undoes it)");
+            return summary ? summary() : std::string();
         });
+}
+
+void Workspace::landed(const std::string& label, const std::string& what)
+{
+    mNotices.say(label + " done" + (what.empty() ? "" : ": " + what) + " (Ctrl+Z undoes it)");
 }
 
 void Workspace::startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed)

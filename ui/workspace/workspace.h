@@ -60,6 +60,19 @@ public:
     /// preview framed it), and `landed` (called then) says so. `make` hands its field to `ready`
     /// before meshing it.
     void startDocument(std::string label, DocumentMaker make, std::function<std::string()> landed);
+    /// Runs `work` (Progress -> Result) as the job; once it succeeded, `land` (Result ->
+    /// std::string) lands its result in the document as one undo step on the UI thread and says
+    /// what the notice adds, or "" (landed). A piece edit, a move, a push land so.
+    template <typename Result, typename WorkFn, typename LandFn>
+    void startUndoable(std::string label, WorkFn work, LandFn land)
+    {
+        startJob<Result>(label, std::move(work), [this, label, land = std::move(land)](Result result) {
+            landed(label, land(std::move(result)));
+        });
+    }
+    /// An edit landed as one undo step: "LABEL done[: WHAT] (Ctrl+Z undoes it)", the one notice
+    /// every edit of the document ends with.
+    void landed(const std::string& label, const std::string& what = {});
     /// Runs `work` (Progress -> Result) as the job, saying so; `land` (Result) takes its result
     /// on the UI thread once it succeeded.
     template <typename Result, typename WorkFn, typename LandFn>

@@ -213,7 +213,7 @@ void PiecesTool::changeLooks(std::vector<PieceLook> looks, const std::string& la
 {
     if (mHost.busy()) return;
     mHost.document().setLooks(std::move(looks), label);
-    mHost.notify(label + " (Ctrl+Z undoes it)");
+    mHost.workspace().landed(label);
 }
 
 void PiecesTool::solo(std::size_t index)
@@ -238,7 +238,7 @@ void PiecesTool::applyPlacement(std::size_t index)
 {
     const Document& document = mHost.document();
     if (index < document.pieces().size() && document.pieces()[index].look.placement != openvdb::Mat4d::identity())
-        move(script::ApplyPlacementEvent{index}, ": its voxels resampled where it stands");
+        move(script::ApplyPlacementEvent{index}, "its voxels resampled where it stands");
 }
 
 void PiecesTool::replace(const ScriptEvent& event)
@@ -251,7 +251,7 @@ void PiecesTool::replace(const ScriptEvent& event)
     } catch (const InputError& e) {
         return mHost.showError(e.what());
     }
-    mHost.workspace().startJob<Pieces>(
+    mHost.workspace().startUndoable<Pieces>(
         replacement.label,
         [work = std::move(replacement.work)](const Progress& progress) {
             std::vector<Piece> made = work(scaledProgress(progress, 0.0, 0.5));
@@ -266,9 +266,7 @@ void PiecesTool::replace(const ScriptEvent& event)
         [this, event, label = replacement.label, replaced = replacement.replaced](Pieces pieces) {
             const std::size_t count = pieces.size();
             mHost.document().replacePieces(replaced, std::move(pieces), label, event);
-            mHost.notify(count == 0 ? label + " (Ctrl+Z brings it back)"
-                                    : label + ": " + std::to_string(count) + " piece" + (count == 1 ? "" : "s") +
-                                          " (Ctrl+Z undoes it)");
+            return count == 0 ? std::string() : std::to_string(count) + " piece" + (count == 1 ? "" : "s");
         });
 }
 
@@ -276,10 +274,10 @@ void PiecesTool::move(const ScriptEvent& event, const std::string& what)
 {
     if (mHost.busy()) return;
     PieceMove change = moveOf(mHost.document(), event);
-    mHost.workspace().startJob<PieceFields>(
+    mHost.workspace().startUndoable<PieceFields>(
         change.label, std::move(change.work), [this, event, change, what](PieceFields fields) {
             mHost.document().movePiece(change.piece, change.placement, std::move(fields), change.label, event);
-            mHost.notify(change.label + what + " (Ctrl+Z undoes it)");
+            return what;
         });
 }
 
@@ -355,10 +353,10 @@ void PiecesTool::endGesture(bool keep)
     }
     if (pushed.empty()) {
         document.movePiece(index, mShown, {}, label);
-        mHost.notify(label + " (Ctrl+Z undoes it)");
+        mHost.workspace().landed(label);
         return;
     }
-    move(script::MovePieceEvent{index, mShown, pushed}, ", the pieces in its way pushed aside (Ctrl+Z undoes both)");
+    move(script::MovePieceEvent{index, mShown, pushed}, "the pieces in its way pushed aside, one undo step");
 }
 
 bool PiecesTool::selectAt(double x, double y)

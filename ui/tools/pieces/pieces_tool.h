@@ -72,7 +72,8 @@ private:
     bool selectAt(double x, double y);
     /// A duplicate, delete, split or merge, made as a job, landing as one undo step.
     void replace(const ScriptEvent& event);
-    /// A move that pushes pieces aside or a placement applied, made as a job; `what` ends its notice.
+    /// A move that pushes pieces aside or a placement applied, made as a job landing as one undo
+    /// step; `what` says what it did in the notice.
     void move(const ScriptEvent& event, const std::string& what);
 
     ToolHost& mHost;
