@@ -41,6 +41,9 @@ public:
     static constexpr double kDefaultHalfWidthVoxels = 3.0;
     /// Length unit assumed when a file does not say.
     static constexpr const char* kDefaultUnits = "mm";
+    /// The frame every document's world is in: LPS (x grows to the patient's left, y to the back,
+    /// z up), as DICOM, ITK and Slicer's meshes; the scan readers convert to it (scan_frame.h).
+    static constexpr const char* kFrame = "LPS";
 
     /// Takes ownership of a level-set grid.
     /// @throws InputError if the grid is null, not a level set, has a non-uniform or

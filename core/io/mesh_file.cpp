@@ -3,12 +3,12 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
+#include "core/io/obj_file.h"
 #include "core/io/ply_file.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
-#include <vtkOBJWriter.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -61,19 +61,19 @@ bool writeWith(Writer* writer, vtkPolyData* polyData, const fs::path& path)
     return writer->Write() == 1;
 }
 
-bool writeFormat(MeshFormat format, const TriangleMesh& mesh, const fs::path& path)
+/// `mesh` (LPS) as `format` in `frame`, its header naming the frame.
+bool writeFormat(MeshFormat format, const TriangleMesh& mesh, const fs::path& path, MeshFrame frame)
 {
     switch (format) {
     case MeshFormat::Ply:
-        writePly(mesh, path);  // ours: VTK's PLY writer drops the normals
+        writePly(mesh, path, frame);  // ours: VTK's PLY writer drops the normals
         return true;
-    case MeshFormat::Obj: {
-        vtkNew<vtkOBJWriter> writer;
-        return writeWith(writer.Get(), toPolyData(mesh), path);
-    }
+    case MeshFormat::Obj: writeObjFile({{"", &mesh}}, path, frame); return true;
     case MeshFormat::Stl: {
         vtkNew<vtkSTLWriter> writer;
         writer->SetFileTypeToBinary();
+        writer->SetHeader(("written by sculpt " + meshFrameTag(frame)).c_str());  // Slicer reads the tag
+        if (frame == MeshFrame::Ras) return writeWith(writer.Get(), toPolyData(inOtherFrame(mesh)), path);
         return writeWith(writer.Get(), toPolyData(mesh), path);
     }
     }
@@ -92,13 +92,13 @@ MeshFormat meshFormatOf(const fs::path& path)
                      "' (expected .ply, .obj or .stl)");
 }
 
-void writeMesh(const TriangleMesh& mesh, const fs::path& path)
+void writeMesh(const TriangleMesh& mesh, const fs::path& path, MeshFrame frame)
 {
     const MeshFormat format = meshFormatOf(path);
     AtomicFile out(path);
     std::error_code ec;
     // The temporary exists from the start (AtomicFile): a writer that wrote nothing left it empty.
-    if (!writeFormat(format, mesh, out.temporaryPath()) || fs::file_size(out.temporaryPath(), ec) == 0 || ec) {
+    if (!writeFormat(format, mesh, out.temporaryPath(), frame) || fs::file_size(out.temporaryPath(), ec) == 0 || ec) {
         throw InputError(path.string() + ": the mesh writer failed (disk full or no permission?)");
     }
     out.commit();

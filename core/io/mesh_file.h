@@ -3,6 +3,7 @@
 /// @brief Mesh export for printing and rendering: binary PLY (ours, with normals), OBJ and binary
 ///        STL (VTK's writers).
 
+#include "core/io/mesh_frame.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
@@ -15,10 +16,11 @@ enum class MeshFormat { Ply, Obj, Stl };
 /// @throws InputError naming the path if the extension is none of those.
 MeshFormat meshFormatOf(const std::filesystem::path& path);
 
-/// Writes `mesh` atomically (temporary file, then rename). PLY and OBJ carry normals when the
-/// mesh has them.
+/// Writes `mesh` (LPS, as documents) atomically (temporary file, then rename), in `frame`: its
+/// header names it (SPACE=LPS: a PLY comment, an OBJ comment, the STL header), RAS negates x
+/// and y. PLY and OBJ carry normals when the mesh has them.
 /// @throws InputError naming the file if the extension is unknown, its directory is missing, or
 ///         the writer fails.
-void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path);
+void writeMesh(const TriangleMesh& mesh, const std::filesystem::path& path, MeshFrame frame = MeshFrame::Lps);
 
 }  // namespace sculpt

@@ -6,6 +6,7 @@
 #include "core/base/text_format.h"
 #include "core/base/union_find.h"
 #include "core/field/voxel_size.h"
+#include "core/io/mesh_frame.h"
 #include "core/io/obj_file.h"
 #include "core/io/off_file.h"
 #include "core/io/ply_file.h"
@@ -42,6 +43,7 @@ TriangleMesh readMesh(const fs::path& path)
         if (ext == ".stl") return readStl(path);
         throw InputError(path.string() + ": unknown mesh format '" + ext + "' (expected .obj, .ply, .stl or .off)");
     }();
+    if (declaredMeshFrame(path) == MeshFrame::Ras) mesh = inOtherFrame(std::move(mesh));  // documents are LPS
     joinCoincidentVertices(mesh);
     if (mesh.triangles.empty()) throw InputError(path.string() + ": no triangles in the mesh");
     for (const auto& p : mesh.positions) {

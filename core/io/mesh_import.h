@@ -23,7 +23,8 @@ namespace sculpt {
 /// True for .obj, .ply, .stl and .off paths.
 bool isMeshPath(const std::filesystem::path& path);
 
-/// Reads a mesh file into shared-vertex triangles.
+/// Reads a mesh file into shared-vertex triangles, in LPS: a header declaring SPACE=RAS (as
+/// Slicer writes it) has x and y negated; one declaring nothing is taken as LPS.
 /// @throws InputError naming the file: unknown extension, unreadable, corrupt, no triangles,
 ///         non-finite coordinates.
 TriangleMesh readMesh(const std::filesystem::path& path);

@@ -30,12 +30,14 @@ std::int64_t cornerVertex(std::string_view corner, std::int64_t verticesSoFar, c
 
 /// One object's lines; `first` and `firstNormal` are the 1-based numbers of its first vertex and
 /// normal in the file.
+/// One object's lines; `flip` negates x and y (the RAS frame).
 void writeObject(std::FILE* file, const std::string& name, const TriangleMesh& mesh, std::size_t first,
-                 std::size_t firstNormal)
+                 std::size_t firstNormal, bool flip)
 {
-    std::fprintf(file, "o %s\n", name.c_str());
-    for (const auto& p : mesh.positions) std::fprintf(file, "v %.9g %.9g %.9g\n", p[0], p[1], p[2]);
-    for (const auto& n : mesh.normals) std::fprintf(file, "vn %.6g %.6g %.6g\n", n[0], n[1], n[2]);
+    if (!name.empty()) std::fprintf(file, "o %s\n", name.c_str());
+    const float s = flip ? -1.0f : 1.0f;
+    for (const auto& p : mesh.positions) std::fprintf(file, "v %.9g %.9g %.9g\n", s * p[0], s * p[1], p[2]);
+    for (const auto& n : mesh.normals) std::fprintf(file, "vn %.6g %.6g %.6g\n", s * n[0], s * n[1], n[2]);
     const bool normals = !mesh.normals.empty();
     for (const auto& t : mesh.triangles) {
         const std::size_t a = t[0] + first, b = t[1] + first, c = t[2] + first;
@@ -50,20 +52,25 @@ void writeObject(std::FILE* file, const std::string& name, const TriangleMesh& m
 
 }  // namespace
 
-void writeObjObjects(const std::vector<std::pair<std::string, TriangleMesh>>& objects, const fs::path& path)
+void writeObjFile(const std::vector<ObjObject>& objects, const fs::path& path, MeshFrame frame)
 {
-    AtomicFile out(path);
-    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(out.temporaryPath().c_str(), "w"),
-                                                               &std::fclose);
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
     if (!file) throw InputError(path.string() + ": cannot be written");
+    std::fprintf(file.get(), "# written by sculpt\n# %s\n", meshFrameTag(frame).c_str());
     std::size_t first = 1, firstNormal = 1;
-    for (const auto& [name, mesh] : objects) {
-        writeObject(file.get(), name, mesh, first, firstNormal);
-        first += mesh.positions.size();
-        firstNormal += mesh.normals.size();
+    for (const ObjObject& object : objects) {
+        writeObject(file.get(), object.name, *object.mesh, first, firstNormal, frame == MeshFrame::Ras);
+        first += object.mesh->positions.size();
+        firstNormal += object.mesh->normals.size();
     }
     if (std::fflush(file.get()) != 0 || std::ferror(file.get()))
         throw InputError(path.string() + ": cannot be written (disk full?)");
+}
+
+void writeObjObjects(const std::vector<ObjObject>& objects, const fs::path& path, MeshFrame frame)
+{
+    AtomicFile out(path);
+    writeObjFile(objects, out.temporaryPath(), frame);
     out.commit();
 }
 

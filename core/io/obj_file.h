@@ -3,11 +3,11 @@
 /// @brief Wavefront OBJ meshes: the positions and faces; texture coordinates, normals, groups
 ///        and materials are ignored.
 
+#include "core/io/mesh_frame.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace sculpt {
@@ -18,10 +18,20 @@ namespace sculpt {
 ///         an index naming no vertex (VTK's reader imports those as a wrong shape).
 TriangleMesh readObj(const std::filesystem::path& path);
 
-/// Writes meshes as the named objects ("o name") of one OBJ file, atomically, with normals where
-/// a mesh has them: Blender and most tools import each object separately.
+/// A mesh to write as an OBJ object ("o name"; none for an empty name).
+struct ObjObject {
+    std::string name;
+    const TriangleMesh* mesh;
+};
+
+/// Writes `objects` into one OBJ file at `path` (not atomically), with normals where a mesh has
+/// them, in `frame` (from LPS; its tag in a comment): Blender and most tools import each object
+/// separately.
 /// @throws InputError naming the file if its directory is missing or it cannot be written.
-void writeObjObjects(const std::vector<std::pair<std::string, TriangleMesh>>& objects,
-                     const std::filesystem::path& path);
+void writeObjFile(const std::vector<ObjObject>& objects, const std::filesystem::path& path,
+                  MeshFrame frame = MeshFrame::Lps);
+/// writeObjFile, atomically (a temporary file, then a rename).
+void writeObjObjects(const std::vector<ObjObject>& objects, const std::filesystem::path& path,
+                     MeshFrame frame = MeshFrame::Lps);
 
 }  // namespace sculpt

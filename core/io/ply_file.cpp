@@ -291,21 +291,25 @@ TriangleMesh readPly(const fs::path& path)
     return mesh;
 }
 
-void writePly(const TriangleMesh& mesh, const fs::path& path)
+void writePly(const TriangleMesh& mesh, const fs::path& path, MeshFrame frame)
 {
     const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.normals.empty();
-    std::string bytes = "ply\nformat binary_little_endian 1.0\ncomment written by sculpt\nelement vertex " +
-                        std::to_string(mesh.positions.size()) +
+    std::string bytes = "ply\nformat binary_little_endian 1.0\ncomment written by sculpt\ncomment " +
+                        meshFrameTag(frame) + "\nelement vertex " + std::to_string(mesh.positions.size()) +
                         "\nproperty float x\nproperty float y\nproperty float z\n";
     if (normals) bytes += "property float nx\nproperty float ny\nproperty float nz\n";
     bytes += "element face " + std::to_string(mesh.triangles.size()) +
              "\nproperty list uchar int vertex_indices\nend_header\n";
     bytes.reserve(bytes.size() + mesh.positions.size() * (normals ? 24 : 12) + mesh.triangles.size() * 13);
+    const float flip = frame == MeshFrame::Ras ? -1.0f : 1.0f;  // RAS: x and y negated
+    const auto appendVector = [&](const std::array<float, 3>& v) {
+        appendLittle(bytes, flip * v[0]);
+        appendLittle(bytes, flip * v[1]);
+        appendLittle(bytes, v[2]);
+    };
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-        for (float x : mesh.positions[v]) appendLittle(bytes, x);
-        if (normals) {
-            for (float n : mesh.normals[v]) appendLittle(bytes, n);
-        }
+        appendVector(mesh.positions[v]);
+        if (normals) appendVector(mesh.normals[v]);
     }
     for (const auto& t : mesh.triangles) {
         bytes.push_back(char(3));

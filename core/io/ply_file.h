@@ -3,6 +3,7 @@
 /// @brief PLY meshes (Stanford): read in text and both binary byte orders, every length and index
 ///        checked against the file; written as binary little-endian with per-vertex normals.
 
+#include "core/io/mesh_frame.h"
 #include "core/mesh/triangle_mesh.h"
 
 #include <filesystem>
@@ -16,8 +17,9 @@ namespace sculpt {
 TriangleMesh readPly(const std::filesystem::path& path);
 
 /// Binary little-endian PLY: x y z (float) and, when the mesh has normals, nx ny nz; faces as
-/// uchar-counted int lists. Written to `path` as given (writeMesh makes it atomic).
+/// uchar-counted int lists; in `frame` (from LPS), its tag (SPACE=LPS) in a comment.
+/// Written to `path` as given (writeMesh makes it atomic).
 /// @throws InputError naming the file if it cannot be written.
-void writePly(const TriangleMesh& mesh, const std::filesystem::path& path);
+void writePly(const TriangleMesh& mesh, const std::filesystem::path& path, MeshFrame frame = MeshFrame::Lps);
 
 }  // namespace sculpt

@@ -173,7 +173,8 @@ ScanVolume readInrimage(const fs::path& path)
             std::reverse(samples + std::size_t(at), samples + std::size_t(at) + size);
     }
     vtkSmartPointer<vtkImageData> kept = image.Get();
-    return makeScan(kept, placement(kept, nullptr), path.string());
+    return makeScan(kept, placement(kept, nullptr), path.string(),
+                    {path.string() + ": INRIMAGE declares no patient frame: taken as LPS millimetres"});
 }
 
 }  // namespace sculpt

@@ -1,7 +1,9 @@
-// checkMetaImageHeader (header_checks.h): a MetaImage's text header and the samples it says it has.
+// checkMetaImageHeader (header_checks.h): a MetaImage's text header and the samples it says it
+// has; and metaImagePlacement (scan_frame.h): where the header places them.
 #include "core/base/errors.h"
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
+#include "core/scan/scan_frame.h"
 #include "core/scan/sample_files.h"
 
 #include <algorithm>
@@ -78,23 +80,78 @@ void checkSamples(const HeaderFields& fields, const std::vector<fs::path>& files
     }
 }
 
-}  // namespace
-
-void checkMetaImageHeader(const fs::path& path)
+/// The header's lines, up to and including its ElementDataFile line, and their bytes; `in`
+/// stays after them (a LIST's names follow).
+std::vector<std::string> metaImageHeaderLines(std::ifstream& in, const std::string& where, std::size_t& bytes)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string() + ": cannot read the file");
-    const std::string where = path.string() + ": ";
-    // The header ends with its ElementDataFile line (included in `headerBytes`).
-    std::size_t headerBytes = 0;
     std::string dataLine;
-    std::vector<std::string> lines = headerLines(in, where, headerBytes, [&](const std::string& line) {
+    std::vector<std::string> lines = headerLines(in, where, bytes, [&](const std::string& line) {
         if (trimmed(line).rfind("ElementDataFile", 0) != 0) return false;
         dataLine = line;
         return true;
     });
     if (dataLine.empty()) throw InputError(where + "the MetaImage header has no ElementDataFile line");
     lines.push_back(dataLine);
+    return lines;
+}
+
+/// The first of `keys` the header has, as `count` numbers (`fallback` if none has it).
+std::vector<double> firstOf(const HeaderFields& fields, std::initializer_list<const char*> keys, std::size_t count,
+                            std::vector<double> fallback, const std::string& where)
+{
+    for (const char* key : keys) {
+        if (!fields.has(key)) continue;
+        std::vector<double> numbers = fields.numbers(key, where);
+        if (numbers.size() < count)
+            throw InputError(where + key + " '" + fields.text(key) + "' has fewer than " + std::to_string(count) +
+                             " numbers");
+        numbers.resize(count);
+        return numbers;
+    }
+    return fallback;
+}
+
+std::ifstream openHeader(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string() + ": cannot read the file");
+    return in;
+}
+
+}  // namespace
+
+ScanPlacement metaImagePlacement(const fs::path& path)
+{
+    const std::string where = path.string() + ": ";
+    std::ifstream in = openHeader(path);
+    std::size_t bytes = 0;
+    const HeaderFields fields(metaImageHeaderLines(in, where, bytes), "=");
+    const std::vector<double> ndims = fields.numbers("NDims", where);
+    const std::size_t dims = ndims.empty() ? 3 : std::size_t(std::clamp(ndims[0], 1.0, 4.0));
+    const std::size_t n = std::min<std::size_t>(dims, 3);  // the axes in space (a fourth: channels)
+    const std::vector<double> origin =
+        firstOf(fields, {"Offset", "Origin", "Position"}, n, std::vector<double>(n, 0.0), where);
+    const std::vector<double> spacing = firstOf(fields, {"ElementSpacing"}, n, std::vector<double>(n, 1.0), where);
+    std::vector<double> identity(dims * dims, 0.0);
+    for (std::size_t a = 0; a < dims; ++a) identity[a * dims + a] = 1.0;
+    // A row per axis: the direction of axis a is numbers a*dims .. (as ITK writes it).
+    const std::vector<double> rows =
+        firstOf(fields, {"TransformMatrix", "Rotation", "Orientation"}, dims * dims, identity, where);
+    ScanPlacement placed;  // ITK's frame is LPS, in millimetres: nothing to convert
+    for (std::size_t a = 0; a < n; ++a) {
+        for (std::size_t c = 0; c < n; ++c) placed.worldFromIndex[int(a)][int(c)] = spacing[a] * rows[a * dims + c];
+        placed.worldFromIndex[3][int(a)] = origin[a];
+    }
+    return placed;
+}
+
+void checkMetaImageHeader(const fs::path& path)
+{
+    const std::string where = path.string() + ": ";
+    std::ifstream in = openHeader(path);
+    // The header ends with its ElementDataFile line (included in `headerBytes`).
+    std::size_t headerBytes = 0;
+    const std::vector<std::string> lines = metaImageHeaderLines(in, where, headerBytes);
     const HeaderFields fields(lines, "=");
     const double samples = checkDimensions(fields, where);
     checkPlacement(fields, where);

@@ -1,7 +1,9 @@
-// checkNrrdHeader (header_checks.h): a NRRD's text header and the samples it says it has.
+// checkNrrdHeader (header_checks.h): a NRRD's text header and the samples it says it has; and
+// nrrdPlacement (scan_frame.h): where the header places them.
 #include "core/base/errors.h"
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
+#include "core/scan/scan_frame.h"
 #include "core/scan/sample_files.h"
 
 #include <algorithm>
@@ -77,9 +79,8 @@ std::vector<std::string> linesAfterDataFile(const std::vector<std::string>& line
     return at == lines.end() ? std::vector<std::string>{} : std::vector<std::string>(at + 1, lines.end());
 }
 
-}  // namespace
-
-void checkNrrdHeader(const fs::path& path)
+/// The header's lines (comments left out) and its bytes, the magic line's included.
+std::vector<std::string> nrrdHeaderLines(const fs::path& path, std::size_t& bytes)
 {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string() + ": cannot read the file");
@@ -87,11 +88,105 @@ void checkNrrdHeader(const fs::path& path)
     std::string magic;
     std::getline(in, magic);
     if (magic.rfind("NRRD000", 0) != 0) throw InputError(where + "not a NRRD file (it must start with NRRD000)");
-    std::size_t bytes = 0;
     std::vector<std::string> lines = headerLines(in, where, bytes, [](const std::string& l) { return l.empty(); });
     bytes += magic.size() + 1;
     lines.erase(std::remove_if(lines.begin(), lines.end(), [](const std::string& l) { return l[0] == '#'; }),
                 lines.end());
+    return lines;
+}
+
+/// The vectors of a `space directions` or `space origin` field, "(x,y,z)" (or "(x,y)") each;
+/// "none" (an axis not in space) is left out.
+std::vector<openvdb::Vec3d> vectorsOf(const std::string& text, const std::string& where, const std::string& field)
+{
+    std::vector<openvdb::Vec3d> vectors;
+    for (std::size_t open = text.find('('); open != std::string::npos; open = text.find('(', open + 1)) {
+        const std::size_t close = text.find(')', open);
+        const std::vector<double> v = finiteNumbers(text.substr(open + 1, close - open - 1), where, field);
+        if (close == std::string::npos || v.size() < 2 || v.size() > 3)
+            throw InputError(where + field + " '" + text + "' are not vectors of two or three numbers");
+        vectors.emplace_back(v[0], v[1], v.size() == 3 ? v[2] : 0.0);  // a 2D space lies in z = 0
+    }
+    return vectors;
+}
+
+/// The axes in space, each scaled by its spacing: `space directions`, else `spacings` along x,
+/// y and z. Fewer than three (a slice) are completed by unit steps.
+std::vector<openvdb::Vec3d> spatialAxes(const HeaderFields& fields, const std::string& where)
+{
+    std::vector<openvdb::Vec3d> axes;
+    if (fields.has("space directions")) {
+        axes = vectorsOf(fields.text("space directions"), where, "space directions");
+    } else {
+        const std::vector<double> spacings = finiteNumbers(withoutNone(fields.text("spacings")), where, "spacings");
+        for (std::size_t a = 0; a < spacings.size() && a < 3; ++a) {
+            openvdb::Vec3d axis(0.0);
+            axis[int(a)] = spacings[a];
+            axes.push_back(axis);
+        }
+    }
+    if (axes.size() > 3) throw InputError(where + std::to_string(axes.size()) + " axes in space (expected 3)");
+    while (axes.size() < 3) {
+        openvdb::Vec3d axis(0.0);
+        axis[int(axes.size())] = 1.0;
+        axes.push_back(axis);
+    }
+    return axes;
+}
+
+/// Millimetres per unit of `space units` ("mm" "mm" "mm"): one length for all axes.
+double spaceUnits(const HeaderFields& fields, const std::string& where, std::vector<std::string>& notes)
+{
+    if (!fields.has("space units")) return 1.0;
+    std::vector<std::string> units;
+    const std::string text = fields.text("space units");
+    for (std::size_t open = text.find('"'); open != std::string::npos; open = text.find('"', open + 1)) {
+        const std::size_t close = text.find('"', open + 1);
+        if (close == std::string::npos) break;
+        units.push_back(text.substr(open + 1, close - open - 1));
+        open = close;
+    }
+    const std::optional<double> first = units.empty() ? std::nullopt : millimetresPer(units.front());
+    const bool alike = std::all_of(units.begin(), units.end(), [&](const std::string& u) { return u == units[0]; });
+    if (first && alike) return *first;
+    notes.push_back(where + "space units '" + text + "' are not one known length: taken as millimetres");
+    return 1.0;
+}
+
+}  // namespace
+
+ScanPlacement nrrdPlacement(const fs::path& path)
+{
+    const std::string where = path.string() + ": ";
+    std::size_t bytes = 0;
+    const HeaderFields fields(nrrdHeaderLines(path, bytes), ":");
+    ScanPlacement placed;
+    const std::vector<openvdb::Vec3d> axes = spatialAxes(fields, where);
+    openvdb::Mat4d m = openvdb::Mat4d::identity();
+    for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c) m[a][c] = axes[std::size_t(a)][c];
+    if (fields.has("space origin")) {
+        const std::vector<openvdb::Vec3d> origin = vectorsOf(fields.text("space origin"), where, "space origin");
+        if (origin.size() != 1) throw InputError(where + "space origin '" + fields.text("space origin") + "' is not one point");
+        m.setTranslation(origin.front());
+    }
+    const std::string space = fields.text("space");
+    std::optional<openvdb::Vec3d> signs = anatomicalSigns(space);
+    if (!signs) {
+        placed.notes.push_back(where + (space.empty() ? std::string("no anatomical space declared")
+                                                      : "space '" + space + "' is not anatomical") +
+                               ": taken as left-posterior-superior (LPS)");
+        signs = openvdb::Vec3d(1.0);
+    }
+    placed.worldFromIndex = inLpsMillimetres(m, *signs, spaceUnits(fields, where, placed.notes));
+    return placed;
+}
+
+void checkNrrdHeader(const fs::path& path)
+{
+    const std::string where = path.string() + ": ";
+    std::size_t bytes = 0;
+    const std::vector<std::string> lines = nrrdHeaderLines(path, bytes);
     const HeaderFields fields(lines, ":");
     const double sample = typeBytes(fields.text("type"));
     if (sample == 0.0) throw InputError(where + "unknown or missing sample type '" + fields.text("type") + "'");

@@ -11,6 +11,7 @@
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
 #include "core/scan/inrimage_file.h"
+#include "core/scan/scan_frame.h"
 #include "core/scan/scan_transfer.h"
 #include "core/scan/vtk_image_scan.h"
 
@@ -69,27 +70,24 @@ ScanVolume readNifti(const fs::path& path)
     std::vector<std::string> warnings;
     if (!notes.empty())
         warnings.push_back(path.string() + ": its sform is mirrored against its qform; placed by the sform");
-    return makeScan(image, placement(image, orientation), path.string(), warnings);
+    if (!orientation)
+        warnings.push_back(path.string() + ": neither sform nor qform places it: placed by its spacings, as RAS");
+    // The sform and qform map to RAS (x to the right, y to the front), in xyzt_units.
+    const int units = reader->GetNIFTIHeader()->GetXYZTUnits();
+    return makeScan(image, inLpsMillimetres(placement(image, orientation), kRasSigns, niftiMillimetresPer(units)),
+                    path.string(), warnings);
 }
 
+/// A NRRD or MetaImage: VTK reads the samples, the header's own placement (`place`) puts them
+/// where the file says (VTK 9.1's readers drop the direction cosines).
 template <typename ReaderT>
-ScanVolume readWithDirection(const fs::path& path)
+ScanVolume readPlaced(const fs::path& path, ScanPlacement (*place)(const fs::path&))
 {
     vtkNew<ReaderT> reader;
     reader->SetFileName(path.string().c_str());
     vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
-    vtkNew<vtkMatrix4x4> direction;  // the image's direction cosines, if the reader set them
-    const double* d = image->GetDirectionMatrix()->GetData();
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) direction->SetElement(r, c, d[3 * r + c]);
-    }
-    // Placement already includes the origin; rotate about it.
-    double origin[3];
-    image->GetOrigin(origin);
-    image->SetOrigin(0.0, 0.0, 0.0);
-    openvdb::Mat4d m = placement(image, direction);
-    m.setTranslation(openvdb::Vec3d(origin[0], origin[1], origin[2]));
-    return makeScan(image, m, path.string());
+    ScanPlacement placed = place(path);
+    return makeScan(image, placed.worldFromIndex, path.string(), std::move(placed.notes));
 }
 
 constexpr EnumNames<int, 8> kSampleTypes{{{VTK_UNSIGNED_CHAR, "uint8"},
@@ -140,8 +138,8 @@ ScanVolume decodeScan(const fs::path& path, ScanFormat format)
     switch (format) {
     case ScanFormat::Dicom: return readDicomSeries(path);
     case ScanFormat::Nifti: return readNifti(path);
-    case ScanFormat::Nrrd: return readWithDirection<vtkNrrdReader>(path);
-    case ScanFormat::MetaImage: return readWithDirection<vtkMetaImageReader>(path);
+    case ScanFormat::Nrrd: return readPlaced<vtkNrrdReader>(path, nrrdPlacement);
+    case ScanFormat::MetaImage: return readPlaced<vtkMetaImageReader>(path, metaImagePlacement);
     case ScanFormat::Inrimage: return readInrimage(path);
     }
     throw std::logic_error("unknown scan format");
@@ -237,7 +235,8 @@ ScanVolume decodeRawScan(const fs::path& path, const RawLayout& layout)
     reader->SetDataOrigin(layout.origin[0], layout.origin[1], layout.origin[2]);
     reader->FileLowerLeftOn();
     vtkSmartPointer<vtkImageData> image = runReader(reader, path.string());
-    return makeScan(image, placement(image, nullptr), path.string());
+    return makeScan(image, placement(image, nullptr), path.string(),
+                    {path.string() + ": raw samples declare no patient frame: placed as given, as LPS millimetres"});
 }
 
 }  // namespace

@@ -135,6 +135,7 @@ void runInfo(const InfoOptions& o)
     const std::string& units = pieces.front().field.units();
     if (o.json) {
         nlohmann::json report = toJson(all, units);
+        report["frame"] = FieldImage::kFrame;
         report["grid"] = pieces.front().field.grid().getName();
         report["grids"] = gridsJson(layout);
         report["pieces"] = nlohmann::json::array();
@@ -157,6 +158,8 @@ void runInfo(const InfoOptions& o)
     } else {
         printPieces(pieces, measures, othersThan(layout, pieces));
     }
+    std::printf("frame:                %s %s (x to the patient's left, y to the back, z up)\n", FieldImage::kFrame,
+                units.c_str());
     printMeasures(all, units);
     if (o.thickness <= 0.0) return;
     const nlohmann::json thinnest = thinnestJson(pieces.front().field, o.thickness);
@@ -183,8 +186,9 @@ void addInfoCommand(CLI::App& app)
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
                   "bbox_min, bbox_max, volume, area, euler_characteristic, components\n"
-                  "(plus units, half_width_voxels, grid: the first grid measured, grids: every\n"
-                  "grid of the file with its name, type and class, and pieces: the same keys per\n"
+                  "(plus units, frame: LPS, x to the patient's left, y to the back, z up;\n"
+                  "half_width_voxels, grid: the first grid measured, grids: every grid of the file\n"
+                  "with its name, type and class, and pieces: the same keys per\n"
                   "piece with its name, colour (sRGB 0..1) and visible; the top-level keys are the\n"
                   "pieces' total)");
     cmd->add_option("--thickness", options->thickness,

@@ -13,12 +13,13 @@ namespace {
 struct MeshOptions {
     DocumentInput input;
     std::string output;
+    bool ras = false;
 };
 
 void runMesh(const MeshOptions& o)
 {
     checkMeshOutput(o.output);
-    writePiecesMeshes(readPieces(o.input), o.output);
+    writePiecesMeshes(readPieces(o.input), o.output, o.ras ? MeshFrame::Ras : MeshFrame::Lps);
 }
 
 }  // namespace
@@ -34,6 +35,10 @@ void addMeshCommand(CLI::App& app)
                                    "OUTPUT's stem, a dash and the piece's name; --piece NAME exports one.");
     addDocumentInput(*cmd, options->input, "the .vdb document to mesh");
     cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
+    cmd->add_flag("--ras", options->ras,
+                  "write RAS coordinates (x to the patient's right, y to the front: FreeSurfer, nibabel)\n"
+                  "instead of the document's LPS (x to the left, y to the back: DICOM, ITK, Slicer);\n"
+                  "the header names the frame either way (SPACE=LPS or SPACE=RAS, as Slicer reads it)");
     cmd->callback([options] { runMesh(*options); });
 }
 

@@ -24,13 +24,13 @@ void writeMeshOutput(const FieldImage& field, const std::string& path)
     std::cout << "wrote " << path << ": " << mesh.triangles.size() << " triangles\n";
 }
 
-void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path)
+void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path, MeshFrame frame)
 {
     checkMeshOutput(path);
     std::vector<PieceMesh> meshes;
     for (const Piece& piece : pieces)
         meshes.push_back({piece.name, placedMesh(meshLevelSet(piece.field), piece.placement)});
-    for (const std::string& line : writePieceMeshes(meshes, path)) std::cout << line << "\n";
+    for (const std::string& line : writePieceMeshes(meshes, path, frame)) std::cout << line << "\n";
 }
 
 }  // namespace sculpt::cli

@@ -41,15 +41,16 @@ TriangleMesh placedMesh(TriangleMesh mesh, const openvdb::Mat4d& placement)
     return mesh;
 }
 
-std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path)
+std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path,
+                                          MeshFrame frame)
 {
     meshFormatOf(path);
     AtomicFile::checkTarget(path);
     std::vector<std::string> lines;
     if (pieces.size() > 1 && meshFormatOf(path) == MeshFormat::Obj) {
-        std::vector<std::pair<std::string, TriangleMesh>> objects;
-        for (const PieceMesh& piece : pieces) objects.emplace_back(piece.name, piece.mesh);
-        writeObjObjects(objects, path);
+        std::vector<ObjObject> objects;
+        for (const PieceMesh& piece : pieces) objects.push_back({piece.name, &piece.mesh});
+        writeObjObjects(objects, path, frame);
         for (const PieceMesh& piece : pieces)
             lines.push_back(wrote(path.string(), " object '" + piece.name + "'", piece.mesh));
         return lines;
@@ -62,7 +63,7 @@ std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, 
         AtomicFile::checkTarget(files.back());
     }
     for (std::size_t i = 0; i < pieces.size(); ++i) {
-        writeMesh(pieces[i].mesh, files[i]);
+        writeMesh(pieces[i].mesh, files[i], frame);
         lines.push_back(
             wrote(files[i].string(), pieces.size() > 1 ? " (piece '" + pieces[i].name + "')" : "", pieces[i].mesh));
     }

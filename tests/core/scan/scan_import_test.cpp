@@ -75,7 +75,10 @@ TEST(ScanImport, NiftiMetaImageNrrdAndRawKeepSpacingAndOrigin)
         shifted->SetOrigin(0.0, 0.0, 0.0);
         writer->SetInputData(shifted);
         writer->Write();
-        expectBallAt(readScan(dir / "ball.nii.gz"), ball, "NIfTI");
+        // The qform places it in RAS: in the documents' LPS, x and y are negated.
+        SyntheticBall inLps = ball;
+        inLps.centre = openvdb::Vec3d(-ball.centre.x(), -ball.centre.y(), ball.centre.z());
+        expectBallAt(readScan(dir / "ball.nii.gz"), inLps, "NIfTI");
     }
     {
         writeMetaImage(image, dir / "ball.mhd");

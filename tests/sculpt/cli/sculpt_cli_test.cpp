@@ -1,6 +1,8 @@
 // End to end: the `sculpt` program on a temporary directory, as a user runs it.
 
 #include "core/field/grid_checksum.h"
+#include "core/io/mesh_import.h"
+#include "core/io/ply_file.h"
 #include "core/io/vdb_layout.h"
 #include "core/primitives/analytic_shapes.h"
 #include "tests/support/file_bytes.h"
@@ -87,6 +89,36 @@ TEST(SculptCli, TextInfoNamesEveryMeasure)
     for (const char* label : {"voxel size", "active voxels", "memory", "bounding box", "volume", "area",
                               "euler characteristic", "components"}) {
         EXPECT_NE(r.out.find(label), std::string::npos) << label;
+    }
+}
+
+TEST(SculptCli, DocumentsAreLpsAndMeshesNameTheirFrameWhichRasNegatesInXAndYOnly)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    EXPECT_EQ(infoJson(dir, "s.vdb")["frame"], "LPS");
+    EXPECT_NE(runSculpt("info s.vdb", dir.path()).out.find("frame:                LPS mm"), std::string::npos);
+
+    for (const char* ext : {".ply", ".obj", ".stl"}) {
+        const std::string lps = std::string("lps") + ext, ras = std::string("ras") + ext;
+        ASSERT_EQ(runSculpt("mesh s.vdb -o " + lps, dir.path()).exitCode, 0) << ext;
+        ASSERT_EQ(runSculpt("mesh s.vdb --ras -o " + ras, dir.path()).exitCode, 0) << ext;
+        EXPECT_NE(fileBytes(dir / lps).find("SPACE=LPS"), std::string::npos) << ext;
+        EXPECT_NE(fileBytes(dir / ras).find("SPACE=RAS"), std::string::npos) << ext;
+        // Our importer honours the header: both read back in LPS, the same.
+        const TriangleMesh a = readMesh(dir / lps), b = readMesh(dir / ras);
+        ASSERT_EQ(a.positions.size(), b.positions.size()) << ext;
+        EXPECT_EQ(a.triangles, b.triangles) << ext;
+        for (std::size_t v = 0; v < a.positions.size(); ++v)
+            ASSERT_EQ(a.positions[v], b.positions[v]) << ext << " vertex " << v;
+    }
+    // As written: x and y negated, z and the triangles (their winding too) as they were.
+    const TriangleMesh lps = readPly(dir / "lps.ply"), ras = readPly(dir / "ras.ply");
+    ASSERT_EQ(lps.positions.size(), ras.positions.size());
+    EXPECT_EQ(lps.triangles, ras.triangles);
+    for (std::size_t v = 0; v < lps.positions.size(); ++v) {
+        const auto& p = lps.positions[v];
+        ASSERT_EQ(ras.positions[v], (std::array<float, 3>{-p[0], -p[1], p[2]})) << "vertex " << v;
     }
 }
 
