@@ -253,7 +253,8 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
                              std::to_string(kVdbFormatVersion) + ")");
         }
     }
-    if (auto frame = meta.getMetadata<openvdb::StringMetadata>(kMetaFrame); frame && frame->value() != FieldImage::kFrame)
+    if (auto frame = meta.getMetadata<openvdb::StringMetadata>(kMetaFrame);
+        frame && frame->value() != FieldImage::kFrame)
         throw InputError(path.string() + ": its world is in the frame '" + frame->value() + "' (this program reads " +
                          FieldImage::kFrame + " documents)");
     if (!edited) return;

@@ -3,8 +3,8 @@
 #include "core/base/errors.h"
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
-#include "core/scan/scan_frame.h"
 #include "core/scan/sample_files.h"
+#include "core/scan/scan_frame.h"
 
 #include <algorithm>
 #include <cmath>

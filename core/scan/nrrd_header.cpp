@@ -3,8 +3,8 @@
 #include "core/base/errors.h"
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
-#include "core/scan/scan_frame.h"
 #include "core/scan/sample_files.h"
+#include "core/scan/scan_frame.h"
 
 #include <algorithm>
 #include <cmath>
@@ -167,15 +167,17 @@ ScanPlacement nrrdPlacement(const fs::path& path)
         for (int c = 0; c < 3; ++c) m[a][c] = axes[std::size_t(a)][c];
     if (fields.has("space origin")) {
         const std::vector<openvdb::Vec3d> origin = vectorsOf(fields.text("space origin"), where, "space origin");
-        if (origin.size() != 1) throw InputError(where + "space origin '" + fields.text("space origin") + "' is not one point");
+        if (origin.size() != 1)
+            throw InputError(where + "space origin '" + fields.text("space origin") + "' is not one point");
         m.setTranslation(origin.front());
     }
     const std::string space = fields.text("space");
     std::optional<openvdb::Vec3d> signs = anatomicalSigns(space);
     if (!signs) {
-        placed.notes.push_back(where + (space.empty() ? std::string("no anatomical space declared")
-                                                      : "space '" + space + "' is not anatomical") +
-                               ": taken as left-posterior-superior (LPS)");
+        placed.notes.push_back(
+            where +
+            (space.empty() ? std::string("no anatomical space declared") : "space '" + space + "' is not anatomical") +
+            ": taken as left-posterior-superior (LPS)");
         signs = openvdb::Vec3d(1.0);
     }
     placed.worldFromIndex = inLpsMillimetres(m, *signs, spaceUnits(fields, where, placed.notes));

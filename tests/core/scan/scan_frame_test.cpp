@@ -28,9 +28,9 @@ using openvdb::Vec3d;
 using test::TempDir;
 
 constexpr int kNx = 32, kNy = 32, kNz = 24;
-constexpr double kSpacing = 2.0;              // mm
-const Vec3d kMarker(24.0, -30.0, 10.0);       // LPS: 24 mm to the left, 30 mm to the front
-constexpr double kMarkerRadius = 7.0;         // mm
+constexpr double kSpacing = 2.0;             // mm
+const Vec3d kMarker(24.0, -30.0, 10.0);      // LPS: 24 mm to the left, 30 mm to the front
+constexpr double kMarkerRadius = 7.0;        // mm
 const Vec3d kRasOrigin(-55.0, -1.0, -13.0);  // of sample (0, 0, 0), in RAS: the marker inside
 
 /// LPS from RAS and back: x and y negated.
@@ -49,10 +49,7 @@ std::vector<std::int16_t> samples(const std::function<Vec3d(int, int, int)>& lps
 }
 
 /// A RAS lattice from `origin` along +x, +y, +z: NIfTI's and the RAS NRRD's.
-Vec3d rasLattice(const Vec3d& origin, int i, int j, int k)
-{
-    return flipped(origin + kSpacing * Vec3d(i, j, k));
-}
+Vec3d rasLattice(const Vec3d& origin, int i, int j, int k) { return flipped(origin + kSpacing * Vec3d(i, j, k)); }
 
 void put(std::string& bytes, std::size_t at, const void* value, std::size_t size)
 {
