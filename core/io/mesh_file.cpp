@@ -95,6 +95,7 @@ MeshFormat meshFormatOf(const fs::path& path)
 void writeMesh(const TriangleMesh& mesh, const fs::path& path, MeshFrame frame)
 {
     const MeshFormat format = meshFormatOf(path);
+    if (!mesh.finite()) throw InputError(path.string() + ": a vertex is not a finite number: not written");
     AtomicFile out(path);
     std::error_code ec;
     // The temporary exists from the start (AtomicFile): a writer that wrote nothing left it empty.

@@ -54,6 +54,8 @@ void writeObject(std::FILE* file, const std::string& name, const TriangleMesh& m
 
 void writeObjFile(const std::vector<ObjObject>& objects, const fs::path& path, MeshFrame frame)
 {
+    for (const ObjObject& object : objects)
+        if (!object.mesh->finite()) throw InputError(path.string() + ": a vertex is not a finite number: not written");
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
     if (!file) throw InputError(path.string() + ": cannot be written");
     std::fprintf(file.get(), "# written by sculpt\n# %s\n", meshFrameTag(frame).c_str());

@@ -6,6 +6,7 @@
 #include "core/base/text_format.h"
 #include "core/field/band_repair.h"
 #include "core/field/grid_checksum.h"
+#include "core/field/placement_check.h"
 #include "core/io/bounded_reader.h"
 #include "core/io/memory_stream.h"
 #include "core/io/vdb_layout.h"
@@ -271,6 +272,19 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
     }
 }
 
+/// Refused, naming the grid, if a value of it (a voxel or a tile, active or not) is not a finite
+/// number: a NaN would reach measurements, meshes and other files.
+void requireFiniteValues(const openvdb::FloatGrid& grid, const fs::path& path)
+{
+    for (auto it = grid.cbeginValueAll(); it; ++it) {
+        if (std::isfinite(*it)) continue;
+        const openvdb::Coord at = it.getCoord();
+        throw InputError(path.string() + ": grid '" + grid.getName() + "' holds a value that is not a finite number (" +
+                         std::to_string(*it) + " at voxel " + std::to_string(at.x()) + " " + std::to_string(at.y()) +
+                         " " + std::to_string(at.z()) + "): corrupt");
+    }
+}
+
 VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
 {
     const VdbLayout layout = scanVdbLayout(path);
@@ -284,6 +298,7 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     std::string units = FieldImage::kDefaultUnits;
     if (auto u = meta.getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
     checkPieceChecksum(*grid);
+    requireFiniteValues(*grid, path);
     FieldImage field(asNarrowBand(grid, path, warnings), units);
     checkDocumentMetadata(meta, field, path, layout.editedGrid.empty() || layout.editedGrid == chosen.name);
     attachMask(field, chosen.name, companions.grids);
@@ -294,14 +309,25 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
 }
 
 /// A piece with the look its grid's metadata records (the defaults where it records none).
-Piece pieceOf(FieldImage field)
+/// Refused (naming the piece and the field) if the look cannot be: a colour outside 0..1 or not a
+/// number, a placement placementProblem refuses.
+Piece pieceOf(FieldImage field, const fs::path& path)
 {
     const openvdb::FloatGrid& grid = field.grid();
     Piece piece{{grid.getName().empty() ? "surface" : grid.getName()}, std::move(field)};
-    if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) piece.colour = colour->value();
+    const std::string where = path.string() + ": piece '" + piece.name + "': ";
+    if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) {
+        piece.colour = colour->value();
+        for (int c = 0; c < 3; ++c)
+            if (!(piece.colour[c] >= 0.0f && piece.colour[c] <= 1.0f))
+                throw InputError(where + "its colour (" + kMetaPieceColour + ") is not three numbers from 0 to 1");
+    }
     if (auto visible = grid.getMetadata<openvdb::BoolMetadata>(kMetaPieceVisible)) piece.visible = visible->value();
-    if (auto placement = grid.getMetadata<openvdb::Mat4DMetadata>(kMetaPiecePlacement))
+    if (auto placement = grid.getMetadata<openvdb::Mat4DMetadata>(kMetaPiecePlacement)) {
         piece.placement = placement->value();
+        if (const std::string problem = placementProblem(piece.placement); !problem.empty())
+            throw InputError(where + "its placement (" + kMetaPiecePlacement + ") cannot be: " + problem);
+    }
     return piece;
 }
 
@@ -357,7 +383,7 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
 {
     VdbDocument document = readVdbDocument(path, gridName);
     const std::string units = document.field.units();
-    VdbPieces read{{pieceOf(std::move(document.field))},
+    VdbPieces read{{pieceOf(std::move(document.field), path)},
                    {{}, std::move(document.companions.metadata)},
                    std::move(document.warnings)};
     for (const openvdb::GridBase::Ptr& grid : document.companions.grids) {
@@ -366,14 +392,18 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
             read.companions.grids.push_back(grid);
             continue;
         }
-        try {
-            checkPieceChecksum(*levelSet);
-            FieldImage field(levelSet, units);
-            attachMask(field, levelSet->getName(), document.companions.grids);
-            read.pieces.push_back(pieceOf(std::move(field)));
-        } catch (const InputError& e) {
-            throw InputError(path.string() + ": " + e.what());
-        }
+        requireFiniteValues(*levelSet, path);
+        FieldImage field = [&] {
+            try {
+                checkPieceChecksum(*levelSet);
+                FieldImage piece(levelSet, units);
+                attachMask(piece, levelSet->getName(), document.companions.grids);
+                return piece;
+            } catch (const InputError& e) {
+                throw InputError(path.string() + ": " + e.what());
+            }
+        }();
+        read.pieces.push_back(pieceOf(std::move(field), path));
     }
     return read;
 }

@@ -2,7 +2,9 @@
 /// @file triangle_mesh.h
 /// @brief An indexed triangle mesh in world coordinates: what meshers produce and writers save.
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -43,6 +45,14 @@ struct TriangleMesh {
     MeshArray<std::array<float, 3>> normals;
     /// #F triangles as indices into positions, counter-clockwise seen from outside.
     MeshArray<std::array<std::uint32_t, 3>> triangles;
+
+    /// Every position a finite number (what a writer may write).
+    bool finite() const
+    {
+        return std::all_of(positions.begin(), positions.end(), [](const std::array<float, 3>& p) {
+            return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+        });
+    }
 };
 
 }  // namespace sculpt

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/json_fields.h"
+#include "core/field/placement_check.h"
 #include "core/primitives/scene_file.h"
 #include "sculpt/session/sculpt_session.h"
 #include "sculpt/session/shape_import.h"
@@ -262,8 +263,8 @@ std::size_t pieceIndex(const json& j, const char* key, const std::string& where)
     return wholeNumber(j, key, 0.0, kMaxPieceIndex, where);
 }
 
-/// A piece's placement: 16 numbers row by row (OpenVDB's row vectors), an affine map that turns,
-/// scales by a bounded amount and moves.
+/// A piece's placement: 16 numbers row by row (OpenVDB's row vectors), one placementProblem
+/// accepts.
 openvdb::Mat4d parsePlacement(const json& j, const std::string& where)
 {
     if (!j.is_array() || j.size() != 16) throw InputError(where + ": field 'placement' must be an array of 16 numbers");
@@ -274,10 +275,8 @@ openvdb::Mat4d parsePlacement(const json& j, const std::string& where)
             throw InputError(where + ": field 'placement' must hold finite numbers only");
         m(k / 4, k % 4) = v.get<double>();
     }
-    const double det = std::abs(m.getMat3().det());
-    if (m(0, 3) != 0.0 || m(1, 3) != 0.0 || m(2, 3) != 0.0 || m(3, 3) != 1.0 || !(det > 1e-9 && det < 1e9))
-        throw InputError(where +
-                         ": field 'placement' must be an affine map scaling by 1e-3 to 1e3 (last column 0 0 0 1)");
+    if (const std::string problem = placementProblem(m); !problem.empty())
+        throw InputError(where + ": field 'placement' cannot place a piece: " + problem);
     return m;
 }
 

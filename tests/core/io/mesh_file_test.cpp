@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/io/mesh_file.h"
+#include "core/io/obj_file.h"
 #include "core/mesh/field_measures.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/primitives/analytic_shapes.h"
@@ -17,6 +18,7 @@
 #include <vtkPolyData.h>
 
 #include <cmath>
+#include <limits>
 
 namespace sculpt {
 namespace {
@@ -93,6 +95,24 @@ TEST(MeshFile, MissingDirectoryIsAnInputError)
     TempDir dir;
     const TriangleMesh mesh = meshLevelSet(makeSphere(5.0, 1.0));
     EXPECT_THROW(writeMesh(mesh, dir / "missing" / "a.ply"), InputError);
+    EXPECT_TRUE(dir.entries().empty());
+}
+
+// A vertex that is not a finite number is never written, in any format, and nothing is left.
+TEST(MeshFile, AVertexThatIsNotANumberIsRefusedAndNothingWritten)
+{
+    TempDir dir;
+    TriangleMesh mesh = meshLevelSet(makeSphere(5.0, 1.0));
+    mesh.positions[7][1] = std::numeric_limits<float>::infinity();
+    for (const char* name : {"a.ply", "a.obj", "a.stl"}) {
+        try {
+            writeMesh(mesh, dir / name);
+            ADD_FAILURE() << name << " written";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("not a finite number"), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_THROW(writeObjObjects({{"ball", &mesh}}, dir / "b.obj"), InputError);
     EXPECT_TRUE(dir.entries().empty());
 }
 

@@ -14,6 +14,7 @@
 #include <openvdb/io/File.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace sculpt {
@@ -400,6 +401,61 @@ TEST(VdbPieces, ADocumentOfOneSurfaceIsOnePieceAndSavesUnchanged)
     const VdbPieces mixed = readVdbPieces(three);
     ASSERT_EQ(mixed.pieces.size(), 1u);
     EXPECT_EQ(mixed.companions.grids.size(), 2u);
+}
+
+/// The message readVdbPieces refuses `path` with, or "" if it reads it.
+std::string refusal(const fs::path& path)
+{
+    try {
+        readVdbPieces(path);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+// What a document says of itself is checked on read whatever wrote it: the checksum covers the
+// voxels, not a look another program may have written.
+TEST(VdbPieces, RefuseALookThatCannotBeAndValuesThatAreNotNumbers)
+{
+    TempDir dir;
+    writeVdbPieces(threePieces(), dir / "doc.vdb");
+    openvdb::Mat4d huge = openvdb::Mat4d::identity();
+    huge.setToScale(openvdb::Vec3d(1e300));
+    openvdb::Mat4d notANumber = openvdb::Mat4d::identity();
+    notANumber(3, 0) = std::nan("");
+    openvdb::Mat4d mirror = openvdb::Mat4d::identity();
+    mirror(0, 0) = -1.0;
+    const std::pair<const char*, openvdb::Mat4d> placements[] = {
+        {"zeros", openvdb::Mat4d::zero()}, {"1e300", huge}, {"NaN", notANumber}, {"mirror", mirror}};
+    for (const auto& [name, placement] : placements) {
+        VdbDocument document = readVdbDocument(dir / "doc.vdb");
+        document.companions.grids[0]->insertMeta("sculpt.piece_placement", openvdb::Mat4DMetadata(placement));
+        const fs::path bad = dir / (std::string("placement-") + name + ".vdb");
+        writeFieldImage(document.field, bad, document.companions);
+        const std::string why = refusal(bad);
+        EXPECT_NE(why.find(bad.string() + ": piece 'hat': its placement (sculpt.piece_placement)"), std::string::npos)
+            << name << ": " << why;
+    }
+    VdbDocument document = readVdbDocument(dir / "doc.vdb");
+    document.field.mutableGrid().insertMeta("sculpt.piece_colour",
+                                            openvdb::Vec3SMetadata(openvdb::Vec3s(0.5f, NAN, 0.5f)));
+    writeFieldImage(document.field, dir / "colour.vdb", document.companions);
+    EXPECT_NE(refusal(dir / "colour.vdb").find("piece 'head': its colour"), std::string::npos)
+        << refusal(dir / "colour.vdb");
+
+    // A voxel that is not a number, in a file with a checksum (ours) and without (another program's).
+    for (const float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        FieldImage torus = makeTorus(10.0, 3.0, 0.5);
+        torus.mutableGrid().tree().setValue(torus.grid().tree().cbeginLeaf()->origin(), bad);
+        writeFieldImage(torus, dir / "ours.vdb");
+        test::writeNamedGrids(dir / "theirs.vdb", {{"surface", torus}});
+        for (const char* file : {"ours.vdb", "theirs.vdb"}) {
+            const std::string why = refusal(dir / file);
+            EXPECT_NE(why.find("holds a value that is not a finite number"), std::string::npos) << file << ": " << why;
+            EXPECT_THROW(readFieldImage(dir / file), InputError) << file;
+        }
+    }
 }
 
 TEST(VdbPieces, RefuseAPieceWhoseVoxelsChangedAndNamesTakenTwice)

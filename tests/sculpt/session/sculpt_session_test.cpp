@@ -612,10 +612,9 @@ TEST(StrokeScript, APieceEditNamesTheEventAndWhatIsWrong)
         EXPECT_STREQ(e.what(), "s.json: events[0] (piece edit): piece 7: the document has 3 pieces");
     }
     EXPECT_EQ(document.pieces().size(), 3u);
-    EXPECT_EQ(
-        parseError(R"([{"action": "piece", "edit": "move", "piece": 0, "placement": [0,0,0,0, 0,0,0,0, )"
-                   R"(0,0,0,0, 0,0,0,1]}])"),
-        "s.json: events[0]: field 'placement' must be an affine map scaling by 1e-3 to 1e3 (last column 0 0 0 1)");
+    EXPECT_EQ(parseError(R"([{"action": "piece", "edit": "move", "piece": 0, "placement": [0,0,0,0, 0,0,0,0, )"
+                         R"(0,0,0,0, 0,0,0,1]}])"),
+              "s.json: events[0]: field 'placement' cannot place a piece: it flattens the piece (no volume)");
     EXPECT_EQ(parseError(R"([{"action": "piece", "edit": "move", "piece": 0, "placement": [1,0,0,0, 0,1,0,0, )"
                          R"(0,0,1,0, 5,0,0,1], "push": [1.5]}])"),
               "s.json: events[0]: field 'push[0]' must be a whole number from 0 to 100000 (got 1.5)");

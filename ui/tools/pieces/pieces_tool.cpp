@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/field/placed_box.h"
+#include "core/field/placement_check.h"
 #include "core/pieces/contact.h"
 #include "sculpt/session/document.h"
 #include "sculpt/session/piece_changes.h"
@@ -338,9 +339,10 @@ void PiecesTool::endGesture(bool keep)
                                                                         : "scale '";
     const std::string label = verb + moved.look.name + "'";
     mGesture.reset();
-    if (!keep || mShown == moved.look.placement) {
+    const std::string problem = placementProblem(mShown);  // a scale typed as 0, say
+    if (!keep || mShown == moved.look.placement || !problem.empty()) {
         mHost.showPlacement(moved.look.placement);
-        mHost.notify(keep ? "" : "move dropped");
+        mHost.notify(!keep ? "move dropped" : problem.empty() ? "" : label + " dropped: " + problem);
         return;
     }
     std::vector<std::size_t> pushed;
