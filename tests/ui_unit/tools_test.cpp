@@ -137,6 +137,28 @@ TEST(HeadlessTools, APieceMovedIntoAnotherStopsAtContactAndAPushIsOneUndoStep)
     EXPECT_EQ(reports["back"]["tool_chosen"], "sculpt") << "Tab again: the tool chosen before";
 }
 
+// A placement no document may hold (scaled to a hundredth twice: 1/10,000) is dropped and says
+// why; the scale before it stays.
+TEST(HeadlessTools, AScaleBeyondThePlacementLimitsIsDroppedAndSaysWhy)
+{
+    TempDir dir;
+    writeVdbPieces(bodyAndBallApart(), dir / "two.vdb");
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.untilJobEnds().report(r, "opened").key("Tab");
+    events.key("S").key("Period").key("0").key("1").key("Enter").report(r, "once");
+    events.key("S").key("Period").key("0").key("1").key("Enter").report(r, "twice");
+    ASSERT_EQ(playHeadless(dir, events, headlessOptions(dir, (dir / "two.vdb").string())), 0);
+    const Reports reports(r);
+    EXPECT_NE(reports["once"]["pieces"][0]["placement"], reports["opened"]["pieces"][0]["placement"]);
+    EXPECT_EQ(reports["once"]["undo"].get<int>(), reports["opened"]["undo"].get<int>() + 1);
+    EXPECT_NE(reports["twice"]["notice"].get<std::string>().find("dropped: it scales the piece by 0.0001"),
+              std::string::npos)
+        << reports["twice"]["notice"];
+    EXPECT_EQ(reports["twice"]["pieces"][0]["placement"], reports["once"]["pieces"][0]["placement"]);
+    EXPECT_EQ(reports["twice"]["undo"], reports["once"]["undo"]);
+}
+
 // Every edit of the pieces the window makes (a move, a push, a placement applied, duplicate,
 // split, merge, undo and redo, delete) and a stroke on another piece land in the stroke log, and
 // `sculpt apply` of it on the document the window opened gives every piece bit for bit: its
