@@ -1,5 +1,6 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
+#include "core/base/written_outputs.h"
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
@@ -86,8 +87,9 @@ void runMorph(const MorphCommandOptions& o)
     const FieldImage& source = sourceIsDocument ? first : second;
     const FieldImage& target = sourceIsDocument ? second : first;
     for (const std::string& warning : warnings) std::cerr << "sculpt: warning: " << warning << "\n";
-    prepareDirectory(o.directory);
-    if (!o.tracked.empty()) prepareDirectory(o.tracked);
+    WrittenOutputs outputs;  // a morph that fails leaves no frames behind
+    outputs.directory(o.directory);
+    if (!o.tracked.empty()) outputs.directory(o.tracked);
 
     MorphSummary summary;
     MorphTracking tracking;
@@ -96,8 +98,9 @@ void runMorph(const MorphCommandOptions& o)
         summary = morph(
             source, target, o.morph,
             [&](const MorphFrame& frame) {
-                writeFieldImage(frame.field, framePath(o.directory, frame.index, "vdb"));
-                if (!o.mesh.empty()) writeMesh(meshLevelSet(frame.field), framePath(o.directory, frame.index, o.mesh));
+                writeFieldImage(frame.field, outputs.file(framePath(o.directory, frame.index, "vdb")));
+                if (!o.mesh.empty())
+                    writeMesh(meshLevelSet(frame.field), outputs.file(framePath(o.directory, frame.index, o.mesh)));
                 if (!o.tracked.empty()) tracking.frame(frame.field);
             },
             bar.callback(),
@@ -107,6 +110,7 @@ void runMorph(const MorphCommandOptions& o)
         writeTrackedSequence(tracking.sequence(), o.tracked);
         printTracking(tracking, o.tracked);
     }
+    outputs.keep();
     std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames, o.directory.c_str(),
                 o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
     if (summary.translation != openvdb::Vec3d(0.0)) {

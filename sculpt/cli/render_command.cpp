@@ -1,5 +1,6 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
+#include "core/base/written_outputs.h"
 #include "core/io/image_file.h"
 #include "core/render/ray_tracer.h"
 #include "sculpt/cli/commands.h"
@@ -84,9 +85,10 @@ void runRender(RenderCommandOptions o)
     if (sequence && o.turntable > 0) {
         throw InputError(o.input.path + ": --turntable turns one document, not a directory of frames");
     }
+    WrittenOutputs outputs;  // a sequence that fails leaves no frames behind
     if (sequence || o.turntable > 0) {
         imageFormatOf("frame." + o.format);
-        prepareDirectory(o.output);
+        outputs.directory(o.output);
     } else {
         imageFormatOf(o.output);
         AtomicFile::checkTarget(o.output);
@@ -101,9 +103,11 @@ void runRender(RenderCommandOptions o)
         ProgressBar bar("rendering " + std::to_string(frames.size()) + " frames");
         const Progress progress = bar.callback();
         for (std::size_t i = 0; i < frames.size(); ++i) {
-            renderOne(readFieldImage(frames[i], o.input.grid), camera, o.render, framePath(o.output, int(i), o.format),
-                      progress, double(i) / frames.size(), double(i + 1) / frames.size());
+            renderOne(readFieldImage(frames[i], o.input.grid), camera, o.render,
+                      outputs.file(framePath(o.output, int(i), o.format)), progress, double(i) / frames.size(),
+                      double(i + 1) / frames.size());
         }
+        outputs.keep();
         std::cout << "wrote " << frames.size() << " frames to " << o.output << " (frame_0000." << o.format
                   << " ...), one camera for all\n";
         return;
@@ -114,9 +118,11 @@ void runRender(RenderCommandOptions o)
     const Progress progress = bar.callback();
     if (o.turntable > 0) {
         for (int i = 0; i < o.turntable; ++i) {
-            renderOne(field, camera.orbited(2.0 * M_PI * i / o.turntable), o.render, framePath(o.output, i, o.format),
-                      progress, double(i) / o.turntable, double(i + 1) / o.turntable);
+            renderOne(field, camera.orbited(2.0 * M_PI * i / o.turntable), o.render,
+                      outputs.file(framePath(o.output, i, o.format)), progress, double(i) / o.turntable,
+                      double(i + 1) / o.turntable);
         }
+        outputs.keep();
         std::cout << "wrote " << o.turntable << " turntable frames to " << o.output << " (frame_0000." << o.format
                   << " ...)\n";
         return;

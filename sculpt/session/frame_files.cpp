@@ -17,17 +17,6 @@ fs::path framePath(const fs::path& dir, int index, const std::string& extension)
     return dir / name;
 }
 
-void prepareDirectory(const fs::path& dir)
-{
-    std::error_code ec;
-    if (fs::is_directory(dir, ec)) return;
-    const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
-    if (!fs::is_directory(parent, ec)) {
-        throw InputError(dir.string() + ": parent directory '" + parent.string() + "' does not exist");
-    }
-    if (!fs::create_directory(dir, ec)) throw InputError(dir.string() + ": cannot create (" + ec.message() + ")");
-}
-
 std::vector<fs::path> documentsIn(const fs::path& dir)
 {
     std::vector<fs::path> files;

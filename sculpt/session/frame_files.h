@@ -12,10 +12,6 @@ namespace sculpt {
 /// DIR/frame_NNNN.EXT
 std::filesystem::path framePath(const std::filesystem::path& dir, int index, const std::string& extension);
 
-/// Makes `dir` if it does not exist. @throws InputError if its parent does not exist or it cannot
-/// be created.
-void prepareDirectory(const std::filesystem::path& dir);
-
 /// The .vdb files of `dir`, sorted by name. @throws InputError if there are none.
 std::vector<std::filesystem::path> documentsIn(const std::filesystem::path& dir);
 

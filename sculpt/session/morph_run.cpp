@@ -32,10 +32,11 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
     return run;
 }
 
-void writeFrames(const std::vector<FieldImage>& frames, const std::filesystem::path& dir)
+void writeFrames(const std::vector<FieldImage>& frames, const std::filesystem::path& dir, WrittenOutputs& outputs)
 {
-    prepareDirectory(dir);
-    for (std::size_t i = 0; i < frames.size(); ++i) writeFieldImage(frames[i], framePath(dir, int(i), "vdb"));
+    outputs.directory(dir);
+    for (std::size_t i = 0; i < frames.size(); ++i)
+        writeFieldImage(frames[i], outputs.file(framePath(dir, int(i), "vdb")));
 }
 
 }  // namespace sculpt

@@ -5,6 +5,7 @@
 ///        writes for the same inputs.
 
 #include "core/base/progress.h"
+#include "core/base/written_outputs.h"
 #include "core/motion/morph.h"
 #include "sculpt/session/morph_tracking.h"
 
@@ -32,8 +33,9 @@ struct MorphRun {
 MorphRun morphInto(const FieldImage& source, const std::filesystem::path& targetPath, const MorphOptions& options,
                    const Progress& progress = {}, bool tracked = false);
 
-/// Writes `frames` as DIR/frame_0000.vdb ... (DIR made if missing).
+/// Writes `frames` as DIR/frame_0000.vdb ... (DIR made if missing), noted in `outputs` (taken
+/// back unless the caller keeps them).
 /// @throws InputError naming the directory or file that cannot be written.
-void writeFrames(const std::vector<FieldImage>& frames, const std::filesystem::path& dir);
+void writeFrames(const std::vector<FieldImage>& frames, const std::filesystem::path& dir, WrittenOutputs& outputs);
 
 }  // namespace sculpt

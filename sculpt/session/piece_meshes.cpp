@@ -1,6 +1,7 @@
 #include "sculpt/session/piece_meshes.h"
 
 #include "core/base/atomic_file.h"
+#include "core/base/written_outputs.h"
 #include "core/io/mesh_file.h"
 #include "core/io/obj_file.h"
 
@@ -62,11 +63,13 @@ std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, 
                                                                    path.extension().string()));
         AtomicFile::checkTarget(files.back());
     }
+    WrittenOutputs outputs;  // every piece's file, or (a write failing) none
     for (std::size_t i = 0; i < pieces.size(); ++i) {
-        writeMesh(pieces[i].mesh, files[i], frame);
+        writeMesh(pieces[i].mesh, outputs.file(files[i]), frame);
         lines.push_back(
             wrote(files[i].string(), pieces.size() > 1 ? " (piece '" + pieces[i].name + "')" : "", pieces[i].mesh));
     }
+    outputs.keep();
     return lines;
 }
 

@@ -1,6 +1,7 @@
 #include "sculpt/session/tracked_export.h"
 
 #include "core/base/atomic_file.h"
+#include "core/base/written_outputs.h"
 #include "core/io/gltf_morph_file.h"
 #include "core/io/mesh_file.h"
 #include "core/io/point_cache_file.h"
@@ -28,19 +29,23 @@ fs::path segmentPath(const fs::path& directory, std::size_t index, const std::st
 
 std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, const fs::path& directory, double fps)
 {
+    WrittenOutputs outputs;  // all of it, or none of it
+    outputs.directory(directory);
     std::vector<fs::path> written;
+    const auto next = [&](std::size_t s, const char* extension) -> const fs::path& {
+        written.push_back(segmentPath(directory, s, extension));
+        return outputs.file(written.back());
+    };
     nlohmann::json list = nlohmann::json::array();
     for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
         const TrackedSegment& segment = sequence.segments()[s];
         const TriangleMesh rest = segment.frameMesh(0);
-        writeMesh(rest, segmentPath(directory, s, "ply"));
-        writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, segmentPath(directory, s, "pc2"));
+        writeMesh(rest, next(s, "ply"));
+        writePointCache({float(segment.firstFrame), 1.0f, segment.positions}, next(s, "pc2"));
         const MeshSequence animated{segmentName(s),     rest.triangles, segment.positions, fps,
                                     segment.firstFrame, segment.ids};
-        writeGltfMorph(animated, segmentPath(directory, s, "glb"));
-        writeUsdMesh(animated, segmentPath(directory, s, "usda"));
-        for (const char* extension : {"ply", "pc2", "glb", "usda"})
-            written.push_back(segmentPath(directory, s, extension));
+        writeGltfMorph(animated, next(s, "glb"));
+        writeUsdMesh(animated, next(s, "usda"));
         list.push_back({{"segment", s},
                         {"first_frame", segment.firstFrame},
                         {"frames", segment.positions.size()},
@@ -53,7 +58,8 @@ std::vector<fs::path> writeTrackedSequence(const TrackedSequence& sequence, cons
                                  {"frames_per_second", fps},
                                  {"segments", list}};
     written.push_back(directory / "segments.json");
-    writeFileAtomically(written.back(), summary.dump(2) + "\n");
+    writeFileAtomically(outputs.file(written.back()), summary.dump(2) + "\n");
+    outputs.keep();
     return written;
 }
 

@@ -21,8 +21,8 @@ std::string segmentName(std::size_t index);
 std::filesystem::path segmentPath(const std::filesystem::path& directory, std::size_t index,
                                   const std::string& extension);
 
-/// Writes every segment of `sequence` into `directory` (which must exist), frames `fps` apart in
-/// the glTF animation. Returns the files written.
+/// Writes every segment of `sequence` into `directory` (made if missing), frames `fps` apart in
+/// the glTF animation: all of it, or (a write failing) none of it. Returns the files written.
 /// @throws InputError naming the file if a write fails.
 std::vector<std::filesystem::path> writeTrackedSequence(const TrackedSequence& sequence,
                                                         const std::filesystem::path& directory, double fps = 24.0);

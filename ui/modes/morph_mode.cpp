@@ -43,14 +43,15 @@ void startMorph(ModeSlot& slot, const fs::path& target, const MorphOptions& opti
 void exportFrames(MorphMode& morph, const fs::path& path, Notices& notices)
 {
     const MorphRun& run = morph.frames().run();
-    writeFrames(run.frames, path);
+    WrittenOutputs outputs;  // an export that fails leaves no frames behind
+    writeFrames(run.frames, path, outputs);
     std::string notice = "wrote " + std::to_string(morph.frames().count()) + " frames to " + path.string();
     if (run.tracking) {
-        prepareDirectory(path / "tracked");
         writeTrackedSequence(run.tracking->sequence(), path / "tracked");
         notice += " and the tracked mesh (" + std::to_string(run.tracking->sequence().segments().size()) +
                   " segments: .ply, .pc2, .glb, .usda) to " + (path / "tracked").string();
     }
+    outputs.keep();
     notices.say(notice);
 }
 

@@ -520,6 +520,28 @@ TEST(SculptCli, MorphWritesFramesAndMeshes)
     EXPECT_EQ(test::vtkMeshReport(dir / "frames/frame_0002.stl").boundaryEdges, 0);
 }
 
+// A morph, a turntable or a tracked export that fails after it began writing takes back what it
+// wrote: the frames before the failure go, what was there before stays.
+TEST(SculptCli, ACommandThatFailsMidWayLeavesNoPartialOutput)
+{
+    TempDir dir;
+    ASSERT_EQ(runSculpt("new --radius 6 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(
+        runSculpt("new --shape torus --radius 6 --minor-radius 2.5 --voxel-size 0.5 -o t.vdb", dir.path()).exitCode, 0);
+    // The third frame cannot be written (a directory stands where it goes).
+    std::filesystem::create_directories(dir / "frames" / "frame_0002.vdb");
+    auto r = runSculpt("morph s.vdb t.vdb --frames 4 -o frames --mesh ply --tracked tracked", dir.path());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("frame_0002.vdb"), std::string::npos) << r.err;
+    EXPECT_EQ(TempDir::entriesOf(dir / "frames"), std::vector<std::string>{"frame_0002.vdb"});
+    EXPECT_FALSE(std::filesystem::exists(dir / "tracked")) << "made by the morph: taken back";
+
+    std::filesystem::create_directories(dir / "turn" / "frame_0001.png");
+    r = runSculpt("render s.vdb -o turn --turntable 3 --width 32 --height 24", dir.path());
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(TempDir::entriesOf(dir / "turn"), std::vector<std::string>{"frame_0001.png"});
+}
+
 TEST(SculptCli, MorphOfDisjointShapesAsksForAlign)
 {
     TempDir dir;
