@@ -26,9 +26,10 @@ void scanFacts(const ScanVolume& scan)
     const openvdb::Mat4d& m = scan.worldFromIndex();
     bool aligned = true;  // the index axes along the world's, each scaled by its spacing
     for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) aligned &= r == c ? m(c, r) > 0.0 : m(c, r) == 0.0;
-    if (aligned) ImGui::Text("axis-aligned, origin %.4g, %.4g, %.4g", m(3, 0), m(3, 1), m(3, 2));
-    else ImGui::Text("oblique, origin %.4g, %.4g, %.4g", m(3, 0), m(3, 1), m(3, 2));
+        for (int c = 0; c < 3; ++c)
+            aligned &= r == c ? m(c, r) != 0.0 : m(c, r) == 0.0;  // a flipped axis is still aligned
+    if (aligned) ImGui::Text("axis-aligned, origin %.4g, %.4g, %.4g LPS", m(3, 0), m(3, 1), m(3, 2));
+    else ImGui::Text("oblique, origin %.4g, %.4g, %.4g LPS", m(3, 0), m(3, 1), m(3, 2));
     const auto [lo, hi] = scan.range();
     ImGui::Text("values %.4g .. %.4g", lo, hi);
     for (const std::string& warning : scan.warnings()) warningText(warning, kPanelWidth - 20.f);
