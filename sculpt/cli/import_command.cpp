@@ -1,5 +1,6 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
+#include "core/base/warning_summary.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
 #include "sculpt/cli/commands.h"
@@ -22,7 +23,7 @@ struct ImportCommandOptions {
     std::string input, output, mesh;
     double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
     int label = 0;
-    bool autoIso = false, largest = false, antiAlias = false, labels = false;
+    bool autoIso = false, largest = false, antiAlias = false, labels = false, verbose = false;
     std::vector<int> crop;
     std::vector<int> rawDims;
     std::string rawType = "uint8";
@@ -61,6 +62,13 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
     return options;
 }
 
+/// The import's warnings on stderr: each kind a few times, every one with --verbose.
+void printWarnings(const std::vector<std::string>& warnings, bool verbose)
+{
+    for (const std::string& warning : verbose ? warnings : summarisedWarnings(warnings))
+        std::cerr << "sculpt: warning: " << warning << "\n";
+}
+
 /// `--labels`: a piece per label, written as one document.
 void runLabelsImport(const ImportCommandOptions& o)
 {
@@ -69,7 +77,7 @@ void runLabelsImport(const ImportCommandOptions& o)
         ProgressBar bar("importing labels");
         return importLabelPieces(o.input, toImportOptions(o), report, bar.callback());
     }();
-    for (const std::string& warning : report.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
+    printWarnings(report.warnings, o.verbose);
     writeVdbPieces(pieces, o.output);
     std::cout << "imported " << o.input << " (a label map): " << pieces.size() << " pieces, voxel size "
               << report.voxelSize << (report.maskAntiAliased ? ", anti-aliased" : "") << "\nwrote " << o.output
@@ -92,7 +100,7 @@ void runImport(const ImportCommandOptions& o)
         ProgressBar bar("importing");
         return importShape(o.input, toImportOptions(o), report, bar.callback());
     }();
-    for (const std::string& warning : report.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
+    printWarnings(report.warnings, o.verbose);
     writeFieldImage(field, o.output);
     const FieldMeasures m = measureField(field);
     std::cout << "imported " << o.input << " (" << report.kind << ")";
@@ -129,6 +137,9 @@ void addImportCommand(CLI::App& app)
                   "origin and orientation are kept, so the surface sits where the scan says.\n"
                   "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
     cmd->add_option("input", o->input, "the scan file, DICOM directory or slice, or mesh file")->required();
+    cmd->add_flag("--verbose", o->verbose,
+                  "print every warning (a label map's pieces can give hundreds alike: without it, each kind is\n"
+                  "printed three times and then counted)");
     o->isoOption = cmd->add_option("--iso", o->iso, "the surface's sample value (scans)");
     cmd->add_flag("--auto-iso", o->autoIso, "choose the iso-value by Otsu's method (the default without --iso)")
         ->excludes(o->isoOption);
