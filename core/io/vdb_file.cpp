@@ -30,7 +30,6 @@ namespace {
 
 constexpr const char* kMetaVersion = "sculpt.format_version";
 constexpr const char* kMetaUnits = "sculpt.units";
-constexpr const char* kMetaFrame = "sculpt.frame";
 constexpr const char* kMetaVoxelSize = "sculpt.voxel_size";
 constexpr const char* kMetaChecksum = "sculpt.checksum";
 constexpr const char* kMetaPieceColour = "sculpt.piece_colour";
@@ -254,7 +253,7 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
                              std::to_string(kVdbFormatVersion) + ")");
         }
     }
-    if (auto frame = meta.getMetadata<openvdb::StringMetadata>(kMetaFrame);
+    if (auto frame = meta.getMetadata<openvdb::StringMetadata>(kVdbFrameKey);
         frame && frame->value() != FieldImage::kFrame)
         throw InputError(path.string() + ": its world is in the frame '" + frame->value() + "' (this program reads " +
                          FieldImage::kFrame + " documents)");
@@ -302,7 +301,8 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     FieldImage field(asNarrowBand(grid, path, warnings), units);
     checkDocumentMetadata(meta, field, path, layout.editedGrid.empty() || layout.editedGrid == chosen.name);
     attachMask(field, chosen.name, companions.grids);
-    for (const char* ours : {kMetaVersion, kMetaUnits, kMetaFrame, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
+    for (const char* ours :
+         {kMetaVersion, kMetaUnits, kVdbFrameKey, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
         meta.removeMeta(ours);
     }
     return {std::move(field), std::move(companions), std::move(warnings)};
@@ -421,7 +421,7 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
     openvdb::MetaMap meta = companions.metadata;
     meta.insertMeta(kMetaVersion, openvdb::Int32Metadata(kVdbFormatVersion));
     meta.insertMeta(kMetaUnits, openvdb::StringMetadata(field.units()));
-    meta.insertMeta(kMetaFrame, openvdb::StringMetadata(FieldImage::kFrame));
+    meta.insertMeta(kVdbFrameKey, openvdb::StringMetadata(FieldImage::kFrame));
     meta.insertMeta(kMetaVoxelSize, openvdb::DoubleMetadata(field.voxelSize()));
     meta.insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(field.grid()))));
     openvdb::GridCPtrVec grids{field.gridPtr()};

@@ -82,6 +82,7 @@ void checkDelayedLoad(BoundedReader& in, std::uint32_t bytes)
 struct MetadataSeen {
     std::string gridClass;         // a grid's "class"
     std::string editedGrid;        // the file's "sculpt.grid"
+    std::string frame;             // the file's "sculpt.frame"
     std::int64_t memoryBytes = 0;  // a grid's "file_mem_bytes"
 };
 
@@ -99,6 +100,8 @@ MetadataSeen readMetadata(BoundedReader& in)
             seen.gridClass = in.readBytes(bytes, "a metadata value");
         } else if (name == kVdbEditedGridKey && type == "string") {
             seen.editedGrid = in.readBytes(bytes, "a metadata value");
+        } else if (name == kVdbFrameKey && type == "string") {
+            seen.frame = in.readBytes(bytes, "a metadata value");
         } else if (name == openvdb::GridBase::META_FILE_MEM_BYTES && type == "int64" && bytes == 8) {
             seen.memoryBytes = in.read<std::int64_t>("a metadata value");
             if (seen.memoryBytes < 0) throw InputError("corrupt (negative grid size)");
@@ -164,7 +167,9 @@ VdbLayout scanVdbLayout(const fs::path& path)
     VdbLayout layout;
     layout.fileSize = in.size();
     const bool hasOffsets = readHeader(in);
-    layout.editedGrid = readMetadata(in).editedGrid;
+    const MetadataSeen fileMetadata = readMetadata(in);
+    layout.editedGrid = fileMetadata.editedGrid;
+    layout.frame = fileMetadata.frame;
     layout.gridTableOffset = in.position();
     const auto count = in.read<std::int32_t>("the grid count");
     // A descriptor holds at least three 4-byte lengths and three 8-byte offsets.

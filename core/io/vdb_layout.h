@@ -39,6 +39,8 @@ struct VdbGridEntry {
 
 /// File metadata naming the grid a document edits (written by writeFieldImage).
 inline constexpr const char* kVdbEditedGridKey = "sculpt.grid";
+/// The file metadata naming the frame of the documents' world ("LPS", FieldImage::kFrame).
+inline constexpr const char* kVdbFrameKey = "sculpt.frame";
 
 struct VdbLayout {
     std::int64_t fileSize = 0;
@@ -50,6 +52,9 @@ struct VdbLayout {
     int unlocatedGrids = 0;
     /// The file's `sculpt.grid`: the grid our programs edited when they wrote it.
     std::string editedGrid;
+    /// The file's `sculpt.frame`; empty if it records none (another program's file, or ours
+    /// from before frames were recorded).
+    std::string frame;
 };
 
 /// @throws InputError (not naming the file: the caller does) if the file is not an OpenVDB

@@ -136,6 +136,7 @@ void runInfo(const InfoOptions& o)
     if (o.json) {
         nlohmann::json report = toJson(all, units);
         report["frame"] = FieldImage::kFrame;
+        report["frame_recorded"] = !layout.frame.empty();
         report["grid"] = pieces.front().field.grid().getName();
         report["grids"] = gridsJson(layout);
         report["pieces"] = nlohmann::json::array();
@@ -158,8 +159,8 @@ void runInfo(const InfoOptions& o)
     } else {
         printPieces(pieces, measures, othersThan(layout, pieces));
     }
-    std::printf("frame:                %s %s (x to the patient's left, y to the back, z up)\n", FieldImage::kFrame,
-                units.c_str());
+    std::printf("frame:                %s %s (x to the patient's left, y to the back, z up%s)\n", FieldImage::kFrame,
+                units.c_str(), layout.frame.empty() ? "; assumed: the file records none" : "");
     printMeasures(all, units);
     if (o.thickness <= 0.0) return;
     const nlohmann::json thinnest = thinnestJson(pieces.front().field, o.thickness);
@@ -186,7 +187,8 @@ void addInfoCommand(CLI::App& app)
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
                   "bbox_min, bbox_max, volume, area, euler_characteristic, components\n"
-                  "(plus units, frame: LPS, x to the patient's left, y to the back, z up;\n"
+                  "(plus units, frame: LPS, x to the patient's left, y to the back, z up, and\n"
+                  "frame_recorded: false for a file that records none, read as LPS;\n"
                   "half_width_voxels, grid: the first grid measured, grids: every grid of the file\n"
                   "with its name, type and class, and pieces: the same keys per\n"
                   "piece with its name, colour (sRGB 0..1) and visible; the top-level keys are the\n"

@@ -97,7 +97,12 @@ TEST(SculptCli, DocumentsAreLpsAndMeshesNameTheirFrameWhichRasNegatesInXAndYOnly
     TempDir dir;
     ASSERT_EQ(runSculpt("new --radius 5 --voxel-size 0.5 -o s.vdb", dir.path()).exitCode, 0);
     EXPECT_EQ(infoJson(dir, "s.vdb")["frame"], "LPS");
+    EXPECT_EQ(infoJson(dir, "s.vdb")["frame_recorded"], true);
     EXPECT_NE(runSculpt("info s.vdb", dir.path()).out.find("frame:                LPS mm"), std::string::npos);
+    // Another program's file (or ours from before frames were recorded) is read as LPS, and says so.
+    test::writeNamedGrids(dir / "theirs.vdb", {{"surface", makeSphere(5.0, 0.5)}});
+    EXPECT_EQ(infoJson(dir, "theirs.vdb")["frame_recorded"], false);
+    EXPECT_NE(runSculpt("info theirs.vdb", dir.path()).out.find("assumed: the file records none"), std::string::npos);
 
     for (const char* ext : {".ply", ".obj", ".stl"}) {
         const std::string lps = std::string("lps") + ext, ras = std::string("ras") + ext;
