@@ -3,7 +3,7 @@
 /// @brief A whole-model edit (smooth, offset, a cut, a mask selection, import into the model,
 ///        bake primitives): made on a copy of the model off the UI thread and landing as one undo
 ///        step, "LABEL done (Ctrl+Z undoes it)", in the stroke log when a script can replay it.
-///        SculptApp::startEdit is its one path.
+///        Workspace::startEdit is its one path.
 
 #include "core/base/progress.h"
 #include "core/field/field_image.h"
