@@ -20,7 +20,12 @@ struct PieceLook {
     /// World from the field's own world (row vectors, as OpenVDB: p * placement): moving,
     /// turning or scaling a piece edits this, never a voxel.
     openvdb::Mat4d placement = openvdb::Mat4d::identity();
+    /// Its value in a label map (a segmentation): the label it was imported from, kept for the
+    /// export back to one; 0 for none yet (the export numbers it).
+    int label = 0;
 };
+/// The largest label value a piece may carry (a 16-bit label map's).
+inline constexpr int kMaxPieceLabel = 65535;
 
 struct Piece : PieceLook {
     Piece(PieceLook look, FieldImage voxels) : PieceLook(std::move(look)), field(std::move(voxels)) {}

@@ -35,6 +35,7 @@ constexpr const char* kMetaChecksum = "sculpt.checksum";
 constexpr const char* kMetaPieceColour = "sculpt.piece_colour";
 constexpr const char* kMetaPieceVisible = "sculpt.piece_visible";
 constexpr const char* kMetaPiecePlacement = "sculpt.piece_placement";
+constexpr const char* kMetaPieceLabel = "sculpt.piece_label";
 constexpr const char* kMetaMaskOf = "sculpt.mask_of";
 
 /// The grid to edit: the one named, else the default one.
@@ -328,6 +329,13 @@ Piece pieceOf(FieldImage field, const fs::path& path)
         if (const std::string problem = placementProblem(piece.placement); !problem.empty())
             throw InputError(where + "its placement (" + kMetaPiecePlacement + ") cannot be: " + problem);
     }
+    if (auto label = grid.getMetadata<openvdb::Int32Metadata>(kMetaPieceLabel)) {
+        piece.label = label->value();
+        if (piece.label < 1 || piece.label > kMaxPieceLabel) {
+            throw InputError(where + "its label value (" + kMetaPieceLabel + ") is not a whole number from 1 to " +
+                             std::to_string(kMaxPieceLabel));
+        }
+    }
     return piece;
 }
 
@@ -340,6 +348,8 @@ openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece, bool ownChecksum)
     grid->insertMeta(kMetaPieceColour, openvdb::Vec3SMetadata(piece.colour));
     grid->insertMeta(kMetaPieceVisible, openvdb::BoolMetadata(piece.visible));
     grid->insertMeta(kMetaPiecePlacement, openvdb::Mat4DMetadata(piece.placement));
+    grid->removeMeta(kMetaPieceLabel);
+    if (piece.label > 0) grid->insertMeta(kMetaPieceLabel, openvdb::Int32Metadata(piece.label));
     grid->removeMeta(kMetaChecksum);  // one copied from the file the piece came from would be stale
     if (ownChecksum) grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
     return grid;

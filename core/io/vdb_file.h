@@ -14,6 +14,7 @@
 ///   sculpt.piece_colour   (vec3s) — sRGB 0..1; marks the grid as a piece
 ///   sculpt.piece_visible  (bool)
 ///   sculpt.piece_placement (mat4d)— world from the grid's world: a move that kept the voxels
+///   sculpt.piece_label    (int)   — its value in a label map, 1..65535, when it came from one
 ///   sculpt.checksum       (string)— as above, for the pieces after the first (the file's is the first's)
 /// A surface's mask (FieldImage::mask), when anything is masked, is a fog grid named after it
 /// ("surface.mask"), written after it, carrying

@@ -11,6 +11,7 @@
 #include "core/scan/header_checks.h"
 #include "core/scan/header_text.h"
 #include "core/scan/inrimage_file.h"
+#include "core/scan/kept_scan.h"
 #include "core/scan/scan_frame.h"
 #include "core/scan/scan_transfer.h"
 #include "core/scan/vtk_image_scan.h"
@@ -36,6 +37,27 @@ namespace sculpt {
 namespace fs = std::filesystem;
 
 namespace {
+
+/// The file's slice order back: VTK reverses the slices of a NIfTI whose qfac is -1 (and its
+/// matrices with them), and a segmentation written for the scan must index the file's samples.
+/// The placement is turned to match, so every sample stays where it was.
+openvdb::Mat4d inFileSliceOrder(vtkImageData* image, const openvdb::Mat4d& worldFromIndex)
+{
+    int d[3];
+    image->GetDimensions(d);
+    const std::size_t slice = std::size_t(d[0]) * std::size_t(d[1]) * std::size_t(image->GetScalarSize());
+    auto* bytes = static_cast<unsigned char*>(image->GetScalarPointer());
+    for (int k = 0; k < d[2] / 2; ++k)
+        std::swap_ranges(bytes + std::size_t(k) * slice, bytes + std::size_t(k + 1) * slice,
+                         bytes + std::size_t(d[2] - 1 - k) * slice);
+    openvdb::Mat4d m = worldFromIndex;  // row vectors: row 2 is the k step, row 3 the origin
+    for (int c = 0; c < 3; ++c) {
+        m[3][c] += double(d[2] - 1) * m[2][c];
+        m[2][c] = -m[2][c];
+    }
+    image->Modified();
+    return m;
+}
 
 ScanVolume readNifti(const fs::path& path)
 {
@@ -74,8 +96,10 @@ ScanVolume readNifti(const fs::path& path)
         warnings.push_back(path.string() + ": neither sform nor qform places it: placed by its spacings, as RAS");
     // The sform and qform map to RAS (x to the right, y to the front), in xyzt_units.
     const int units = reader->GetNIFTIHeader()->GetXYZTUnits();
-    return makeScan(image, inLpsMillimetres(placement(image, orientation), kRasSigns, niftiMillimetresPer(units)),
-                    path.string(), warnings);
+    openvdb::Mat4d worldFromIndex =
+        inLpsMillimetres(placement(image, orientation), kRasSigns, niftiMillimetresPer(units));
+    if (reader->GetQFac() < 0.0) worldFromIndex = inFileSliceOrder(image, worldFromIndex);
+    return makeScan(image, worldFromIndex, path.string(), warnings);
 }
 
 /// A NRRD or MetaImage: VTK reads the samples, the header's own placement (`place`) puts them
@@ -114,7 +138,7 @@ ScanFormat formatOf(const fs::path& path)
     if (ext == ".inr" || ext == ".inr.gz") return ScanFormat::Inrimage;
     throw InputError(path.string() + ": unknown scan format '" + ext +
                          "' (expected .nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, .inr, .inr.gz, a DICOM file or a DICOM "
-                         "directory); raw samples "
+                         "directory, or a .vdb document keeping its scan); raw samples "
                          "need their layout given",
                      Remedy::DescribeRawLayout);
 }
@@ -253,6 +277,7 @@ bool isScanPath(const fs::path& path)
 ScanVolume readScan(const fs::path& path)
 {
     if (!fs::exists(path)) throw InputError(path.string() + ": no such file or directory");
+    if (lowerExtension(path) == ".vdb") return readKeptScan(path);  // our own reader, in this process
     const ScanFormat format = formatOf(path);
     checkHeader(path, format);
     return readIsolated(path, readerOf(format), decodeBudget(path, format), [&] { return decodeScan(path, format); });

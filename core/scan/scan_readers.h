@@ -29,8 +29,7 @@ struct RawLayout {
 };
 
 /// Reads a scan by its extension (.nii, .nii.gz, .nrrd, .nhdr, .mha, .mhd, .inr, .inr.gz; .dcm,
-/// .dicom, .ima)
-/// or, for a directory, as a DICOM series.
+/// .dicom, .ima), a document's kept scan (.vdb: kept_scan.h) or, for a directory, as a DICOM series.
 /// @throws InputError naming the file and the problem: unknown format, unreadable, truncated
 ///         or corrupt, absurd dimensions (refused before allocating), a DICOM directory with
 ///         several series, mixed sizes or missing slices.

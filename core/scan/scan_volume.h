@@ -7,6 +7,8 @@
 /// slice or a few points at a time as floats, so converting a scan never needs a float copy of
 /// all of it.
 
+#include "core/scan/scan_lattice.h"
+
 #include <openvdb/openvdb.h>
 
 #include <map>
@@ -24,11 +26,15 @@ class ScanVolume {
 public:
     struct Impl;
     explicit ScanVolume(std::shared_ptr<const Impl> impl);
+    /// The image behind it, for the code of scan/ that includes vtk_image_scan.h.
+    const Impl& impl() const { return *mImpl; }
 
     /// Samples along x, y, z.
     openvdb::Coord dims() const;
     /// Maps a sample's index (i, j, k) to its world position: spacing, orientation, origin.
     const openvdb::Mat4d& worldFromIndex() const;
+    /// dims() and worldFromIndex().
+    ScanLattice lattice() const { return {dims(), worldFromIndex()}; }
     /// Longest side of the box the samples span in the world.
     double worldExtent() const;
     /// World distance between neighbouring samples along index axis 0, 1 or 2.

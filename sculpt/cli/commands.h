@@ -28,6 +28,8 @@ void addBuildCommand(CLI::App& app);
 void addApplyCommand(CLI::App& app);
 /// `sculpt import`: a scan or a mesh as a new document.
 void addImportCommand(CLI::App& app);
+/// `sculpt export-labels`: the pieces as a label map on a scan's lattice.
+void addExportLabelsCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 /// `sculpt hollow`: a shell of a wall thickness, with drain holes.
 void addHollowCommand(CLI::App& app);

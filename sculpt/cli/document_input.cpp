@@ -57,16 +57,16 @@ void printWarnings(const std::vector<std::string>& warnings)
 
 }  // namespace
 
-std::vector<Piece> readPieces(const DocumentInput& input)
+VdbPieces readPieces(const DocumentInput& input)
 {
     if (!input.grid.empty()) {
         VdbDocument document = readDocument(input);
         const std::string name = document.field.grid().getName();
-        return {Piece{{name}, std::move(document.field)}};
+        return {{Piece{{name}, std::move(document.field)}}, std::move(document.companions), {}};
     }
     VdbPieces document = readVdbPieces(input.path);
     printWarnings(document.warnings);
-    return std::move(document.pieces);
+    return document;
 }
 
 namespace {

@@ -26,8 +26,9 @@ void addMaskInput(CLI::App& cmd, DocumentInput& input);
 /// Adds the positional `input` (described by `what`) and `--grid` to `cmd`.
 void addDocumentInput(CLI::App& cmd, DocumentInput& input, const std::string& what);
 
-/// Every piece of the document, or the one `grid` names, printing its warnings on stderr.
-std::vector<Piece> readPieces(const DocumentInput& input);
+/// Every piece of the document, or the one `grid` names, and its other grids, printing its
+/// warnings on stderr.
+VdbPieces readPieces(const DocumentInput& input);
 
 /// Reads the document, printing its warnings (a grid left out, a band rebuilt) on stderr, with the
 /// mask `--mask` names in place of its own.

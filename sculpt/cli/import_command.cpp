@@ -23,7 +23,7 @@ struct ImportCommandOptions {
     std::string input, output, mesh;
     double iso = 0.0, voxelSize = 0.0, smooth = 0.0;
     int label = 0;
-    bool autoIso = false, largest = false, antiAlias = false, labels = false, verbose = false;
+    bool autoIso = false, largest = false, antiAlias = false, labels = false, verbose = false, noKeepScan = false;
     std::vector<int> crop;
     std::vector<int> rawDims;
     std::string rawType = "uint8";
@@ -48,6 +48,7 @@ ImportOptions toImportOptions(const ImportCommandOptions& o)
     }
     options.smoothSigma = o.smooth;
     options.largestComponent = o.largest;
+    options.keepScan = !o.noKeepScan;
     if (o.antiAliasOption->count()) options.antiAliasMask = o.antiAlias;
     if (!o.rawDims.empty()) {
         RawLayout raw;
@@ -69,6 +70,14 @@ void printWarnings(const std::vector<std::string>& warnings, bool verbose)
         std::cerr << "sculpt: warning: " << warning << "\n";
 }
 
+/// The document's other grids: the scan, unless --no-keep-scan (or a mesh).
+VdbCompanions keptScanOf(const ImportReport& report)
+{
+    VdbCompanions companions;
+    if (report.keptScan) companions.grids.push_back(report.keptScan);
+    return companions;
+}
+
 /// `--labels`: a piece per label, written as one document.
 void runLabelsImport(const ImportCommandOptions& o)
 {
@@ -78,7 +87,7 @@ void runLabelsImport(const ImportCommandOptions& o)
         return importLabelPieces(o.input, toImportOptions(o), report, bar.callback());
     }();
     printWarnings(report.warnings, o.verbose);
-    writeVdbPieces(pieces, o.output);
+    writeVdbPieces(pieces, o.output, keptScanOf(report));
     std::cout << "imported " << o.input << " (a label map): " << pieces.size() << " pieces, voxel size "
               << report.voxelSize << (report.maskAntiAliased ? ", anti-aliased" : "") << "\nwrote " << o.output
               << ":\n";
@@ -101,7 +110,7 @@ void runImport(const ImportCommandOptions& o)
         return importShape(o.input, toImportOptions(o), report, bar.callback());
     }();
     printWarnings(report.warnings, o.verbose);
-    writeFieldImage(field, o.output);
+    writeFieldImage(field, o.output, keptScanOf(report));
     const FieldMeasures m = measureField(field);
     std::cout << "imported " << o.input << " (" << report.kind << ")";
     if (o.labelOption->count()) std::cout << " label " << o.label;
@@ -132,9 +141,10 @@ void addImportCommand(CLI::App& app)
         "import", "Turn a medical scan or a mesh into an editable document.\n"
                   "Scans: NIfTI (.nii, .nii.gz), NRRD (.nrrd, .nhdr), MetaImage (.mha, .mhd), INRIMAGE\n"
                   "(.inr, .inr.gz), DICOM (a directory of slices, one slice file to pick its series,\n"
-                  "or a multi-frame file; compressed too), or raw samples (--raw-dims ...). The\n"
-                  "surface is where the samples cross the iso-value (inside: above it); spacing,\n"
-                  "origin and orientation are kept, so the surface sits where the scan says.\n"
+                  "or a multi-frame file; compressed too), raw samples (--raw-dims ...), or the scan a\n"
+                  "document keeps (.vdb). The surface is where the samples cross the iso-value (inside:\n"
+                  "above it); spacing, origin and orientation are kept, so the surface sits where the\n"
+                  "scan says, in LPS millimetres. The document keeps the scan (--no-keep-scan: not).\n"
                   "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
     cmd->add_option("input", o->input, "the scan file, DICOM directory or slice, or mesh file")->required();
     cmd->add_flag("--verbose", o->verbose,
@@ -176,6 +186,9 @@ void addImportCommand(CLI::App& app)
         ->expected(3);
     cmd->add_flag("--raw-big-endian", o->rawBigEndian, "raw input: most significant byte first");
     cmd->add_option("--raw-header", o->rawHeader, "raw input: bytes to skip before the samples");
+    cmd->add_flag("--no-keep-scan", o->noKeepScan,
+                  "do not keep the scan's samples in the document (kept by default, so the window shows\n"
+                  "its slices and `sculpt import DOC.vdb --iso V` imports it again at another iso-value)");
     cmd->add_option("-o,--output", o->output, "the .vdb document to write")->required();
     cmd->add_option("--mesh", o->mesh, "also write the surface as .ply, .obj or .stl");
     cmd->callback([o] { runImport(*o); });

@@ -1,6 +1,8 @@
+#include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/io/vdb_layout.h"
 #include "core/mesh/field_measures.h"
+#include "core/scan/kept_scan.h"
 #include "core/solids/wall_thickness.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
@@ -125,10 +127,54 @@ void printPieces(const std::vector<Piece>& pieces, const std::vector<FieldMeasur
     std::printf("all pieces:\n");
 }
 
+/// The scan the document keeps (kept_scan.h) as JSON: its samples, where they came from, and
+/// what they cost in memory and in the file; null when it keeps none.
+nlohmann::json keptScanJson(const VdbCompanions& companions, const VdbLayout& layout, const std::string& path)
+{
+    const openvdb::FloatGrid::ConstPtr grid = findKeptScan(companions.grids);
+    if (!grid) return nullptr;
+    KeptScanRecord record;
+    try {
+        record = keptScanRecord(*grid);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    std::int64_t fileBytes = 0;
+    for (const VdbGridEntry& entry : layout.grids)
+        if (entry.name == grid->getName() && entry.located()) fileBytes = entry.end - entry.begin;
+    const openvdb::Coord& d = record.lattice.dims;
+    nlohmann::json kept = {{"dims", {d.x(), d.y(), d.z()}},
+                           {"source", record.source},
+                           {"sample_type", record.sampleType},
+                           {"iso", nullptr},
+                           {"memory_bytes", grid->memUsage()},
+                           {"file_bytes", fileBytes},
+                           {"dense_float_bytes", 4.0 * double(d.x()) * d.y() * d.z()}};
+    if (record.iso) kept["iso"] = *record.iso;
+    return kept;
+}
+
+void printKeptScan(const nlohmann::json& kept)
+{
+    if (kept.is_null()) {
+        std::printf("kept scan:            none\n");
+        return;
+    }
+    const auto& d = kept["dims"];
+    std::printf(
+        "kept scan:            %d x %d x %d samples (%s) from %s%s; %s in memory, %s in the file\n", d[0].get<int>(),
+        d[1].get<int>(), d[2].get<int>(), kept["sample_type"].get<std::string>().c_str(),
+        kept["source"].get<std::string>().c_str(),
+        kept["iso"].is_null() ? "" : (", imported at iso-value " + formatNumber(kept["iso"].get<double>())).c_str(),
+        formatBytes(kept["memory_bytes"].get<double>()).c_str(), formatBytes(kept["file_bytes"].get<double>()).c_str());
+}
+
 void runInfo(const InfoOptions& o)
 {
-    const std::vector<Piece> pieces = readPieces(o.input);
+    const VdbPieces read = readPieces(o.input);
+    const std::vector<Piece>& pieces = read.pieces;
     const VdbLayout layout = scanVdbLayout(o.input.path);
+    const nlohmann::json kept = keptScanJson(read.companions, layout, o.input.path);
     std::vector<FieldMeasures> measures;
     for (const Piece& piece : pieces) measures.push_back(measureField(piece.field));
     const FieldMeasures all = total(measures);
@@ -139,6 +185,7 @@ void runInfo(const InfoOptions& o)
         report["frame_recorded"] = !layout.frame.empty();
         report["grid"] = pieces.front().field.grid().getName();
         report["grids"] = gridsJson(layout);
+        report["kept_scan"] = kept;
         report["pieces"] = nlohmann::json::array();
         for (std::size_t i = 0; i < pieces.size(); ++i) {
             nlohmann::json piece = toJson(measures[i], units);
@@ -162,6 +209,7 @@ void runInfo(const InfoOptions& o)
     std::printf("frame:                %s %s (x to the patient's left, y to the back, z up%s)\n", FieldImage::kFrame,
                 units.c_str(), layout.frame.empty() ? "; assumed: the file records none" : "");
     printMeasures(all, units);
+    printKeptScan(kept);
     if (o.thickness <= 0.0) return;
     const nlohmann::json thinnest = thinnestJson(pieces.front().field, o.thickness);
     if (thinnest.is_null()) {
@@ -190,7 +238,9 @@ void addInfoCommand(CLI::App& app)
                   "(plus units, frame: LPS, x to the patient's left, y to the back, z up, and\n"
                   "frame_recorded: false for a file that records none, read as LPS;\n"
                   "half_width_voxels, grid: the first grid measured, grids: every grid of the file\n"
-                  "with its name, type and class, and pieces: the same keys per\n"
+                  "with its name, type and class, kept_scan: the scan the document keeps (dims,\n"
+                  "source, sample_type, iso, memory_bytes, file_bytes, dense_float_bytes) or null,\n"
+                  "and pieces: the same keys per\n"
                   "piece with its name, colour (sRGB 0..1) and visible; the top-level keys are the\n"
                   "pieces' total)");
     cmd->add_option("--thickness", options->thickness,

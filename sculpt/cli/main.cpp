@@ -55,6 +55,7 @@ int main(int argc, char** argv)
     sculpt::cli::addBuildCommand(app);
     sculpt::cli::addApplyCommand(app);
     sculpt::cli::addImportCommand(app);
+    sculpt::cli::addExportLabelsCommand(app);
     sculpt::cli::addHollowCommand(app);
     sculpt::cli::addIslandsCommand(app);
     sculpt::cli::addPiecesCommand(app);

@@ -19,7 +19,7 @@ struct MeshOptions {
 void runMesh(const MeshOptions& o)
 {
     checkMeshOutput(o.output);
-    writePiecesMeshes(readPieces(o.input), o.output, o.ras ? MeshFrame::Ras : MeshFrame::Lps);
+    writePiecesMeshes(readPieces(o.input).pieces, o.output, o.ras ? MeshFrame::Ras : MeshFrame::Lps);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "core/io/mesh_file.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
+#include "core/scan/kept_scan.h"
 #include "sculpt/session/piece_meshes.h"
 
 #include <algorithm>
@@ -105,6 +106,16 @@ void Document::saveAs(const std::filesystem::path& path)
 void Document::writeCopy(const std::filesystem::path& path) const
 {
     writeVdbPieces(piecesAsFiled(), path, mCompanions);
+}
+
+openvdb::FloatGrid::ConstPtr Document::keptScan() const { return findKeptScan(mCompanions.grids); }
+
+void Document::keepScan(openvdb::FloatGrid::Ptr scan)
+{
+    auto& grids = mCompanions.grids;
+    grids.erase(std::remove_if(grids.begin(), grids.end(), [](const auto& grid) { return grid && isKeptScan(*grid); }),
+                grids.end());
+    if (scan) grids.push_back(std::move(scan));
 }
 
 std::vector<Piece> Document::piecesAsFiled() const

@@ -105,6 +105,10 @@ public:
     std::uint64_t piecesRevision() const { return mPiecesRevision; }
     /// The pieces with their fields (sharing the sessions' grids), as a file holds them.
     std::vector<Piece> piecesAsFiled() const;
+    /// The scan the document was imported from, kept with it (kept_scan.h), or nullptr.
+    openvdb::FloatGrid::ConstPtr keptScan() const;
+    /// Keeps `scan` (keptScanGrid) with the document in place of any it kept: saved with it.
+    void keepScan(openvdb::FloatGrid::Ptr scan);
 
     /// Piece edits, each one undo step named `label`.
     /// The pieces' new looks, one per piece (renamed, recoloured, hidden, moved: no voxel changes).

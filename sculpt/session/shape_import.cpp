@@ -8,6 +8,7 @@
 #include "core/local/speck_removal.h"
 #include "core/mesh/field_measures.h"
 #include "core/motion/surface_flows.h"
+#include "core/scan/kept_scan.h"
 #include "core/scan/scan_to_level_set.h"
 #include "sculpt/session/label_names.h"
 
@@ -166,8 +167,12 @@ FieldImage importScan(const fs::path& input, const ImportOptions& options, Impor
                                           "where its mask crosses 0.5)");
     }
     ScanVolume scan = readScanOf(input, options, report);
+    const ScanVolume read = scan;
     if (options.label) scan = labelMaskOf(scan, *options.label, input);
-    return scanSurface(std::move(scan), input, options, report, progress);
+    FieldImage field = scanSurface(std::move(scan), input, options, report, progress);
+    if (options.keepScan)
+        report.keptScan = keptScanGrid(read, options.label ? std::nullopt : std::optional(report.iso));
+    return field;
 }
 
 /// The samples around one label's box: a margin of the band, the filters' reach and a voxel
@@ -216,7 +221,9 @@ Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std:
     if (!names.insert(name).second) names.insert(name += " (" + number + ")");
     const openvdb::Vec3f colour =
         look != looks.end() && look->second.colour ? *look->second.colour : paletteColour(index + 1);
-    return {{name, colour}, std::move(field)};
+    Piece piece{{name, colour}, std::move(field)};
+    piece.label = label;
+    return piece;
 }
 
 /// Runs `convert` and returns what it returns, making sure any refusal names the file: a message from deep in the engine
@@ -295,6 +302,7 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
             for (std::size_t w = warned; w < report.warnings.size(); ++w)
                 report.warnings[w] = "piece '" + pieces.back().name + "': " + report.warnings[w];
         }
+        if (options.keepScan) report.keptScan = keptScanGrid(scan, std::nullopt);
         return pieces;
     });
 }

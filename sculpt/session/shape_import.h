@@ -29,6 +29,8 @@ struct ImportOptions {
     /// scans whose samples take two values only (a mask), whose surface is all terraces.
     std::optional<bool> antiAliasMask;
     std::optional<RawLayout> raw;  ///< read the input as raw samples with this layout
+    /// scans: keep the samples read (cropped) for the document (ImportReport::keptScan).
+    bool keepScan = false;
 };
 
 /// The iso-value a scan imports at: the options', a label mask's middle (0.5), else `otsu()`.
@@ -50,6 +52,8 @@ struct ImportReport {
     /// Closed meshes whose topology the voxel size changed: a finer one that keeps it, if found.
     std::optional<double> topologyKeepingVoxelSize;
     std::vector<std::string> warnings;
+    /// scans, with keepScan: the samples as a grid for the document (kept_scan.h).
+    openvdb::FloatGrid::Ptr keptScan;
 };
 
 /// Imports a scan (readScan, or raw), or a mesh (.obj, .ply, .stl, .off).

@@ -124,6 +124,7 @@ bool ImportMode::accept(PanelHost& host)
     work.autosaveNow();
     ImportOptions options = mDraft.options;
     if (!replaces) options.voxelSize = work.document().session().field().voxelSize();  // the document's lattice
+    options.keepScan = replaces;  // a new document keeps its scan; a union or difference adds a shape only
     const std::filesystem::path path = mDraft.file().path();
     auto report = std::make_shared<ImportReport>();
     if (replaces && mDraft.labelPieces) {  // a piece per label, each meshed on the job's thread
@@ -132,8 +133,10 @@ bool ImportMode::accept(PanelHost& host)
             [path, options, report](const Progress& p, const Workspace::FieldReady& ready) {
                 std::vector<Piece> pieces = importLabelPieces(path, options, *report, scaledProgress(p, 0.0, 0.7));
                 ready(pieces.front().field);
-                return std::make_unique<Document>(std::move(pieces), std::filesystem::path(),
-                                                  scaledProgress(p, 0.7, 1.0));
+                auto document =
+                    std::make_unique<Document>(std::move(pieces), std::filesystem::path(), scaledProgress(p, 0.7, 1.0));
+                document->keepScan(report->keptScan);
+                return document;
             },
             [path, report] {
                 return "import " + path.filename().string() + " done, a piece per label: " + importSummary(*report);
@@ -146,8 +149,10 @@ bool ImportMode::accept(PanelHost& host)
             [path, options, report](const Progress& p, const Workspace::FieldReady& ready) {
                 FieldImage field = importShape(path, options, *report, scaledProgress(p, 0.0, 0.7));
                 ready(field);
-                return std::make_unique<Document>(std::move(field), std::filesystem::path(),
-                                                  scaledProgress(p, 0.7, 1.0));
+                auto document =
+                    std::make_unique<Document>(std::move(field), std::filesystem::path(), scaledProgress(p, 0.7, 1.0));
+                document->keepScan(report->keptScan);
+                return document;
             },
             [path, report] { return "import " + path.filename().string() + " done: " + importSummary(*report); });
         return true;

@@ -208,8 +208,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"apply good.vdb nothing.json -o out.vdb", "nothing.json"},
         BadCall{"apply good.vdb s_ok.json -o out.vdb --mesh out.xyz", "out.xyz"},
         BadCall{"import junk.nii -o out.vdb", "junk.nii"}, BadCall{"import nothing.nii -o out.vdb", "nothing.nii"},
-        BadCall{"import good.vdb -o out.vdb", "unknown scan format '.vdb'"},
-        BadCall{"import good.vdb -o out.vdb", "raw samples need their layout given (--raw-dims"},
+        BadCall{"import good.vdb -o out.vdb", "good.vdb: keeps no scan"},
+        BadCall{"import s_ok.json -o out.vdb", "unknown scan format '.json'"},
+        BadCall{"import s_ok.json -o out.vdb", "raw samples need their layout given (--raw-dims"},
+        BadCall{"export-labels good.vdb -o labels.nii", "good.vdb: keeps no scan to label"},
+        BadCall{"export-labels good.vdb --like nothing.nii -o labels.nii", "nothing.nii"},
+        BadCall{"export-labels good.vdb -o labels.png", "labels.png"},
         BadCall{"new --radius 0.4 --voxel-size 0.5 -o out.vdb", "choose a finer voxel size (a smaller --voxel-size)"},
         BadCall{"import tiny.raw --raw-dims 100000,100000,100000 -o out.vdb", "truncated"},
         BadCall{"import tiny.raw --raw-dims 2,2,1 --raw-type uint8 --iso 500 -o out.vdb", "outside the samples' range"},
@@ -302,6 +306,52 @@ TEST(SculptCli, ImportedAndMorphedDocumentsNameTheirGridSurface)
 // A mask (raw bytes, 0 and 1: a ball of radius 12 samples) imports anti-aliased by default,
 // saying so, with the ball's area; --no-antialias keeps its voxel terraces (a tenth more area);
 // --label 1 takes it as a label map.
+// A scan's document keeps the scan: info says so, the document imports again at another
+// iso-value as the scan itself does, and export-labels labels the kept lattice; --no-keep-scan
+// keeps none.
+TEST(SculptCli, AnImportedDocumentKeepsItsScanToImportAgainAndToLabel)
+{
+    TempDir dir;
+    const int n = 32;
+    std::string bytes(std::size_t(n * n * n), '\0');
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)  // 200 at the centre, falling 10 a voxel: a ball for every iso-value
+                bytes[std::size_t((k * n + j) * n + i)] =
+                    char(std::max(0.0, 200.0 - 10.0 * std::hypot(i - 15.6, j - 15.3, k - 15.8)));
+    std::ofstream(dir / "ball.raw", std::ios::binary) << bytes;
+    const std::string raw = "import ball.raw --raw-dims 32,32,32 --raw-type uint8 --raw-spacing 1,1,1.5 ";
+    ASSERT_EQ(runSculpt(raw + "--iso 100 -o kept.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt(raw + "--iso 60 -o direct.vdb", dir.path()).exitCode, 0);
+    ASSERT_EQ(runSculpt(raw + "--iso 100 --no-keep-scan -o bare.vdb", dir.path()).exitCode, 0);
+    const nlohmann::json kept = infoJson(dir, "kept.vdb")["kept_scan"];
+    ASSERT_FALSE(kept.is_null());
+    EXPECT_EQ(kept["dims"], nlohmann::json::array({32, 32, 32}));
+    EXPECT_EQ(kept["source"], "ball.raw");
+    EXPECT_EQ(kept["iso"], 100.0);
+    EXPECT_GT(kept["memory_bytes"].get<double>(), 0.0);
+    EXPECT_GT(kept["file_bytes"].get<double>(), 0.0);
+    EXPECT_TRUE(infoJson(dir, "bare.vdb")["kept_scan"].is_null());
+    EXPECT_NE(runSculpt("info kept.vdb", dir.path()).out.find("kept scan:            32 x 32 x 32 samples"),
+              std::string::npos);
+
+    // Imported again at iso 60 from the document alone: the surface the scan gives at 60.
+    const auto again = runSculpt("import kept.vdb --iso 60 -o again.vdb", dir.path());
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_EQ(infoJson(dir, "again.vdb")["volume"], infoJson(dir, "direct.vdb")["volume"]);
+    EXPECT_FALSE(infoJson(dir, "again.vdb")["kept_scan"].is_null()) << "the scan stays kept";
+
+    // Labelled on the kept lattice: 32^3 samples, the ball's about its volume over a sample's.
+    const auto labels = runSculpt("export-labels kept.vdb -o labels.nrrd", dir.path());
+    ASSERT_EQ(labels.exitCode, 0) << labels.err;
+    EXPECT_NE(labels.out.find("1 labels on 32 x 32 x 32 samples"), std::string::npos) << labels.out;
+    EXPECT_NE(fileBytes(dir / "labels.nrrd").find("sizes: 32 32 32"), std::string::npos);
+    const auto bare = runSculpt("export-labels bare.vdb -o bare.nrrd", dir.path());
+    EXPECT_EQ(bare.exitCode, 2);
+    EXPECT_NE(bare.err.find("bare.vdb: keeps no scan to label"), std::string::npos) << bare.err;
+    EXPECT_EQ(runSculpt("export-labels bare.vdb --like kept.vdb -o bare.nrrd", dir.path()).exitCode, 0);
+}
+
 TEST(SculptCli, AMaskImportsAntiAliasedUnlessAskedNotTo)
 {
     TempDir dir;
