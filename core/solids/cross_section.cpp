@@ -1,0 +1,182 @@
+#include "core/solids/cross_section.h"
+
+#include <openvdb/tools/Interpolation.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sculpt {
+
+namespace {
+
+/// The plane's lattice: (a, b) steps of h along u and v from `corner`, u x v = the normal.
+struct PlaneLattice {
+    openvdb::Vec3d corner, u, v;
+    double h = 1.0;
+    int nu = 0, nv = 0;  // samples along u and v
+    openvdb::Vec3d at(double a, double b) const { return corner + u * (a * h) + v * (b * h); }
+};
+
+/// u and v: unit, orthogonal to each other and to `normal`, u x v = normal.
+std::pair<openvdb::Vec3d, openvdb::Vec3d> planeAxes(const openvdb::Vec3d& normal)
+{
+    const int least = std::abs(normal.x()) < std::abs(normal.y())
+                          ? (std::abs(normal.x()) < std::abs(normal.z()) ? 0 : 2)
+                          : (std::abs(normal.y()) < std::abs(normal.z()) ? 1 : 2);
+    openvdb::Vec3d axis(0.0);
+    axis[least] = 1.0;
+    const openvdb::Vec3d u = (axis - normal * normal.dot(axis)).unit();
+    return {u, normal.cross(u)};
+}
+
+/// The lattice covering the plane's part of the field's leaf box; nothing (nu = 0) if the plane
+/// misses the box.
+PlaneLattice latticeOver(const FieldImage& field, const SectionPlane& plane)
+{
+    PlaneLattice lattice;
+    openvdb::CoordBBox leaves;
+    field.grid().tree().evalLeafBoundingBox(leaves);
+    if (leaves.empty()) return lattice;
+    const auto [u, v] = planeAxes(plane.normal);
+    double lo[2] = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max()};
+    double hi[2] = {-lo[0], -lo[1]}, side[2] = {lo[0], -lo[0]};
+    for (int c = 0; c < 8; ++c) {
+        const openvdb::Vec3d corner((c & 1) ? leaves.max().x() + 1 : leaves.min().x(),
+                                    (c & 2) ? leaves.max().y() + 1 : leaves.min().y(),
+                                    (c & 4) ? leaves.max().z() + 1 : leaves.min().z());
+        const openvdb::Vec3d d = field.grid().transform().indexToWorld(corner - openvdb::Vec3d(0.5)) - plane.origin;
+        const double ab[2] = {d.dot(u), d.dot(v)};
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], ab[k]), hi[k] = std::max(hi[k], ab[k]);
+        side[0] = std::min(side[0], d.dot(plane.normal));
+        side[1] = std::max(side[1], d.dot(plane.normal));
+    }
+    if (side[0] > 0.0 || side[1] < 0.0) return lattice;
+    lattice.h = field.voxelSize();
+    lattice.u = u;
+    lattice.v = v;
+    lattice.corner = plane.origin + u * (std::floor(lo[0] / lattice.h) * lattice.h) +
+                     v * (std::floor(lo[1] / lattice.h) * lattice.h);
+    lattice.nu = int(std::ceil((hi[0] - std::floor(lo[0] / lattice.h) * lattice.h) / lattice.h)) + 1;
+    lattice.nv = int(std::ceil((hi[1] - std::floor(lo[1] / lattice.h) * lattice.h) / lattice.h)) + 1;
+    return lattice;
+}
+
+/// phi at every lattice point (row b after row b - 1), interpolated trilinearly in the field.
+std::vector<float> sampleField(const FieldImage& field, const PlaneLattice& lattice)
+{
+    std::vector<float> phi(std::size_t(lattice.nu) * std::size_t(lattice.nv));
+    tbb::parallel_for(tbb::blocked_range<int>(0, lattice.nv), [&](const tbb::blocked_range<int>& rows) {
+        const auto accessor = field.grid().getConstAccessor();
+        const openvdb::math::Transform& xform = field.grid().transform();
+        for (int b = rows.begin(); b < rows.end(); ++b)
+            for (int a = 0; a < lattice.nu; ++a) {
+                float value = 0.0f;
+                openvdb::tools::BoxSampler::sample(accessor, xform.worldToIndex(lattice.at(a, b)), value);
+                phi[std::size_t(b) * std::size_t(lattice.nu) + std::size_t(a)] = value;
+            }
+    });
+    return phi;
+}
+
+/// A lattice point (a, b) with its phi.
+struct Corner {
+    double a, b, phi;
+};
+
+/// Builds the section: polygons of the plane's (a, b) coordinates into its mesh and area.
+class SectionBuilder {
+public:
+    SectionBuilder(const PlaneLattice& lattice, const openvdb::Vec3d& normal) : mLattice(lattice)
+    {
+        mNormal = {float(normal.x()), float(normal.y()), float(normal.z())};
+    }
+
+    /// The part of triangle (p, q, r) where phi < 0, and its outline.
+    void clipTriangle(const Corner& p, const Corner& q, const Corner& r)
+    {
+        const Corner in[3] = {p, q, r};
+        Corner kept[4];
+        int count = 0;
+        std::vector<Corner> crossings;
+        for (int k = 0; k < 3; ++k) {
+            const Corner& s = in[k];
+            const Corner& e = in[(k + 1) % 3];
+            if (s.phi < 0.0) kept[count++] = s;
+            if ((s.phi < 0.0) != (e.phi < 0.0)) {
+                const double t = s.phi / (s.phi - e.phi);
+                const Corner x{s.a + t * (e.a - s.a), s.b + t * (e.b - s.b), 0.0};
+                kept[count++] = x;
+                crossings.push_back(x);
+            }
+        }
+        for (int k = 1; k + 1 < count; ++k) addTriangle(kept[0], kept[k], kept[k + 1]);
+        if (crossings.size() == 2)
+            mSection.outline.push_back(
+                {mLattice.at(crossings[0].a, crossings[0].b), mLattice.at(crossings[1].a, crossings[1].b)});
+    }
+
+    /// A rectangle of cells wholly inside, from (a0, b) to (a1, b + 1).
+    void addQuad(double a0, double a1, double b)
+    {
+        const Corner c00{a0, b, -1.0}, c10{a1, b, -1.0}, c11{a1, b + 1, -1.0}, c01{a0, b + 1, -1.0};
+        addTriangle(c00, c10, c11);
+        addTriangle(c00, c11, c01);
+    }
+
+    CrossSection take() { return std::move(mSection); }
+
+private:
+    void addTriangle(const Corner& p, const Corner& q, const Corner& r)
+    {
+        const double h = mLattice.h;
+        mSection.area += 0.5 * h * h * ((q.a - p.a) * (r.b - p.b) - (r.a - p.a) * (q.b - p.b));
+        TriangleMesh& mesh = mSection.region;
+        const auto first = std::uint32_t(mesh.positions.size());
+        for (const Corner* c : {&p, &q, &r}) {
+            const openvdb::Vec3d w = mLattice.at(c->a, c->b);
+            mesh.positions.push_back({float(w.x()), float(w.y()), float(w.z())});
+            mesh.normals.push_back(mNormal);
+        }
+        mesh.triangles.push_back({first, first + 1, first + 2});
+    }
+
+    const PlaneLattice& mLattice;
+    std::array<float, 3> mNormal{};
+    CrossSection mSection;
+};
+
+}  // namespace
+
+CrossSection crossSection(const FieldImage& field, const SectionPlane& plane)
+{
+    const PlaneLattice lattice = latticeOver(field, plane);
+    if (lattice.nu < 2 || lattice.nv < 2) return {};
+    const std::vector<float> phi = sampleField(field, lattice);
+    const auto at = [&](int a, int b) {
+        return Corner{double(a), double(b), phi[std::size_t(b) * std::size_t(lattice.nu) + std::size_t(a)]};
+    };
+    SectionBuilder builder(lattice, plane.normal);
+    for (int b = 0; b + 1 < lattice.nv; ++b) {
+        int runStart = -1;  // the first cell of the run of cells wholly inside, if any
+        for (int a = 0; a + 1 <= lattice.nu; ++a) {
+            const bool inside = a + 1 < lattice.nu && at(a, b).phi < 0.0 && at(a + 1, b).phi < 0.0 &&
+                                at(a + 1, b + 1).phi < 0.0 && at(a, b + 1).phi < 0.0;
+            if (inside) {
+                if (runStart < 0) runStart = a;
+                continue;
+            }
+            if (runStart >= 0) builder.addQuad(runStart, a, b);
+            runStart = -1;
+            if (a + 1 == lattice.nu) break;
+            const Corner c00 = at(a, b), c10 = at(a + 1, b), c11 = at(a + 1, b + 1), c01 = at(a, b + 1);
+            builder.clipTriangle(c00, c10, c11);
+            builder.clipTriangle(c00, c11, c01);
+        }
+    }
+    return builder.take();
+}
+
+}  // namespace sculpt

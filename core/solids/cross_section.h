@@ -1,0 +1,39 @@
+#pragma once
+/// @file cross_section.h
+/// @brief Where a plane cuts the solid, from the field itself (not from a mesh): the region of
+///        the plane inside the surface as triangles (a clip plane's cap), its outline (a slice's
+///        contour) and its area.
+///
+/// The plane is sampled on a square lattice of the field's voxel size spanning the field's
+/// leaves; each lattice cell is split into two triangles over which phi is linear, and the part
+/// of each where phi < 0 is kept (a triangle or a quad): neighbouring cells interpolate their
+/// shared edges alike, so the region has no gaps, and its error is second order in the voxel
+/// size. Runs of cells wholly inside are merged into one quad, so a cap costs triangles along its
+/// outline, not over its area.
+
+#include "core/field/field_image.h"
+#include "core/mesh/triangle_mesh.h"
+
+#include <openvdb/openvdb.h>
+
+#include <array>
+#include <vector>
+
+namespace sculpt {
+
+/// A plane: the points p with dot(p - origin, normal) = 0; `normal` unit.
+struct SectionPlane {
+    openvdb::Vec3d origin{0.0};
+    openvdb::Vec3d normal{0.0, 0.0, 1.0};
+};
+
+struct CrossSection {
+    TriangleMesh region;                                 ///< the inside of the cut, its normals `normal`
+    std::vector<std::array<openvdb::Vec3d, 2>> outline;  ///< segments of phi = 0 on the plane
+    double area = 0.0;                                   ///< of `region`
+};
+
+/// The cut of `field` by `plane` (both in the field's world).
+CrossSection crossSection(const FieldImage& field, const SectionPlane& plane);
+
+}  // namespace sculpt
