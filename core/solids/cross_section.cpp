@@ -118,14 +118,6 @@ public:
                 {mLattice.at(crossings[0].a, crossings[0].b), mLattice.at(crossings[1].a, crossings[1].b)});
     }
 
-    /// A rectangle of cells wholly inside, from (a0, b) to (a1, b + 1).
-    void addQuad(double a0, double a1, double b)
-    {
-        const Corner c00{a0, b, -1.0}, c10{a1, b, -1.0}, c11{a1, b + 1, -1.0}, c01{a0, b + 1, -1.0};
-        addTriangle(c00, c10, c11);
-        addTriangle(c00, c11, c01);
-    }
-
     CrossSection take() { return std::move(mSection); }
 
 private:
@@ -159,23 +151,13 @@ CrossSection crossSection(const FieldImage& field, const SectionPlane& plane)
         return Corner{double(a), double(b), phi[std::size_t(b) * std::size_t(lattice.nu) + std::size_t(a)]};
     };
     SectionBuilder builder(lattice, plane.normal);
-    for (int b = 0; b + 1 < lattice.nv; ++b) {
-        int runStart = -1;  // the first cell of the run of cells wholly inside, if any
-        for (int a = 0; a + 1 <= lattice.nu; ++a) {
-            const bool inside = a + 1 < lattice.nu && at(a, b).phi < 0.0 && at(a + 1, b).phi < 0.0 &&
-                                at(a + 1, b + 1).phi < 0.0 && at(a, b + 1).phi < 0.0;
-            if (inside) {
-                if (runStart < 0) runStart = a;
-                continue;
-            }
-            if (runStart >= 0) builder.addQuad(runStart, a, b);
-            runStart = -1;
-            if (a + 1 == lattice.nu) break;
+    for (int b = 0; b + 1 < lattice.nv; ++b)
+        for (int a = 0; a + 1 < lattice.nu; ++a) {
             const Corner c00 = at(a, b), c10 = at(a + 1, b), c11 = at(a + 1, b + 1), c01 = at(a, b + 1);
+            if (c00.phi >= 0.0 && c10.phi >= 0.0 && c11.phi >= 0.0 && c01.phi >= 0.0) continue;
             builder.clipTriangle(c00, c10, c11);
             builder.clipTriangle(c00, c11, c01);
         }
-    }
     return builder.take();
 }
 

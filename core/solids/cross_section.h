@@ -7,9 +7,8 @@
 /// The plane is sampled on a square lattice of the field's voxel size spanning the field's
 /// leaves; each lattice cell is split into two triangles over which phi is linear, and the part
 /// of each where phi < 0 is kept (a triangle or a quad): neighbouring cells interpolate their
-/// shared edges alike, so the region has no gaps, and its error is second order in the voxel
-/// size. Runs of cells wholly inside are merged into one quad, so a cap costs triangles along its
-/// outline, not over its area.
+/// shared edges alike, so the region has no gaps (and no T-junctions, which would show as
+/// pixel cracks in a drawn cap), and its error is second order in the voxel size.
 
 #include "core/field/field_image.h"
 #include "core/mesh/triangle_mesh.h"

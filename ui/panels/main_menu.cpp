@@ -45,6 +45,41 @@ void thicknessField(SurfaceTint& check, const char* tooltip)
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
 }
 
+/// View > Clip Plane: the axis, the side hidden, and where it cuts (a slider over the model).
+void clipPlaneMenu(PanelHost& host)
+{
+    if (!ImGui::BeginMenu("Clip Plane")) return;
+    ClipPlane& clip = host.view().clip();
+    const openvdb::BBoxd box = host.view().worldBox(host.document());
+    const openvdb::Vec3d centre = box.empty() ? openvdb::Vec3d(0.0) : box.getCenter();
+    const Viewport& viewport = host.view().viewport();
+    const glm::dvec3 ahead = viewport.rayThrough(0.5 * viewport.width(), 0.5 * viewport.height()).direction;
+    for (int a = 0; a < 5; ++a) {
+        const std::string shortcut = a == 0 ? host.commands().shortcutText(Command::CycleClipPlane) : std::string();
+        if (ImGui::MenuItem(kClipAxisNames[a], shortcut.c_str(), int(clip.axis()) == a))
+            clip.setAxis(ClipAxis(a), ahead, {centre.x(), centre.y(), centre.z()});
+    }
+    ImGui::Separator();
+    if (const std::optional<SectionPlane> plane = clip.plane(); plane && !box.empty()) {
+        double lo = 1e300, hi = -1e300;  // the model's extent along the normal
+        for (int c = 0; c < 8; ++c) {
+            const openvdb::Vec3d corner((c & 1) ? box.max().x() : box.min().x(),
+                                        (c & 2) ? box.max().y() : box.min().y(),
+                                        (c & 4) ? box.max().z() : box.min().z());
+            const double along = corner.dot(clip.flipped() ? -plane->normal : plane->normal);
+            lo = std::min(lo, along), hi = std::max(hi, along);
+        }
+        float offset = float(clip.offset());
+        if (ImGui::SliderFloat("Position", &offset, float(lo), float(hi), "%.1f")) clip.setOffset(offset);
+        if (ImGui::MenuItem("Flip Side", host.commands().shortcutText(Command::FlipClipPlane).c_str(), clip.flipped()))
+            host.execute(Command::FlipClipPlane);
+        ImGui::TextDisabled("Alt+Up / Alt+Down move it");
+    } else {
+        ImGui::TextDisabled("Off: choose an axis");
+    }
+    ImGui::EndMenu();
+}
+
 void printCheckMenu(SurfaceTint& check)
 {
     if (!ImGui::BeginMenu("Print Check")) return;
@@ -165,6 +200,7 @@ void drawMainMenu(PanelHost& host)
                             host.camera().trackball))
             host.execute(Command::ToggleTrackball);
         printCheckMenu(host.view().printCheck());
+        clipPlaneMenu(host);
         ImGui::Separator();
         for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight,
                           Command::ViewLeft, Command::ViewTop, Command::ViewBottom}) {

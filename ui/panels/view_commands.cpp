@@ -1,5 +1,5 @@
 // The View menu's commands: framing, the axis views and orbit steps (Blender's numpad), zoom,
-// the clay's looks, the target's ghost, the trackball, and Help. Navigation follows Blender's
+// the clay's looks, the target's ghost, the trackball, the clip plane, and Help. Navigation follows Blender's
 // sculpt mode where it has a key.
 
 #include "ui/input/input_event.h"
@@ -7,6 +7,8 @@
 #include "ui/panels/panels.h"
 
 #include <GLFW/glfw3.h>
+
+#include <algorithm>
 
 namespace sculpt::ui {
 
@@ -116,12 +118,61 @@ void addLookCommands(CommandRegistry& commands, PanelHost& host)
                   }});
 }
 
+/// The clip plane's step: a hundredth of the model, never under a voxel.
+double clipStep(PanelHost& host)
+{
+    const openvdb::BBoxd box = host.view().worldBox(host.document());
+    const double size = box.empty() ? 0.0 : (box.max() - box.min()).length();
+    return std::max(host.document().session().field().voxelSize(), 0.01 * size);
+}
+
+void addClipCommands(CommandRegistry& commands, PanelHost& host)
+{
+    ClipPlane& clip = host.view().clip();
+    commands.add({Command::CycleClipPlane,
+                  "Clip Plane",
+                  "Cut the view across x, y, z or the view direction, then off: the cut is capped with the exact "
+                  "section, and strokes land on it",
+                  {{GLFW_KEY_C, kAlt}},
+                  nullptr,
+                  [&host, &clip] {
+                      const openvdb::Vec3d centre = host.view().worldBox(host.document()).getCenter();
+                      const Viewport& viewport = host.view().viewport();
+                      const glm::dvec3 ahead =
+                          viewport.rayThrough(0.5 * viewport.width(), 0.5 * viewport.height()).direction;
+                      clip.setAxis(ClipAxis((int(clip.axis()) + 1) % 5), ahead, {centre.x(), centre.y(), centre.z()});
+                  }});
+    const auto needsPlane = [&clip] {
+        return clip.axis() == ClipAxis::Off ? std::string("the clip plane is off: View > Clip Plane (Alt+C)")
+                                            : std::string();
+    };
+    commands.add({Command::ClipPlaneForward,
+                  "Clip Plane Forward",
+                  "Move the clip plane along its normal",
+                  {{GLFW_KEY_UP, kAlt}},
+                  needsPlane,
+                  [&host, &clip] { clip.move(clipStep(host)); }});
+    commands.add({Command::ClipPlaneBack,
+                  "Clip Plane Back",
+                  "Move the clip plane against its normal",
+                  {{GLFW_KEY_DOWN, kAlt}},
+                  needsPlane,
+                  [&host, &clip] { clip.move(-clipStep(host)); }});
+    commands.add({Command::FlipClipPlane,
+                  "Flip Clip Side",
+                  "Hide the other side of the clip plane",
+                  {{GLFW_KEY_F, kAlt}},
+                  needsPlane,
+                  [&clip] { clip.setFlipped(!clip.flipped()); }});
+}
+
 }  // namespace
 
 void addViewCommands(CommandRegistry& commands, PanelHost& host)
 {
     addCameraCommands(commands, host);
     addLookCommands(commands, host);
+    addClipCommands(commands, host);
 }
 
 }  // namespace sculpt::ui

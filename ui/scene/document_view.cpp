@@ -1,6 +1,7 @@
 #include "ui/scene/document_view.h"
 
 #include "core/field/placed_box.h"
+#include "core/field/pre_edit_field.h"
 #include "sculpt/session/document.h"
 #include "ui/view/block_polydata.h"
 
@@ -19,12 +20,21 @@ const openvdb::Mat4d& placementOf(const Document& document)
     return document.pieces()[document.activePiece()].look.placement;
 }
 
+/// The clay's look, cut by the clip plane.
+SurfaceLook lookClippedBy(const ClipPlane& clip)
+{
+    SurfaceLook look;
+    look.setClipping(clip.planes());
+    return look;
+}
+
 }  // namespace
 
 DocumentView::DocumentView(int width, int height, bool draws, int chunkBlocks)
-    : mViewport(width, height, draws), mDisplay(mViewport.renderer(), mLook, chunkBlocks),
-      mScales(mViewport.renderer()), mGhost(mViewport.renderer(), ShapeStyle::ghost()), mPieces(mViewport.renderer()),
-      mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()), mCamera(mViewport)
+    : mViewport(width, height, draws), mLook(lookClippedBy(mClip)), mDisplay(mViewport.renderer(), mLook, chunkBlocks),
+      mScales(mViewport.renderer()), mGhost(mViewport.renderer(), ShapeStyle::ghost()),
+      mPieces(mViewport.renderer(), mClip.planes()), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
+      mCamera(mViewport), mCaps(mViewport.renderer())
 {}
 
 void DocumentView::show(const Document& document, bool frameIt)
@@ -66,10 +76,16 @@ bool DocumentView::syncPieces(const Document& document)
     return another;
 }
 
-void DocumentView::frameAll(const Document& document)
+openvdb::BBoxd DocumentView::worldBox(const Document& document) const
 {
     openvdb::BBoxd world = mPieces.worldBox();
     world.expand(placedBox(leafWorldBox(document.session().field()), placementOf(document)));
+    return world;
+}
+
+void DocumentView::frameAll(const Document& document)
+{
+    const openvdb::BBoxd world = worldBox(document);
     if (world.empty()) return;
     mCamera.frame({world.min().x(), world.min().y(), world.min().z()},
                   {world.max().x(), world.max().y(), world.max().z()});
@@ -78,11 +94,39 @@ void DocumentView::frameAll(const Document& document)
 std::optional<SurfaceHit> DocumentView::pickAt(const Document& document, double x, double y)
 {
     if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
+    if (const std::optional<SectionPlane> plane = mClip.plane())
+        return pickClipped(document, mViewport.rayThrough(x, y), *plane);
     const SculptSession& session = document.session();
     // In the piece's own world: its placement moved the drawing, never the voxels.
     return mPicker.pick(session.field(), session.mesher()->version(),
                         transformedRay(mViewport.rayThrough(x, y), placementOf(document).inverse()),
                         session.strokeJournal());
+}
+
+std::optional<SurfaceHit> DocumentView::pickClipped(const Document& document, const Ray& ray, const SectionPlane& plane)
+{
+    const SculptSession& session = document.session();
+    const openvdb::Mat4d fieldFromWorld = placementOf(document).inverse();
+    const glm::dvec3 n(plane.normal.x(), plane.normal.y(), plane.normal.z());
+    const glm::dvec3 o(plane.origin.x(), plane.origin.y(), plane.origin.z());
+    const double side = glm::dot(ray.origin - o, n), along = glm::dot(ray.direction, n);
+    const auto inField = [&](const glm::dvec3& p) { return fieldFromWorld.transform(openvdb::Vec3d(p.x, p.y, p.z)); };
+    Ray shown = ray;
+    if (side > 0.0) {  // the eye on the hidden side: the ray shows nothing before the plane
+        if (along >= 0.0) return std::nullopt;
+        shown.origin = ray.origin + ray.direction * (-side / along);
+        const openvdb::Vec3d at = inField(shown.origin);
+        const PreEditField before(session.field(), session.strokeJournal());  // as the stroke began, as pick()
+        if (before.sample(session.field().grid().transform().worldToIndex(at)) <
+            0.0) {  // the plane in the clay: the cap
+            const openvdb::Vec3d normal = fieldFromWorld.transform3x3(plane.normal).unit();
+            return SurfaceHit{{at.x(), at.y(), at.z()}, {normal.x(), normal.y(), normal.z()}};
+        }
+    }
+    const std::optional<SurfaceHit> hit = mPicker.pick(session.field(), session.mesher()->version(),
+                                                       transformedRay(shown, fieldFromWorld), session.strokeJournal());
+    if (hit && mClip.hides(inWorld(document, *hit).position)) return std::nullopt;
+    return hit;
 }
 
 SurfaceHit DocumentView::inWorld(const Document& document, const SurfaceHit& hit) const
@@ -98,8 +142,8 @@ const std::optional<SurfaceHit>& DocumentView::hover(const Document& document, d
 {
     const SculptSession& session = document.session();
     const bool inView = x >= 0 && y >= 0 && x < mViewport.width() && y < mViewport.height();
-    const HoverKey key{mViewport.rayThrough(x, y), session.field().id(), session.mesher()->id(),
-                       session.mesher()->version(), inView && picking};
+    const HoverKey key{mViewport.rayThrough(x, y),  session.field().id(), session.mesher()->id(),
+                       session.mesher()->version(), mClip.revision(),     inView && picking};
     if (key != mHoverKey) {
         mHover = key.picking ? pickAt(document, x, y) : std::nullopt;
         mHoverKey = key;
@@ -159,6 +203,15 @@ void DocumentView::sync(const Document& document, const IncrementalMesher* modeM
     mDisplay.setHidden(mScales.shown() || hideDocument);
     mPieces.setHidden(mScales.shown() || hideDocument);
     mPlanes.show(brush.symmetry, 0.6 * modelSize);
+    std::vector<CappedPiece> capped;
+    const openvdb::Vec3f clay{float(kClayColour[0]), float(kClayColour[1]), float(kClayColour[2])};
+    for (const DocumentPiece& piece : document.pieces()) {
+        const bool sculpted = piece.session.get() == &document.session();
+        capped.push_back({&piece.look, sculpted ? clay : piece.look.colour, &piece.session->field(),
+                          piece.session->mesher()->version()});
+    }
+    const bool hidden = mScales.shown() || hideDocument;
+    mCaps.sync(capped, hidden ? std::nullopt : mClip.plane(), mClip.revision());
 }
 
 void DocumentView::report(nlohmann::json& out) const
@@ -177,6 +230,10 @@ void DocumentView::report(nlohmann::json& out) const
     out["chunk_blocks"] = mDisplay.chunkBlocks();
     out["actors"] = mDisplay.actorCount();
     out["triangles_drawn"] = mDisplay.trianglesDrawn();
+    out["clip"] = kClipAxisNames[int(mClip.axis())];
+    out["clip_offset"] = mClip.offset();
+    out["cap_area"] = mCaps.area();
+    out["cap_triangles"] = mCaps.triangleCount();
 }
 
 }  // namespace sculpt::ui

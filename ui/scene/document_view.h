@@ -15,6 +15,8 @@
 #include "ui/sculpting/surface_picker.h"
 #include "ui/view/brush_cursor.h"
 #include "ui/view/camera_control.h"
+#include "ui/view/cap_display.h"
+#include "ui/view/clip_plane.h"
 #include "ui/view/detail_view.h"
 #include "ui/view/model_display.h"
 #include "ui/view/pieces_display.h"
@@ -60,6 +62,11 @@ public:
     SurfacePicker& picker() { return mPicker; }
     /// The print check the clay shows (View > Print Check) and its thresholds.
     SurfaceTint& printCheck() { return mCheck; }
+    /// View > Clip Plane; its caps follow at the next sync().
+    ClipPlane& clip() { return mClip; }
+    const ClipPlane& clip() const { return mClip; }
+    /// The caps of the clip plane's cut.
+    const CapDisplay& caps() const { return mCaps; }
 
     /// A new document: what was drawn and picked of the old one goes; `frameIt` fits the camera.
     void show(const Document& document, bool frameIt);
@@ -74,8 +81,12 @@ public:
     void redrawPieces() { mPiecesShown = ~std::uint64_t(0); }
     /// Fits every piece shown in the view.
     void frameAll(const Document& document);
+    /// The box of every piece shown, in the world.
+    openvdb::BBoxd worldBox(const Document& document) const;
 
-    /// The sculpted piece's surface under the pixel, in its field's world (where edits are made).
+    /// The sculpted piece's surface under the pixel, in its field's world (where edits are made):
+    /// with the clip plane on, the cap where the ray meets the plane inside the clay, else the
+    /// surface on the side shown.
     std::optional<SurfaceHit> pickAt(const Document& document, double x, double y);
     /// A hit of pickAt in the world (the piece's placement applied).
     SurfaceHit inWorld(const Document& document, const SurfaceHit& hit) const;
@@ -101,9 +112,12 @@ public:
     void report(nlohmann::json& out) const;
 
 private:
+    /// pickAt's ray, in the world, against the clip plane.
+    std::optional<SurfaceHit> pickClipped(const Document& document, const Ray& ray, const SectionPlane& plane);
     DetailView detailView(double now, bool stroking, bool underBudget, double brushRadius);
 
     Viewport mViewport;
+    ClipPlane mClip;  // before the look and the displays, whose mappers take its planes
     SurfaceLook mLook;
     ModelDisplay mDisplay;
     ScalesDisplay mScales;
@@ -114,6 +128,7 @@ private:
     CameraControl mCamera;
     SurfacePicker mPicker;
     SurfaceTint mCheck;
+    CapDisplay mCaps;
     std::uint64_t mPiecesShown = ~std::uint64_t(0);  // the document's piecesRevision drawn
     const SculptSession* mActiveShown = nullptr;     // the session the model display shows
     std::optional<SurfaceHit> mHover;                // the surface under the pointer, picked for mHoverKey

@@ -13,12 +13,13 @@ namespace sculpt::ui {
 struct HoverKey {
     Ray ray;
     std::uint64_t fieldId = 0, mesherId = 0, version = 0;
-    bool picking = false;  ///< over the view, not dragging the camera or a setting
+    std::uint64_t clip = 0;  ///< the clip plane's revision
+    bool picking = false;    ///< over the view, not dragging the camera or a setting
 
     bool operator==(const HoverKey& o) const
     {
         return ray.origin == o.ray.origin && ray.direction == o.ray.direction && fieldId == o.fieldId &&
-               mesherId == o.mesherId && version == o.version && picking == o.picking;
+               mesherId == o.mesherId && version == o.version && clip == o.clip && picking == o.picking;
     }
     bool operator!=(const HoverKey& o) const { return !(*this == o); }
 };

@@ -17,7 +17,7 @@ void PiecesDisplay::sync(const std::vector<DrawnPiece>& pieces)
         if (kept != mDrawn.end()) {
             entry = std::move(*kept);
         } else {
-            entry.display = std::make_unique<ShapeDisplay>(mRenderer, ShapeStyle{});
+            entry.display = std::make_unique<ShapeDisplay>(mRenderer, ShapeStyle{1.0, 1.0, 1.0, 1.0, 0.0, mClipping});
             entry.display->set(*piece.mesher, piece.voxelSize);
             entry.mesherId = piece.mesher->id();
             entry.version = piece.mesher->version();

@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+class vtkPlaneCollection;
 class vtkRenderer;
 
 namespace sculpt::ui {
@@ -23,7 +24,8 @@ struct DrawnPiece {
 
 class PiecesDisplay {
 public:
-    explicit PiecesDisplay(vtkRenderer* renderer) : mRenderer(renderer) {}
+    /// `clipping`: the clip plane's planes, which the pieces are cut by as the model is.
+    PiecesDisplay(vtkRenderer* renderer, vtkPlaneCollection* clipping) : mRenderer(renderer), mClipping(clipping) {}
 
     /// Draws `pieces` (in place of what it drew); a mesh drawn before is not drawn again. Called
     /// when the pieces changed, not per frame.
@@ -45,6 +47,7 @@ private:
     };
 
     vtkRenderer* mRenderer;
+    vtkPlaneCollection* mClipping;
     std::vector<Drawn> mDrawn;
     openvdb::BBoxd mBox;
     bool mHidden = false;

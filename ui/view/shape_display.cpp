@@ -51,6 +51,7 @@ void ShapeDisplay::set(const IncrementalMesher& mesher, double voxelSize)
     vtkNew<vtkPolyDataMapper> mapper;
     mapper->SetInputData(polyDataOf(shown));
     mapper->ScalarVisibilityOff();
+    if (mStyle.clipping) mapper->SetClippingPlanes(mStyle.clipping);
     mActor = vtkSmartPointer<vtkActor>::New();
     mActor->SetMapper(mapper);
     vtkProperty* look = mActor->GetProperty();

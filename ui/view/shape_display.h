@@ -16,6 +16,7 @@ class vtkActor;
 namespace sculpt {
 class IncrementalMesher;
 }
+class vtkPlaneCollection;
 class vtkRenderer;
 
 namespace sculpt::ui {
@@ -23,7 +24,8 @@ namespace sculpt::ui {
 struct ShapeStyle {
     double red = 1.0, green = 1.0, blue = 1.0;
     double opacity = 1.0;
-    double clusterVoxels = 0.0;  ///< 0: full detail
+    double clusterVoxels = 0.0;              ///< 0: full detail
+    vtkPlaneCollection* clipping = nullptr;  ///< the clip plane's (clay: the other pieces)
     static ShapeStyle ghost() { return {0.45, 0.7, 1.0, 0.3, 2.0}; }
     static ShapeStyle preview() { return {0.93, 0.89, 0.8, 1.0, 0.0}; }     // bone
     static ShapeStyle primitives() { return {0.55, 0.9, 0.6, 0.55, 0.0}; }  // what a bake adds

@@ -1,6 +1,8 @@
 #include "ui/view/surface_look.h"
 
 #include <vtkActor.h>
+#include <vtkMapper.h>
+#include <vtkPlaneCollection.h>
 #include <vtkProperty.h>
 #include <vtkShaderProperty.h>
 #include <vtkUniforms.h>
@@ -128,10 +130,13 @@ void SurfaceLook::setWireframe(bool wireframe)
         false);
 }
 
+void SurfaceLook::setClipping(vtkPlaneCollection* planes) { mClipping = planes; }
+
 void SurfaceLook::apply(vtkActor* actor) const
 {
     actor->SetProperty(mProperty);
     actor->SetShaderProperty(mShader);
+    if (mClipping && actor->GetMapper()) actor->GetMapper()->SetClippingPlanes(mClipping);
 }
 
 }  // namespace sculpt::ui

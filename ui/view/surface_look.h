@@ -10,6 +10,7 @@
 #include <vtkSmartPointer.h>
 
 class vtkActor;
+class vtkPlaneCollection;
 class vtkProperty;
 class vtkShaderProperty;
 
@@ -35,12 +36,15 @@ public:
     void setXRay(bool xray);
     bool xray() const { return mXRay; }
 
-    /// Gives an actor the shared look.
+    /// The planes every clay actor is clipped by (ClipPlane::planes()); set before apply().
+    void setClipping(vtkPlaneCollection* planes);
+    /// Gives an actor the shared look (and its mapper the clipping planes).
     void apply(vtkActor* actor) const;
 
 private:
     vtkSmartPointer<vtkProperty> mProperty;
     vtkSmartPointer<vtkShaderProperty> mShader;
+    vtkSmartPointer<vtkPlaneCollection> mClipping;
     Shading mShading = Shading::Clay;
     bool mFlat = false;
     bool mWireframe = false;

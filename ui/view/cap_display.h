@@ -1,0 +1,52 @@
+#pragma once
+/// @file cap_display.h
+/// @brief The caps of the clip plane's cut: each visible piece's section by the plane
+///        (crossSection, from its field), drawn flat in a darker shade of its colour where the
+///        clipped clay would show its inside. A cap is made again only when its piece's field,
+///        look or the plane changed.
+
+#include "core/field/field_image.h"
+#include "core/field/piece.h"
+#include "core/solids/cross_section.h"
+
+#include <vtkSmartPointer.h>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+class vtkActor;
+class vtkRenderer;
+
+namespace sculpt::ui {
+
+/// A piece to cap: its look, the colour it is drawn in (the sculpted piece's is the clay's), and
+/// its field at a version (the mesher's).
+struct CappedPiece {
+    const PieceLook* look;
+    openvdb::Vec3f colour;
+    const FieldImage* field;
+    std::uint64_t version;
+};
+
+class CapDisplay {
+public:
+    explicit CapDisplay(vtkRenderer* renderer);
+    ~CapDisplay();
+
+    /// Caps each visible piece's cut by `plane` (world; none: no caps).
+    void sync(const std::vector<CappedPiece>& pieces, const std::optional<SectionPlane>& plane,
+              std::uint64_t planeRevision);
+    /// The caps' area in the world, and their triangles.
+    double area() const;
+    std::size_t triangleCount() const;
+
+private:
+    struct Cap;
+    void remake(Cap& cap, const CappedPiece& piece, const SectionPlane& plane);
+
+    vtkRenderer* mRenderer;
+    std::vector<Cap> mCaps;
+};
+
+}  // namespace sculpt::ui
