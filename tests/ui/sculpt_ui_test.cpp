@@ -146,6 +146,36 @@ TEST(SculptUi, AddAndCarveDragsChangeTheVolumeAndCtrlZRestoresTheGridBitForBit)
     EXPECT_EQ(reports["redone"]["shells"], 1);
 }
 
+// View > Clip Plane across x, seen from +x: the cap is the ball's section from its field (pi r^2
+// within 0.5%), the pointer picks the cap (its normal the plane's), a carve there tunnels into
+// the clay under the cap, and Off shows the whole ball again.
+TEST(SculptUi, TheClipPlaneCapsTheCutWithTheExactSectionAndStrokesLandOnTheCap)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    UiEvents events;
+    events.key("C", {"alt"}).key("3").move(kCentreX, kCentreY).report(r, "capped");
+    events.drag(kCentreX - 40, kCentreY, kCentreX + 40, kCentreY, 10, {"ctrl"}).move(kCentreX, kCentreY);
+    events.report(r, "carved").screenshot(dir / "cap.png");
+    for (int i = 0; i < 4; ++i) events.key("C", {"alt"});
+    events.report(r, "off");
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    const nlohmann::json& capped = reports["capped"];
+    EXPECT_EQ(capped["clip"], "x (left-right)");
+    EXPECT_NEAR(capped["cap_area"].get<double>(), M_PI * 2500.0, 0.005 * M_PI * 2500.0);
+    ASSERT_TRUE(capped["pick"]["hit"].get<bool>());
+    EXPECT_NEAR(capped["pick"]["normal"][0].get<double>(), 1.0, 1e-9) << "the cap, not the sphere behind it";
+    EXPECT_NEAR(capped["pick"]["position"][0].get<double>(), capped["clip_offset"].get<double>(), 1e-6);
+    // The carve landed on the cap: clay went, and the cap lost the tunnel's section.
+    EXPECT_LT(reports["carved"]["volume"].get<double>(), capped["volume"].get<double>() - 100.0);
+    EXPECT_LT(reports["carved"]["cap_area"].get<double>(), capped["cap_area"].get<double>() - 50.0);
+    EXPECT_EQ(reports["carved"]["undo"], 1);
+    EXPECT_EQ(reports["off"]["clip"], "Off");
+    EXPECT_EQ(reports["off"]["cap_area"], 0.0);
+}
+
 TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
 {
     TempDir dir;
