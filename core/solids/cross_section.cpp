@@ -89,7 +89,8 @@ struct Corner {
 /// Builds the section: polygons of the plane's (a, b) coordinates into its mesh and area.
 class SectionBuilder {
 public:
-    SectionBuilder(const PlaneLattice& lattice, const openvdb::Vec3d& normal) : mLattice(lattice)
+    SectionBuilder(const PlaneLattice& lattice, const openvdb::Vec3d& normal, bool region)
+        : mLattice(lattice), mRegion(region)
     {
         mNormal = {float(normal.x()), float(normal.y()), float(normal.z())};
     }
@@ -100,7 +101,8 @@ public:
         const Corner in[3] = {p, q, r};
         Corner kept[4];
         int count = 0;
-        std::vector<Corner> crossings;
+        Corner crossings[3];
+        int crossed = 0;
         for (int k = 0; k < 3; ++k) {
             const Corner& s = in[k];
             const Corner& e = in[(k + 1) % 3];
@@ -109,11 +111,11 @@ public:
                 const double t = s.phi / (s.phi - e.phi);
                 const Corner x{s.a + t * (e.a - s.a), s.b + t * (e.b - s.b), 0.0};
                 kept[count++] = x;
-                crossings.push_back(x);
+                crossings[crossed++] = x;
             }
         }
-        for (int k = 1; k + 1 < count; ++k) addTriangle(kept[0], kept[k], kept[k + 1]);
-        if (crossings.size() == 2)
+        for (int k = 1; mRegion && k + 1 < count; ++k) addTriangle(kept[0], kept[k], kept[k + 1]);
+        if (crossed == 2)
             mSection.outline.push_back(
                 {mLattice.at(crossings[0].a, crossings[0].b), mLattice.at(crossings[1].a, crossings[1].b)});
     }
@@ -136,13 +138,14 @@ private:
     }
 
     const PlaneLattice& mLattice;
+    bool mRegion;
     std::array<float, 3> mNormal{};
     CrossSection mSection;
 };
 
 }  // namespace
 
-CrossSection crossSection(const FieldImage& field, const SectionPlane& plane)
+CrossSection crossSection(const FieldImage& field, const SectionPlane& plane, SectionParts parts)
 {
     const PlaneLattice lattice = latticeOver(field, plane);
     if (lattice.nu < 2 || lattice.nv < 2) return {};
@@ -150,15 +153,44 @@ CrossSection crossSection(const FieldImage& field, const SectionPlane& plane)
     const auto at = [&](int a, int b) {
         return Corner{double(a), double(b), phi[std::size_t(b) * std::size_t(lattice.nu) + std::size_t(a)]};
     };
-    SectionBuilder builder(lattice, plane.normal);
+    SectionBuilder builder(lattice, plane.normal, parts == SectionParts::RegionAndOutline);
     for (int b = 0; b + 1 < lattice.nv; ++b)
         for (int a = 0; a + 1 < lattice.nu; ++a) {
             const Corner c00 = at(a, b), c10 = at(a + 1, b), c11 = at(a + 1, b + 1), c01 = at(a, b + 1);
-            if (c00.phi >= 0.0 && c10.phi >= 0.0 && c11.phi >= 0.0 && c01.phi >= 0.0) continue;
+            const int inside = (c00.phi < 0.0) + (c10.phi < 0.0) + (c11.phi < 0.0) + (c01.phi < 0.0);
+            if (inside == 0 || (inside == 4 && parts == SectionParts::Outline)) continue;
             builder.clipTriangle(c00, c10, c11);
             builder.clipTriangle(c00, c11, c01);
         }
     return builder.take();
+}
+
+CrossSection placedCrossSection(const FieldImage& field, const openvdb::Mat4d& placement, const SectionPlane& plane,
+                                SectionParts parts)
+{
+    const openvdb::Mat4d inverse = placement.inverse();
+    const openvdb::Vec3d axis = std::abs(plane.normal.x()) < 0.9 ? openvdb::Vec3d(1, 0, 0) : openvdb::Vec3d(0, 1, 0);
+    const openvdb::Vec3d t1 = plane.normal.cross(axis).unit(), t2 = plane.normal.cross(t1);
+    // The plane's tangents turned into the field's world span its plane there; placements never
+    // mirror (placementProblem), so their cross product keeps the normal's side.
+    const openvdb::Vec3d n = inverse.transform3x3(t2).cross(inverse.transform3x3(t1)).unit();
+    CrossSection section = crossSection(field, {inverse.transform(plane.origin), n}, parts);
+    const std::array<float, 3> normal{float(plane.normal.x()), float(plane.normal.y()), float(plane.normal.z())};
+    TriangleMesh& region = section.region;
+    for (auto& p : region.positions) {
+        const openvdb::Vec3d w = placement.transform(openvdb::Vec3d(p[0], p[1], p[2]));
+        p = {float(w.x()), float(w.y()), float(w.z())};
+    }
+    for (auto& normalOf : region.normals) normalOf = normal;
+    for (auto& segment : section.outline)
+        for (auto& end : segment) end = placement.transform(end);
+    section.area = 0.0;
+    for (const auto& t : region.triangles) {
+        const openvdb::Vec3d a(region.positions[t[0]].data()), b(region.positions[t[1]].data()),
+            c(region.positions[t[2]].data());
+        section.area += 0.5 * (b - a).cross(c - a).length();
+    }
+    return section;
 }
 
 }  // namespace sculpt

@@ -32,7 +32,17 @@ struct CrossSection {
     double area = 0.0;                                   ///< of `region`
 };
 
-/// The cut of `field` by `plane` (both in the field's world).
-CrossSection crossSection(const FieldImage& field, const SectionPlane& plane);
+/// What crossSection makes: the region too (a cap), or the outline alone (a slice's contour).
+enum class SectionParts { RegionAndOutline, Outline };
+
+/// The cut of `field` by `plane` (both in the field's world); with SectionParts::Outline the
+/// region is left empty (and its area 0).
+CrossSection crossSection(const FieldImage& field, const SectionPlane& plane,
+                          SectionParts parts = SectionParts::RegionAndOutline);
+
+/// The cut of a placed field (a piece: world from its field's world, row vectors) by a plane of
+/// the world, in the world: its region's normals the plane's, its area the world's.
+CrossSection placedCrossSection(const FieldImage& field, const openvdb::Mat4d& placement, const SectionPlane& plane,
+                                SectionParts parts = SectionParts::RegionAndOutline);
 
 }  // namespace sculpt

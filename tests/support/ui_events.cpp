@@ -21,6 +21,8 @@ UiEvents& UiEvents::press(const std::string& button, const std::vector<std::stri
     return add({{"type", "button"}, {"button", button}, {"action", "press"}, {"mods", mods}});
 }
 
+UiEvents& UiEvents::wheel(double dy) { return add({{"type", "wheel"}, {"dy", dy}}); }
+
 UiEvents& UiEvents::release(const std::string& button)
 {
     return add({{"type", "button"}, {"button", button}, {"action", "release"}});

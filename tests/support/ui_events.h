@@ -22,6 +22,8 @@ public:
     UiEvents& drag(double x0, double y0, double x1, double y1, int steps = 20,
                    const std::vector<std::string>& mods = {});
     UiEvents& key(const std::string& name, const std::vector<std::string>& mods = {});
+    /// The wheel turned by `dy` notches (positive: away from the user).
+    UiEvents& wheel(double dy);
     /// 40 moves once around the ellipse of centre (cx, cy) and radii rx, ry, from and back to
     /// its rightmost point: a lasso, with the button pressed there before.
     UiEvents& ellipse(double cx, double cy, double rx, double ry);

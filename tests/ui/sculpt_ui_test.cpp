@@ -176,6 +176,67 @@ TEST(SculptUi, TheClipPlaneCapsTheCutWithTheExactSectionAndStrokesLandOnTheCap)
     EXPECT_EQ(reports["off"]["cap_area"], 0.0);
 }
 
+// View > Slices on an imported scan: the kept scan's three planes through the scan's centre with
+// the surface's contour on each; a click in the axial view moves the cursor within that plane, a
+// right drag changes the window and level, the wheel steps the sagittal plane by a sample, and a
+// click on the model puts the cursor where the pointer picks it. A document keeping no scan says
+// so instead.
+TEST(SculptUi, TheSlicesViewShowsTheKeptScanWithContoursLinkedToTheModel)
+{
+    TempDir dir;
+    const int n = 64;
+    std::string bytes(std::size_t(n * n * n), '\0');
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                bytes[std::size_t((k * n + j) * n + i)] = std::hypot(i - 31.5, j - 31.5, k - 31.5) < 20.0 ? 100 : 0;
+    std::ofstream(dir / "ball.raw", std::ios::binary) << bytes;
+    const CommandResult import =
+        runSculpt("import ball.raw --raw-dims 64,64,64 --raw-type uint8 --iso 50 -o ball.vdb", dir.path().string());
+    ASSERT_EQ(import.exitCode, 0) << import.err;
+
+    const fs::path r = dir / "r.jsonl";
+    const double axialX = 628, axialY = 644, sagittalX = 1148;  // the views' centres at 1280 x 800
+    UiEvents events;
+    events.key("V", {"alt"}).move(640, 200).report(r, "shown").screenshot(dir / "slices.png");
+    events.move(axialX + 30, axialY - 20).press().release().report(r, "clicked");
+    events.move(axialX + 260, axialY).press("right").move(axialX + 300, axialY + 30).release("right");
+    events.report(r, "levelled");
+    events.move(sagittalX, axialY).wheel(4).report(r, "stepped");
+    events.move(640, 250).report(r, "over-model").press().release().report(r, "model-clicked");
+    const CommandResult run = play(dir, events, (dir / "ball.vdb").string());
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+
+    const nlohmann::json& shown = reports["shown"]["slices"];
+    ASSERT_TRUE(shown["shown"].get<bool>()) << reports["shown"]["error"];
+    for (const char* view : {"Axial", "Coronal", "Sagittal"}) EXPECT_GT(shown[view].get<int>(), 50) << view;
+    const auto cursor = [&](const char* name, int a) { return reports[name]["slices"]["cursor"][a].get<double>(); };
+    EXPECT_NEAR(cursor("shown", 0), 31.5, 0.5);  // the scan's centre: the raw file's origin is sample 0
+    EXPECT_NE(cursor("clicked", 0), cursor("shown", 0));
+    EXPECT_NE(cursor("clicked", 1), cursor("shown", 1));
+    EXPECT_EQ(cursor("clicked", 2), cursor("shown", 2)) << "a click in the axial view keeps its plane";
+    EXPECT_GT(cursor("clicked", 0), cursor("shown", 0)) << "right on the screen is the patient's left: +x";
+    EXPECT_LT(cursor("clicked", 1), cursor("shown", 1)) << "up on the screen is the front: -y";
+    const nlohmann::json& before = reports["clicked"]["slices"];
+    const nlohmann::json& after = reports["levelled"]["slices"];
+    EXPECT_GT(after["window"].get<double>(), before["window"].get<double>());
+    EXPECT_LT(after["level"].get<double>(), before["level"].get<double>());
+    EXPECT_NEAR(cursor("stepped", 0), cursor("levelled", 0) + 4.0, 1e-9) << "four samples of 1 mm";
+    const nlohmann::json& pick = reports["over-model"]["pick"];
+    ASSERT_TRUE(pick["hit"].get<bool>());
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(cursor("model-clicked", a), pick["position"][a].get<double>(), 1e-9);
+
+    TempDir plain;
+    UiEvents none;
+    none.key("V", {"alt"}).report(plain / "r.jsonl", "refused");
+    ASSERT_EQ(play(plain, none).exitCode, 0);
+    const Reports plainReports(plain / "r.jsonl");
+    const nlohmann::json& refused = plainReports["refused"];
+    EXPECT_FALSE(refused["slices"]["shown"].get<bool>());
+    EXPECT_NE(refused.dump().find("keeps no scan"), std::string::npos) << refused.dump();
+}
+
 TEST(SculptUi, AStampReuploadsOnlyTheBlocksTheMesherChanged)
 {
     TempDir dir;

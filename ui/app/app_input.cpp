@@ -69,6 +69,9 @@ void SculptApp::routeMouse(const InputEvent& event)
     mPointer.track(event);
     const bool overPanel = ImGui::GetIO().WantCaptureMouse && !mDrag.active() && !mTools.current().holding();
     if (modalOpen(mDialogs, mFiles, mWork.notices()) || (overPanel && event.type != EventType::MouseMove)) return;
+    if (!mDrag.active() && !mTools.current().holding() &&
+        mView.sliceMouse(mWork.document(), event, mPointer.x(), mPointer.y()))
+        return;
     if (event.type == EventType::Wheel)
         mView.zoomAt(mWork.document(), mPointer.x(), mPointer.y(), std::pow(kWheelZoomStep, event.y));
     else if (event.type == EventType::MouseButton && event.press) pressButton(event);

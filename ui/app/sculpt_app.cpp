@@ -187,6 +187,7 @@ void SculptApp::drawPanels()
     drawHistoryPanel(*this);
     drawPiecesPanel(*this);
     drawStatusBar(*this);
+    drawSliceLabels(*this);
     drawDialogs(*this);
     drawJobPanel(*this);
     mModes.drawPanel();

@@ -92,6 +92,7 @@ enum class Command {
     ToggleScales,
     ToggleGhost,
     ToggleXRay,
+    ToggleSlices,
     CycleClipPlane,
     ClipPlaneForward,
     ClipPlaneBack,

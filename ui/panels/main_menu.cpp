@@ -200,6 +200,9 @@ void drawMainMenu(PanelHost& host)
                             host.camera().trackball))
             host.execute(Command::ToggleTrackball);
         printCheckMenu(host.view().printCheck());
+        if (ImGui::MenuItem("Slices", host.commands().shortcutText(Command::ToggleSlices).c_str(),
+                            host.view().slices().shown(), host.whyNot(Command::ToggleSlices).empty()))
+            host.execute(Command::ToggleSlices);
         clipPlaneMenu(host);
         ImGui::Separator();
         for (Command c : {Command::FrameModel, Command::ViewFront, Command::ViewBack, Command::ViewRight,

@@ -21,6 +21,8 @@ void drawHistoryPanel(PanelHost& host);
 /// name, colour, visibility, solo, duplicate, delete, split and merge, push on contact.
 void drawPiecesPanel(PanelHost& host);
 void drawStatusBar(PanelHost& host);
+/// The Slices view's labels (names, directions, window and level) over its views.
+void drawSliceLabels(PanelHost& host);
 void drawDialogs(PanelHost& host);
 void drawHelpPanel(PanelHost& host);
 /// The running job's progress bar and Cancel button, if a job runs.

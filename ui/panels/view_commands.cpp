@@ -128,6 +128,20 @@ double clipStep(PanelHost& host)
 
 void addClipCommands(CommandRegistry& commands, PanelHost& host)
 {
+    SliceViews& slices = host.view().slices();
+    commands.add({Command::ToggleSlices,
+                  "Slices",
+                  "The kept scan's axial, coronal and sagittal slices through a cursor, with the pieces' contours: "
+                  "left click or drag sets the cursor (a click on the model too), right drag the window and level, "
+                  "the wheel steps",
+                  {{GLFW_KEY_V, kAlt}},
+                  [&host] {
+                      return host.document().keptScan()
+                                 ? std::string()
+                                 : std::string("this document keeps no scan: import one (File > Import) to see its "
+                                               "slices");
+                  },
+                  [&slices] { slices.setShown(!slices.shown()); }});
     ClipPlane& clip = host.view().clip();
     commands.add({Command::CycleClipPlane,
                   "Clip Plane",

@@ -34,7 +34,7 @@ DocumentView::DocumentView(int width, int height, bool draws, int chunkBlocks)
     : mViewport(width, height, draws), mLook(lookClippedBy(mClip)), mDisplay(mViewport.renderer(), mLook, chunkBlocks),
       mScales(mViewport.renderer()), mGhost(mViewport.renderer(), ShapeStyle::ghost()),
       mPieces(mViewport.renderer(), mClip.planes()), mCursor(mViewport.overlay()), mPlanes(mViewport.renderer()),
-      mCamera(mViewport), mCaps(mViewport.renderer())
+      mCamera(mViewport), mCaps(mViewport.renderer()), mSlices(mViewport.window(), mViewport.overlay())
 {}
 
 void DocumentView::show(const Document& document, bool frameIt)
@@ -94,6 +94,7 @@ void DocumentView::frameAll(const Document& document)
 std::optional<SurfaceHit> DocumentView::pickAt(const Document& document, double x, double y)
 {
     if (x < 0 || y < 0 || x >= mViewport.width() || y >= mViewport.height()) return std::nullopt;
+    if (mSlices.viewAt(x, y)) return std::nullopt;
     if (const std::optional<SectionPlane> plane = mClip.plane())
         return pickClipped(document, mViewport.rayThrough(x, y), *plane);
     const SculptSession& session = document.session();
@@ -127,6 +128,18 @@ std::optional<SurfaceHit> DocumentView::pickClipped(const Document& document, co
                                                        transformedRay(shown, fieldFromWorld), session.strokeJournal());
     if (hit && mClip.hides(inWorld(document, *hit).position)) return std::nullopt;
     return hit;
+}
+
+bool DocumentView::sliceMouse(const Document& document, const InputEvent& event, double x, double y)
+{
+    const bool onModel = event.type == EventType::MouseButton && event.press && event.button == kLeftButton &&
+                         mSlices.shown() && mSlices.hasScan() && !mSlices.viewAt(x, y);
+    if (onModel) {
+        if (const std::optional<SurfaceHit> hit = pickAt(document, x, y))
+            mSlices.setCursor(inWorld(document, *hit).position);
+        return false;  // the tool takes the press too
+    }
+    return mSliceMouse.handle(mSlices, event, x, y);
 }
 
 SurfaceHit DocumentView::inWorld(const Document& document, const SurfaceHit& hit) const
@@ -203,15 +216,18 @@ void DocumentView::sync(const Document& document, const IncrementalMesher* modeM
     mDisplay.setHidden(mScales.shown() || hideDocument);
     mPieces.setHidden(mScales.shown() || hideDocument);
     mPlanes.show(brush.symmetry, 0.6 * modelSize);
-    std::vector<CappedPiece> capped;
+    std::vector<FieldPiece> cut;
     const openvdb::Vec3f clay{float(kClayColour[0]), float(kClayColour[1]), float(kClayColour[2])};
     for (const DocumentPiece& piece : document.pieces()) {
         const bool sculpted = piece.session.get() == &document.session();
-        capped.push_back({&piece.look, sculpted ? clay : piece.look.colour, &piece.session->field(),
-                          piece.session->mesher()->version()});
+        cut.push_back({&piece.look, sculpted ? clay : piece.look.colour, sculpted, &piece.session->field(),
+                       piece.session->mesher()->version()});
     }
     const bool hidden = mScales.shown() || hideDocument;
-    mCaps.sync(capped, hidden ? std::nullopt : mClip.plane(), mClip.revision());
+    mCaps.sync(cut, hidden ? std::nullopt : mClip.plane(), mClip.revision());
+    mSlices.setScan(document.keptScan());
+    mSlices.layout(mViewport.width(), mViewport.height());
+    mSlices.sync(cut);
 }
 
 void DocumentView::report(nlohmann::json& out) const
@@ -234,6 +250,12 @@ void DocumentView::report(nlohmann::json& out) const
     out["clip_offset"] = mClip.offset();
     out["cap_area"] = mCaps.area();
     out["cap_triangles"] = mCaps.triangleCount();
+    nlohmann::json slices = {{"shown", mSlices.shown() && mSlices.hasScan()},
+                             {"cursor", {mSlices.cursor().x, mSlices.cursor().y, mSlices.cursor().z}},
+                             {"window", mSlices.window()},
+                             {"level", mSlices.level()}};
+    for (int a = 0; a < 3; ++a) slices[kSliceNames[a]] = mSlices.contourSegments(SliceAxis(a));
+    out["slices"] = slices;
 }
 
 }  // namespace sculpt::ui

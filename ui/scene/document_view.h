@@ -10,6 +10,8 @@
 /// depends on changed (HoverKey).
 
 #include "ui/document/open_preview.h"
+#include "ui/input/input_event.h"
+#include "ui/scene/slice_mouse.h"
 #include "ui/sculpting/brush_options.h"
 #include "ui/sculpting/hover_key.h"
 #include "ui/sculpting/surface_picker.h"
@@ -22,6 +24,7 @@
 #include "ui/view/pieces_display.h"
 #include "ui/view/scales_display.h"
 #include "ui/view/shape_display.h"
+#include "ui/view/slice_views.h"
 #include "ui/view/surface_look.h"
 #include "ui/view/surface_tint.h"
 #include "ui/view/symmetry_planes.h"
@@ -67,6 +70,12 @@ public:
     const ClipPlane& clip() const { return mClip; }
     /// The caps of the clip plane's cut.
     const CapDisplay& caps() const { return mCaps; }
+    /// View > Slices: the kept scan's planes through a cursor.
+    SliceViews& slices() { return mSlices; }
+    const SliceViews& slices() const { return mSlices; }
+    /// The mouse for the Slices view (SliceMouse); a left press on the model also moves their
+    /// cursor there. @return whether the event was the slices' alone.
+    bool sliceMouse(const Document& document, const InputEvent& event, double x, double y);
 
     /// A new document: what was drawn and picked of the old one goes; `frameIt` fits the camera.
     void show(const Document& document, bool frameIt);
@@ -86,7 +95,7 @@ public:
 
     /// The sculpted piece's surface under the pixel, in its field's world (where edits are made):
     /// with the clip plane on, the cap where the ray meets the plane inside the clay, else the
-    /// surface on the side shown.
+    /// surface on the side shown; none over the Slices view.
     std::optional<SurfaceHit> pickAt(const Document& document, double x, double y);
     /// A hit of pickAt in the world (the piece's placement applied).
     SurfaceHit inWorld(const Document& document, const SurfaceHit& hit) const;
@@ -129,6 +138,8 @@ private:
     SurfacePicker mPicker;
     SurfaceTint mCheck;
     CapDisplay mCaps;
+    SliceViews mSlices;
+    SliceMouse mSliceMouse;
     std::uint64_t mPiecesShown = ~std::uint64_t(0);  // the document's piecesRevision drawn
     const SculptSession* mActiveShown = nullptr;     // the session the model display shows
     std::optional<SurfaceHit> mHover;                // the surface under the pointer, picked for mHoverKey

@@ -20,11 +20,12 @@ class vtkRenderer;
 
 namespace sculpt::ui {
 
-/// A piece to cap: its look, the colour it is drawn in (the sculpted piece's is the clay's), and
+/// A piece as cut by a plane (a cap, a slice's contour): its look, the colour it is drawn in (the sculpted piece's is the clay's), and
 /// its field at a version (the mesher's).
-struct CappedPiece {
+struct FieldPiece {
     const PieceLook* look;
     openvdb::Vec3f colour;
+    bool sculpted;  ///< the piece being sculpted
     const FieldImage* field;
     std::uint64_t version;
 };
@@ -35,7 +36,7 @@ public:
     ~CapDisplay();
 
     /// Caps each visible piece's cut by `plane` (world; none: no caps).
-    void sync(const std::vector<CappedPiece>& pieces, const std::optional<SectionPlane>& plane,
+    void sync(const std::vector<FieldPiece>& pieces, const std::optional<SectionPlane>& plane,
               std::uint64_t planeRevision);
     /// The caps' area in the world, and their triangles.
     double area() const;
@@ -43,7 +44,7 @@ public:
 
 private:
     struct Cap;
-    void remake(Cap& cap, const CappedPiece& piece, const SectionPlane& plane);
+    void remake(Cap& cap, const FieldPiece& piece, const SectionPlane& plane);
 
     vtkRenderer* mRenderer;
     std::vector<Cap> mCaps;

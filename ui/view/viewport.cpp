@@ -74,6 +74,8 @@ void Viewport::render()
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+vtkRenderWindow* Viewport::window() const { return mWindow; }
+
 vtkCamera* Viewport::camera() const { return mRenderer->GetActiveCamera(); }
 
 glm::dmat4 Viewport::worldToNdc() const

@@ -10,6 +10,7 @@
 
 class vtkCamera;
 class vtkGenericOpenGLRenderWindow;
+class vtkRenderWindow;
 
 namespace sculpt::ui {
 
@@ -35,6 +36,8 @@ public:
     void render();
 
     vtkRenderer* renderer() const { return mRenderer; }
+    /// The render window the scene's renderers draw in (insets such as the slice views join it).
+    vtkRenderWindow* window() const;
     /// A renderer layered over the scene, sharing its camera: what must never hide (the cursor).
     vtkRenderer* overlay() const { return mOverlay; }
     vtkCamera* camera() const;
