@@ -41,6 +41,7 @@ enum class Command {
     Save,
     SaveAs,
     ExportMesh,
+    ExportLabels,
     SaveStrokes,
     Import,
     ApplyImport,

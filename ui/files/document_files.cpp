@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/io/vdb_layout.h"
+#include "sculpt/session/label_export.h"
 #include "sculpt/session/piece_meshes.h"
 #include "ui/workspace/workspace.h"
 
@@ -111,6 +112,23 @@ void DocumentFiles::exportMesh(const fs::path& path)
             mWork.notices().say(lines.size() == 1 ? lines.front()
                                                   : "exported " + std::to_string(lines.size()) +
                                                         " pieces: " + lines.front() + ", ...");
+            for (const std::string& line : lines) std::cout << "sculpt-ui: " << line << std::endl;
+        });
+}
+
+void DocumentFiles::exportLabels(const fs::path& path)
+{
+    if (mWork.busy()) return;
+    const Document& document = mWork.document();
+    const ScanLattice lattice = labelLattice({}, document.keptScan(), document.title());
+    auto pieces = std::make_shared<std::vector<Piece>>(document.piecesAsFiled());  // sharing the grids
+    mWork.startJob<std::vector<std::string>>(
+        "export " + path.filename().string(),
+        [pieces, lattice, path](const Progress& progress) {
+            return describeLabels(sculpt::exportLabels(*pieces, lattice, path, progress));
+        },
+        [this, path](std::vector<std::string> lines) {
+            mWork.notices().say("exported " + path.filename().string() + ": " + lines.front());
             for (const std::string& line : lines) std::cout << "sculpt-ui: " << line << std::endl;
         });
 }

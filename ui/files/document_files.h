@@ -50,6 +50,9 @@ public:
     void saveTo(const std::filesystem::path& path);
     /// Writes the surface as a mesh file, as a job.
     void exportMesh(const std::filesystem::path& path);
+    /// Writes the pieces as a label map on the kept scan's lattice (File > Export Segmentation),
+    /// as a job. @throws InputError if the document keeps no scan.
+    void exportLabels(const std::filesystem::path& path);
     /// The document's path with `extension` ("doc.ply"), or `fallback` for an unnamed document.
     std::string besideDocument(const char* extension, const char* fallback) const;
 

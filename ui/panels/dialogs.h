@@ -28,6 +28,7 @@ struct Prompt {
         Open,
         SaveAs,
         ExportMesh,
+        ExportLabels,
         SaveStrokes,
         SmoothModel,
         OffsetModel,

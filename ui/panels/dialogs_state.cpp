@@ -16,6 +16,7 @@ const char* kindName(Prompt::Kind kind)
     case K::Open: return "open";
     case K::SaveAs: return "save-as";
     case K::ExportMesh: return "export";
+    case K::ExportLabels: return "export-labels";
     case K::SaveStrokes: return "save-strokes";
     case K::SmoothModel: return "smooth-model";
     case K::OffsetModel: return "offset-model";

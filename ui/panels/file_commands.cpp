@@ -82,6 +82,20 @@ void addFileCommands(CommandRegistry& commands, PanelHost& host)
                       dialogs.ask(K::ExportMesh, files.besideDocument(".ply", "sculpt.ply"),
                                   [&files](const fs::path& path) { files.exportMesh(path); });
                   }});
+    commands.add({Command::ExportLabels,
+                  "Export Segmentation...",
+                  "Give the pieces back to the scan as a label map on its lattice (NIfTI, NRRD, Slicer .seg.nrrd)",
+                  {{GLFW_KEY_E, kControl | kShift}},
+                  [&work] {
+                      return work.document().keptScan()
+                                 ? std::string()
+                                 : std::string("this document keeps no scan to label: `sculpt export-labels --like "
+                                               "SCAN` labels another scan's lattice");
+                  },
+                  [&] {
+                      dialogs.ask(K::ExportLabels, files.besideDocument(".seg.nrrd", "labels.seg.nrrd"),
+                                  [&files](const fs::path& path) { files.exportLabels(path); });
+                  }});
     commands.add(
         {Command::SaveStrokes, "Save Strokes...", "Write this session's strokes for `sculpt apply`", {}, nullptr, [&] {
              dialogs.ask(K::SaveStrokes, files.besideDocument(".strokes.json", "strokes.json"),

@@ -133,6 +133,7 @@ void drawMainMenu(PanelHost& host)
         item(Command::Save);
         item(Command::SaveAs);
         item(Command::ExportMesh);
+        item(Command::ExportLabels);
         item(Command::SaveStrokes);
         ImGui::Separator();
         item(Command::LoadTarget);
