@@ -54,7 +54,7 @@ FileKinds kindsOf(Prompt::Kind prompt)
     case P::SaveStrokes:
     case P::LoadScene:
     case P::SaveScene: return {{".json"}};
-    case P::Import: return {join(scans, meshes), true, true};
+    case P::Import: return {join(join({".vdb"}, scans), meshes), true, true};  // .vdb: a document's kept scan
     case P::Target:
     case P::Morph: return {join(join({".vdb"}, scans), meshes), true, true};
     case P::MorphExport: return {{".vdb"}, false, true};

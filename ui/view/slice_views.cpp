@@ -195,6 +195,21 @@ void SliceViews::setCursor(const glm::dvec3& world)
     placeMarker();
 }
 
+std::pair<glm::dvec2, glm::dvec2> SliceViews::scanExtent(SliceAxis axis) const
+{
+    const auto [right, up] = screenAxes(axis);
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 corner((c & 1) ? mScanBox.max().x() : mScanBox.min().x(),
+                                (c & 2) ? mScanBox.max().y() : mScanBox.min().y(),
+                                (c & 4) ? mScanBox.max().z() : mScanBox.min().z());
+        const glm::dvec2 uv(glm::dot(corner, right), glm::dot(corner, up));
+        lo = glm::min(lo, uv);
+        hi = glm::max(hi, uv);
+    }
+    return {lo, hi};
+}
+
 std::pair<glm::dvec3, glm::dvec3> SliceViews::screenAxes(SliceAxis axis)
 {
     switch (axis) {
@@ -244,15 +259,11 @@ vtkImageData* SliceViews::sliceImage(SliceAxis axis) const
 
 void SliceViews::sample(View& view)
 {
-    const auto [right, up] = screenAxes(view.axis);
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 corner((c & 1) ? mScanBox.max().x() : mScanBox.min().x(),
-                                (c & 2) ? mScanBox.max().y() : mScanBox.min().y(),
-                                (c & 4) ? mScanBox.max().z() : mScanBox.min().z());
-        const double uv[2] = {glm::dot(corner, right), glm::dot(corner, up)};
-        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], uv[k]), hi[k] = std::max(hi[k], uv[k]);
-    }
+    // Plain copies: the rows' lambda below takes them (C++17 lambdas cannot take structured bindings).
+    const std::pair<glm::dvec3, glm::dvec3> axes = screenAxes(view.axis);
+    const glm::dvec3 right = axes.first, up = axes.second;
+    const std::pair<glm::dvec2, glm::dvec2> extent = scanExtent(view.axis);
+    const glm::dvec2 lo = extent.first, hi = extent.second;
     const double step = std::max(mSpacing, std::max(hi[0] - lo[0], hi[1] - lo[1]) / kMostSamples);
     const int nu = int(std::ceil((hi[0] - lo[0]) / step)) + 1, nv = int(std::ceil((hi[1] - lo[1]) / step)) + 1;
     auto image = vtkSmartPointer<vtkImageData>::New();
@@ -281,15 +292,7 @@ void SliceViews::sample(View& view)
 
 void SliceViews::frameCamera(View& view)
 {
-    const auto [right, up] = screenAxes(view.axis);
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 corner((c & 1) ? mScanBox.max().x() : mScanBox.min().x(),
-                                (c & 2) ? mScanBox.max().y() : mScanBox.min().y(),
-                                (c & 4) ? mScanBox.max().z() : mScanBox.min().z());
-        const double uv[2] = {glm::dot(corner, right), glm::dot(corner, up)};
-        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], uv[k]), hi[k] = std::max(hi[k], uv[k]);
-    }
+    const auto [lo, hi] = scanExtent(view.axis);
     vtkCamera* camera = view.renderer->GetActiveCamera();
     const double cu = 0.5 * (lo[0] + hi[0]), cv = 0.5 * (lo[1] + hi[1]);
     camera->SetFocalPoint(cu, cv, 0.0);

@@ -95,6 +95,8 @@ private:
     };
     /// The view's screen axes in the world: right and up.
     static std::pair<glm::dvec3, glm::dvec3> screenAxes(SliceAxis axis);
+    /// The scan's box on a view's screen axes: its lowest and highest (right, up).
+    std::pair<glm::dvec2, glm::dvec2> scanExtent(SliceAxis axis) const;
     void sample(View& view);
     void drawContours(View& view, const std::vector<FieldPiece>& pieces);
     void drawCrosshair(View& view);
