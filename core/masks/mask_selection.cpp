@@ -50,7 +50,7 @@ Selected prismSelection(const FieldImage& field, const ViewPrism& prism)
     field.grid().tree().evalLeafBoundingBox(leafBox);
     openvdb::BBoxd box = field.grid().transform().indexToWorld(leafBox);
     box.expand(margin);
-    const PrismDistance distance(prism, 2.0 * margin, box);
+    const PrismDistance distance(prism, 2.0 * margin, box, kPolygonToleranceVoxels * h);
     Selected selected;
     for (const openvdb::Coord& origin : maskDomain(field)) {
         const openvdb::Vec3d centre = field.grid().transform().indexToWorld(origin.asVec3d() + openvdb::Vec3d(3.5));

@@ -52,14 +52,20 @@ void validatePrism(const ViewPrism& prism);
 
 class EdgeBins;
 
+/// How far (in voxels) a gesture's polygon may move when a cut or a mask simplifies it
+/// (PrismDistance's tolerance): a tenth of a voxel, which the rasterized band cannot show.
+inline constexpr double kPolygonToleranceVoxels = 0.1;
+
 /// A prism's distance for many points within a box (every voxel of a cut's band): exact where it
 /// is under `capWorld`, beyond that a value of the right sign at least `capWorld` from zero. The
-/// polygon's edges are binned in cells about the cap wide (at the box's farthest depth, for a
-/// perspective prism), so a point reads the few edges near it and those crossing its row instead
-/// of every edge. Cheap to copy; read from any thread.
+/// polygon's edges are binned in cells a quarter of the cap wide (at the box's farthest depth, for
+/// a perspective prism), so a point reads the edges of the few cells nearest it instead of every
+/// edge. With `toleranceWorld` > 0 the polygon is first simplified (Douglas-Peucker) by at most
+/// that much anywhere in the box: a lasso of 100,000 points drawn finer than a voxel costs about
+/// what its shape does. Cheap to copy; read from any thread.
 class PrismDistance {
 public:
-    PrismDistance(const ViewPrism& prism, double capWorld, const openvdb::BBoxd& box);
+    PrismDistance(const ViewPrism& prism, double capWorld, const openvdb::BBoxd& box, double toleranceWorld = 0.0);
     double operator()(const openvdb::Vec3d& world) const;
 
 private:

@@ -74,27 +74,31 @@ void BM_SmoothStep(benchmark::State& state)
 }
 BENCHMARK(BM_SmoothStep)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
-/// An ellipse round the model's right third, seen from the front (+z), parallel rays.
-ViewPrism lasso()
+/// An ellipse round the model's right third, seen from the front (+z), parallel rays, drawn
+/// with `points` points.
+ViewPrism lasso(int points = 64)
 {
     const openvdb::BBoxd box = worldBox(model());
     const openvdb::Vec3d c = box.getCenter(), e = box.extents();
     ViewPrism prism;
     prism.viewFromWorld.setTranslation(openvdb::Vec3d(0.0, 0.0, -(box.max().z() + 10.0)));
-    for (int i = 0; i < 64; ++i) {
-        const double a = 2.0 * M_PI * i / 64;
+    for (int i = 0; i < points; ++i) {
+        const double a = 2.0 * M_PI * i / points;
         prism.polygon.emplace_back(c.x() + e.x() * (0.35 + 0.2 * std::cos(a)), c.y() + 0.4 * e.y() * std::sin(a));
     }
     return prism;
 }
 
+/// The same lasso drawn with 64 points, the 12,000 of a long careful stroke, and the stroke
+/// scripts' limit of 100,000: the cost should follow the voxels cut, not the points.
 void BM_LassoCut(benchmark::State& state)
 {
-    const ViewPrism prism = lasso();
+    const ViewPrism prism = lasso(int(state.range(0)));
     for (auto _ : state) benchmark::DoNotOptimize(applyPrism(model(), prism, PrismMode::Cut).grid().activeVoxelCount());
     state.counters["voxels"] = double(model().grid().activeVoxelCount());
+    state.counters["points"] = double(prism.polygon.size());
 }
-BENCHMARK(BM_LassoCut)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_LassoCut)->Arg(64)->Arg(12000)->Arg(100000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 
 void BM_LassoCutOpenVdbMeshToLevelSetAndCsgDifference(benchmark::State& state)
 {
