@@ -196,7 +196,7 @@ TEST(SculptUi, TheSlicesViewShowsTheKeptScanWithContoursLinkedToTheModel)
     ASSERT_EQ(import.exitCode, 0) << import.err;
 
     const fs::path r = dir / "r.jsonl";
-    const double axialX = 628, axialY = 644, sagittalX = 1148;  // the views' centres at 1280 x 800
+    const double axialX = 382, axialY = 645, sagittalX = 898;  // the views' centres at 1280 x 800
     UiEvents events;
     events.key("V", {"alt"}).move(640, 200).report(r, "shown").screenshot(dir / "slices.png");
     events.move(axialX + 30, axialY - 20).press().release().report(r, "clicked");

@@ -40,8 +40,9 @@ constexpr double kCrosshair[3] = {0.35, 0.95, 0.35};
 /// The sculpted piece's contour: a yellow that stands out on grey samples (the clay's colour
 /// does not); the other pieces' are their colours at full brightness.
 const openvdb::Vec3f kSculptedContour{1.0f, 0.85f, 0.1f};
-/// Pixels between the views and around them; the status bar's height below.
-constexpr double kGap = 4.0, kStatusBar = 24.0;
+/// Pixels between the views and around them; the status bar's height below; the panels' columns
+/// kept clear on either side (the brush palette and a mode's panel, History and Pieces).
+constexpr double kGap = 4.0, kStatusBar = 24.0, kSideColumns = 250.0;
 
 openvdb::Vec3d vec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
@@ -169,12 +170,14 @@ void SliceViews::setScan(openvdb::FloatGrid::ConstPtr scan)
 
 void SliceViews::layout(int width, int height)
 {
-    const double side = std::floor(std::min(0.2 * width, 0.32 * height));
+    const double free = std::max(width - 2.0 * kSideColumns, 0.45 * width);  // a narrow window overlaps them
+    const double side = std::floor(std::min((free - 4.0 * kGap) / 3.0, 0.32 * height));
+    const double left = 0.5 * (width - 3.0 * side - 2.0 * kGap);
     for (int a = 0; a < 3; ++a) {
         // Left to right: axial, coronal, sagittal, as viewers lay them out.
         const int column = 2 - a;
         PixelRect& r = mViews[std::size_t(a)].rect;
-        r = {width - (3 - column) * (side + kGap), height - kStatusBar - side - kGap, side, side};
+        r = {left + column * (side + kGap), height - kStatusBar - side - kGap, side, side};
         mViews[std::size_t(a)].renderer->SetViewport(r.x / width, 1.0 - (r.y + r.height) / height,
                                                      (r.x + r.width) / width, 1.0 - r.y / height);
     }

@@ -4,7 +4,7 @@
 ///        as every scan viewer shows them, with each piece's contour on them (its section from
 ///        its field) and the cursor's crosshair; a small cross marks the cursor in the 3D view.
 ///
-/// The three views sit in a row at the window's bottom right. In a view: a left press or drag
+/// The three views sit in a row at the window's bottom, between the panels' columns. In a view: a left press or drag
 /// puts the cursor there (the other two views follow), a right drag sets the window (across) and
 /// the level (up and down), the wheel steps through the slices. A click on the model moves the
 /// cursor to it (SliceViews::setCursor). Axial and coronal views show the patient's right on the
