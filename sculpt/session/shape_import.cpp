@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <vector>
 
@@ -188,11 +189,32 @@ ScanVolume aroundLabel(const ScanVolume& scan, const openvdb::CoordBBox& box, co
     return scan.cropped(around);
 }
 
-/// Debris removed and, when asked, all but the largest solid piece: the end of every import.
+/// A field this small may be nothing but specks (a label of a few samples): it is copied before
+/// they are removed, so that the shape itself is not.
+constexpr openvdb::Index64 kSpeckSizedField = 4096;
+
+/// Whether any voxel of the band lies inside.
+bool holdsInside(const FieldImage& field)
+{
+    for (auto it = field.grid().cbeginValueOn(); it; ++it)
+        if (*it < 0.0f) return true;
+    return false;
+}
+
+/// Debris removed and, when asked, all but the largest solid piece: the end of every import. A
+/// shape that is all specks at this voxel size (a label of a few samples) is kept, and said so.
 void cleanUp(FieldImage& field, const ImportOptions& options, ImportReport& report, const Progress& progress)
 {
     if (options.largestComponent) report.pieces = keepLargestComponent(field, progress);
-    if (const std::size_t flipped = removeSpecks(field)) {
+    std::optional<FieldImage> whole;
+    if (field.grid().activeVoxelCount() <= kSpeckSizedField) whole = field.deepCopy();
+    const std::size_t flipped = removeSpecks(field);
+    if (whole && !holdsInside(field)) {
+        field = std::move(*whole);
+        report.warnings.push_back("the shape is no bigger than a speck at voxel size " +
+                                  formatNumber(field.voxelSize()) + " (at most " + std::to_string(kMaxSpeckVoxels) +
+                                  " voxels): kept; a finer voxel size draws it rounder");
+    } else if (flipped) {
         report.warnings.push_back("removed " + std::to_string(flipped) + " voxels of debris (shells of at most " +
                                   std::to_string(kMaxSpeckVoxels) + " voxels, too small to keep at this voxel size)");
     }

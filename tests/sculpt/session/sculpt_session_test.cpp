@@ -850,6 +850,32 @@ void writeByteScan(const std::filesystem::path& path, int n, const std::function
 // A label map of three structures: a ball (1) touching a box (2) that holds a smaller ball (3)
 // in a cavity. Each label imports as its own anti-aliased surface with its analytic volume and
 // topology; a label the map lacks, or a label of a scan of intensities, is refused naming the file.
+// A label of 2 x 2 x 2 samples is a speck at the native voxel size: the debris removal must not
+// empty its piece (it did, for every piece of a 2,000-label map).
+TEST(ShapeImport, ALabelNoBiggerThanASpeckIsKeptAndSaysSo)
+{
+    const test::TempDir dir;
+    writeByteScan(dir / "labels.mha", 24, [](int i, int j, int k) {
+        if (i >= 4 && i < 6 && j >= 4 && j < 6 && k >= 4 && k < 6) return 1;
+        return std::hypot(i - 15.2, j - 14.9, k - 15.1) < 6.0 ? 2 : 0;
+    });
+    ImportReport report;
+    const std::vector<Piece> pieces = importLabelPieces(dir / "labels.mha", {}, report);
+    ASSERT_EQ(pieces.size(), 2u);
+    const double h = pieces[0].field.voxelSize();
+    const FieldMeasures speck = measureField(pieces[0].field);
+    EXPECT_EQ(speck.components, 1);
+    EXPECT_GT(speck.volume, 2.0 * h * h * h) << "about the 8 samples' volume, not nothing";
+    EXPECT_LT(speck.volume, 16.0 * h * h * h);
+    const std::string all = [&] {
+        std::string text;
+        for (const std::string& w : report.warnings) text += w + "\n";
+        return text;
+    }();
+    EXPECT_NE(all.find("piece 'label 1': the shape is no bigger than a speck"), std::string::npos) << all;
+    EXPECT_EQ(all.find("piece 'label 2': the shape is no bigger"), std::string::npos) << all;
+}
+
 TEST(ShapeImport, ALabelMapImportsEachLabelAsItsOwnSurface)
 {
     const test::TempDir dir;
