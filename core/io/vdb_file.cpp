@@ -9,6 +9,7 @@
 #include "core/field/placement_check.h"
 #include "core/io/bounded_reader.h"
 #include "core/io/memory_stream.h"
+#include "core/io/metadata_seal.h"
 #include "core/io/vdb_layout.h"
 #include "core/io/vdb_tree_check.h"
 
@@ -215,6 +216,7 @@ openvdb::GridBase::Ptr maskGridOf(const FieldImage& field, const std::string& su
     grid->setName(surfaceName + ".mask");
     grid->insertMeta(kMetaMaskOf, openvdb::StringMetadata(surfaceName));
     grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
+    sealMetadata(*grid);
     return grid;
 }
 
@@ -229,11 +231,12 @@ void attachMask(FieldImage& field, const std::string& surfaceName, openvdb::Grid
     const auto found = std::find_if(grids.begin(), grids.end(), isMask);
     if (found == grids.end()) return;
     const openvdb::FloatGrid::Ptr mask = openvdb::gridPtrCast<openvdb::FloatGrid>(*found);
+    checkMetadataSeal(*mask, "the mask of '" + surfaceName + "'");
     if (auto sum = mask->getMetadata<openvdb::StringMetadata>(kMetaChecksum)) {
         if (sum->value() != formatChecksum(gridChecksum(*mask)))
             throw InputError("corrupt (the mask of '" + surfaceName + "' does not match its checksum)");
     }
-    for (const char* ours : {kMetaMaskOf, kMetaChecksum}) mask->removeMeta(ours);
+    for (const char* ours : {kMetaMaskOf, kMetaChecksum, kMetadataSealKey}) mask->removeMeta(ours);
     // Another program's grid may hold anything: a mask is a share in [0, 1], and not a number is none.
     for (auto it = mask->beginValueAll(); it; ++it) {
         if (!std::isfinite(*it)) it.setValue(0.0f);
@@ -295,6 +298,8 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     std::vector<std::string> warnings;
     auto [grid, companions] = decodeGrids(path, layout, chosen, warnings);
     openvdb::MetaMap& meta = companions.metadata;
+    checkMetadataSeal(meta, "its metadata");
+    checkMetadataSeal(*grid, "grid '" + chosen.name + "'");
     std::string units = FieldImage::kDefaultUnits;
     if (auto u = meta.getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
     checkPieceChecksum(*grid);
@@ -303,7 +308,7 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     checkDocumentMetadata(meta, field, path, layout.editedGrid.empty() || layout.editedGrid == chosen.name);
     attachMask(field, chosen.name, companions.grids);
     for (const char* ours :
-         {kMetaVersion, kMetaUnits, kVdbFrameKey, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey}) {
+         {kMetaVersion, kMetaUnits, kVdbFrameKey, kMetaVoxelSize, kMetaChecksum, kVdbEditedGridKey, kMetadataSealKey}) {
         meta.removeMeta(ours);
     }
     return {std::move(field), std::move(companions), std::move(warnings)};
@@ -352,6 +357,7 @@ openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece, bool ownChecksum)
     if (piece.label > 0) grid->insertMeta(kMetaPieceLabel, openvdb::Int32Metadata(piece.label));
     grid->removeMeta(kMetaChecksum);  // one copied from the file the piece came from would be stale
     if (ownChecksum) grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(*grid))));
+    sealMetadata(*grid);
     return grid;
 }
 
@@ -405,6 +411,7 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
         requireFiniteValues(*levelSet, path);
         FieldImage field = [&] {
             try {
+                checkMetadataSeal(*levelSet, "piece '" + levelSet->getName() + "'");
                 checkPieceChecksum(*levelSet);
                 FieldImage piece(levelSet, units);
                 attachMask(piece, levelSet->getName(), document.companions.grids);
@@ -434,14 +441,13 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
     meta.insertMeta(kVdbFrameKey, openvdb::StringMetadata(FieldImage::kFrame));
     meta.insertMeta(kMetaVoxelSize, openvdb::DoubleMetadata(field.voxelSize()));
     meta.insertMeta(kMetaChecksum, openvdb::StringMetadata(formatChecksum(gridChecksum(field.grid()))));
-    openvdb::GridCPtrVec grids{field.gridPtr()};
-    if (field.grid().getName().empty()) {
-        // A shallow copy (the tree is shared) carries the name documents promise.
-        auto named = openvdb::ConstPtrCast<openvdb::FloatGrid>(field.gridPtr())->copy();
-        named->setName("surface");
-        grids.front() = named;
-    }
+    // A shallow copy (the tree is shared) carries the name documents promise and the grid's seal.
+    auto edited = openvdb::ConstPtrCast<openvdb::FloatGrid>(field.gridPtr())->copy();
+    if (edited->getName().empty()) edited->setName("surface");
+    sealMetadata(*edited);
+    openvdb::GridCPtrVec grids{edited};
     meta.insertMeta(kVdbEditedGridKey, openvdb::StringMetadata(grids.front()->getName()));
+    sealMetadata(meta);
     if (auto mask = maskGridOf(field, grids.front()->getName())) grids.push_back(mask);
     grids.insert(grids.end(), companions.grids.begin(), companions.grids.end());
     try {

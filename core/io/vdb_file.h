@@ -8,6 +8,7 @@
 ///   sculpt.units          (string)— length unit of world coordinates, e.g. "mm"
 ///   sculpt.voxel_size     (double)— redundant with the transform; a mismatch means damage
 ///   sculpt.checksum       (string)— gridChecksum() in hex; a mismatch means damage
+///   sculpt.sealed         (string)— the seal over these fields (metadata_seal.h), on each grid too
 /// A document of several pieces (piece.h) holds one level set per piece, named after it, the first
 /// recorded as the edited grid so that every reader of one surface opens it; each piece grid
 /// carries in its own metadata

@@ -3,6 +3,7 @@
 #include "core/base/errors.h"
 #include "core/base/memory_budget.h"
 #include "core/field/grid_checksum.h"
+#include "core/io/metadata_seal.h"
 #include "core/io/vdb_file.h"
 #include "core/scan/header_text.h"
 #include "core/scan/vtk_image_scan.h"
@@ -91,6 +92,7 @@ openvdb::FloatGrid::Ptr keptScanGrid(const ScanVolume& scan, std::optional<doubl
     grid->insertMeta(kMetaType, openvdb::StringMetadata(impl.image->GetScalarTypeAsString()));
     if (iso) grid->insertMeta(kMetaIso, openvdb::DoubleMetadata(*iso));
     grid->insertMeta(kMetaChecksum, openvdb::StringMetadata(checksumOf(*grid)));
+    sealMetadata(*grid);
     return grid;
 }
 
@@ -108,6 +110,7 @@ openvdb::FloatGrid::ConstPtr findKeptScan(const openvdb::GridPtrVec& grids)
 
 KeptScanRecord keptScanRecord(const openvdb::FloatGrid& grid)
 {
+    checkMetadataSeal(grid, "the kept scan");
     KeptScanRecord record;
     const openvdb::Vec3i dims = requiredMeta<openvdb::Vec3IMetadata>(grid, kMetaDims);
     if (dims.x() < 1 || dims.y() < 1 || dims.z() < 1 || ScanLattice{openvdb::Coord(dims)}.samples() > kMaxScanSamples) {

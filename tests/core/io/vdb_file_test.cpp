@@ -14,6 +14,7 @@
 #include <openvdb/io/File.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 
@@ -414,8 +415,9 @@ std::string refusal(const fs::path& path)
     return {};
 }
 
-// What a document says of itself is checked on read whatever wrote it: the checksum covers the
-// voxels, not a look another program may have written.
+// What a document says of itself is checked on read whatever wrote it: a field changed after we
+// sealed it is named as changed; in a file without the seal (another program's) each look is
+// checked for what it may be.
 TEST(VdbPieces, RefuseALookThatCannotBeAndValuesThatAreNotNumbers)
 {
     TempDir dir;
@@ -431,6 +433,14 @@ TEST(VdbPieces, RefuseALookThatCannotBeAndValuesThatAreNotNumbers)
     for (const auto& [name, placement] : placements) {
         VdbDocument document = readVdbDocument(dir / "doc.vdb");
         document.companions.grids[0]->insertMeta("sculpt.piece_placement", openvdb::Mat4DMetadata(placement));
+        const fs::path sealed = dir / (std::string("sealed-") + name + ".vdb");
+        writeFieldImage(document.field, sealed, document.companions);
+        EXPECT_NE(refusal(sealed).find(sealed.string() +
+                                       ": piece 'hat': its field 'sculpt.piece_placement' was changed after it was "
+                                       "written"),
+                  std::string::npos)
+            << name << ": " << refusal(sealed);
+        document.companions.grids[0]->removeMeta("sculpt.sealed");
         const fs::path bad = dir / (std::string("placement-") + name + ".vdb");
         writeFieldImage(document.field, bad, document.companions);
         const std::string why = refusal(bad);
@@ -479,6 +489,62 @@ TEST(VdbPieces, RefuseAPieceWhoseVoxelsChangedAndNamesTakenTwice)
     twice[2].name = "head";
     EXPECT_THROW(writeVdbPieces(twice, dir / "twice.vdb"), InputError);
     EXPECT_FALSE(fs::exists(dir / "twice.vdb"));
+}
+
+// The seal over what a document says of itself: a field of the file or of a piece changed, added
+// or removed after we wrote it is refused and named; without seals (another program's file, or
+// ours from before them) the document reads.
+TEST(VdbPieces, TheSealNamesAFieldChangedAddedOrRemovedAfterWriting)
+{
+    TempDir dir;
+    writeVdbPieces(threePieces(), dir / "doc.vdb");
+    const auto tampered = [&](const std::string& name, const std::function<void(VdbDocument&)>& change) {
+        VdbDocument document = readVdbDocument(dir / "doc.vdb");
+        change(document);
+        const fs::path path = dir / (name + ".vdb");
+        writeFieldImage(document.field, path, document.companions);
+        return refusal(path);
+    };
+    EXPECT_NE(tampered("colour",
+                       [](VdbDocument& d) {
+                           d.companions.grids[0]->insertMeta("sculpt.piece_colour",
+                                                             openvdb::Vec3SMetadata(openvdb::Vec3s(0.1f, 0.2f, 0.3f)));
+                       })
+                  .find("piece 'hat': its field 'sculpt.piece_colour' was changed"),
+              std::string::npos);
+    EXPECT_NE(tampered("added",
+                       [](VdbDocument& d) {
+                           d.companions.grids[0]->insertMeta("sculpt.piece_label", openvdb::Int32Metadata(7));
+                       })
+                  .find("piece 'hat': its field 'sculpt.piece_label' was added"),
+              std::string::npos);
+    EXPECT_NE(tampered("removed", [](VdbDocument& d) { d.companions.grids[0]->removeMeta("sculpt.piece_visible"); })
+                  .find("piece 'hat': its field 'sculpt.piece_visible' was removed"),
+              std::string::npos);
+    EXPECT_NE(tampered("garbled",
+                       [](VdbDocument& d) {
+                           d.companions.grids[0]->insertMeta("sculpt.sealed", openvdb::StringMetadata("garbage"));
+                       })
+                  .find("piece 'hat': its metadata seal is damaged"),
+              std::string::npos);
+    {  // The file's own fields, changed by another writer that kept everything else.
+        openvdb::io::File file((dir / "doc.vdb").string());
+        file.open();
+        openvdb::GridPtrVecPtr grids = file.getGrids();
+        openvdb::MetaMap::Ptr meta = file.getMetadata();
+        file.close();
+        meta->insertMeta("sculpt.units", openvdb::StringMetadata("in"));
+        openvdb::io::File((dir / "inches.vdb").string()).write(*grids, *meta);
+        EXPECT_NE(refusal(dir / "inches.vdb").find("its metadata: its field 'sculpt.units' was changed"),
+                  std::string::npos)
+            << refusal(dir / "inches.vdb");
+    }
+    // Without seals: read as another program's file, each field checked for what it may be.
+    EXPECT_EQ(tampered("unsealed",
+                       [](VdbDocument& d) {
+                           for (const auto& grid : d.companions.grids) grid->removeMeta("sculpt.sealed");
+                       }),
+              "");
 }
 
 }  // namespace sculpt
