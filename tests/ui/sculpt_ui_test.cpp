@@ -157,6 +157,8 @@ TEST(SculptUi, TheClipPlaneCapsTheCutWithTheExactSectionAndStrokesLandOnTheCap)
     events.key("C", {"alt"}).key("3").move(kCentreX, kCentreY).report(r, "capped");
     events.drag(kCentreX - 40, kCentreY, kCentreX + 40, kCentreY, 10, {"ctrl"}).move(kCentreX, kCentreY);
     events.report(r, "carved").screenshot(dir / "cap.png");
+    // From the front, a stroke on the half shown, far from the plane: its cap is not made again.
+    events.key("1").drag(kCentreX - 200, kCentreY, kCentreX - 170, kCentreY + 20).report(r, "away");
     for (int i = 0; i < 4; ++i) events.key("C", {"alt"});
     events.report(r, "off");
     const CommandResult run = play(dir, events);
@@ -172,6 +174,9 @@ TEST(SculptUi, TheClipPlaneCapsTheCutWithTheExactSectionAndStrokesLandOnTheCap)
     EXPECT_LT(reports["carved"]["volume"].get<double>(), capped["volume"].get<double>() - 100.0);
     EXPECT_LT(reports["carved"]["cap_area"].get<double>(), capped["cap_area"].get<double>() - 50.0);
     EXPECT_EQ(reports["carved"]["undo"], 1);
+    EXPECT_GT(reports["away"]["volume"].get<double>(), reports["carved"]["volume"].get<double>() + 10.0);
+    EXPECT_EQ(reports["away"]["cap_remakes"], reports["carved"]["cap_remakes"]) << "a stroke away from the plane";
+    EXPECT_GT(reports["carved"]["cap_remakes"].get<int>(), reports["capped"]["cap_remakes"].get<int>());
     EXPECT_EQ(reports["off"]["clip"], "Off");
     EXPECT_EQ(reports["off"]["cap_area"], 0.0);
 }

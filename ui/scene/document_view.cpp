@@ -221,7 +221,7 @@ void DocumentView::sync(const Document& document, const IncrementalMesher* modeM
     for (const DocumentPiece& piece : document.pieces()) {
         const bool sculpted = piece.session.get() == &document.session();
         cut.push_back({&piece.look, sculpted ? clay : piece.look.colour, sculpted, &piece.session->field(),
-                       piece.session->mesher()->version()});
+                       piece.session->mesher(), piece.session->mesher()->version()});
     }
     const bool hidden = mScales.shown() || hideDocument;
     mCaps.sync(cut, hidden ? std::nullopt : mClip.plane(), mClip.revision());
@@ -250,6 +250,7 @@ void DocumentView::report(nlohmann::json& out) const
     out["clip_offset"] = mClip.offset();
     out["cap_area"] = mCaps.area();
     out["cap_triangles"] = mCaps.triangleCount();
+    out["cap_remakes"] = mCaps.remakes();
     nlohmann::json slices = {{"shown", mSlices.shown() && mSlices.hasScan()},
                              {"cursor", {mSlices.cursor().x, mSlices.cursor().y, mSlices.cursor().z}},
                              {"window", mSlices.window()},

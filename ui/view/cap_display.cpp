@@ -1,5 +1,6 @@
 #include "ui/view/cap_display.h"
 
+#include "core/mesh/incremental_mesher.h"
 #include "ui/view/block_polydata.h"
 
 #include <vtkActor.h>
@@ -47,10 +48,15 @@ void CapDisplay::sync(const std::vector<FieldPiece>& pieces, const std::optional
         Cap& cap = mCaps[i];
         const FieldPiece& piece = pieces[i];
         const bool shown = plane && piece.look->visible;
-        const bool same = cap.shown == shown && cap.fieldId == piece.field->id() && cap.version == piece.version &&
+        const bool same = cap.shown == shown && cap.fieldId == piece.field->id() &&
                           cap.planeRevision == planeRevision && cap.placement == piece.look->placement &&
                           cap.colour == piece.colour;
-        if (same) continue;
+        // An edit away from the plane (most strokes) leaves the cap as it is: checked on the blocks
+        // it re-meshed, so a stroke frame does not pay for the whole cap.
+        if (same && (cap.version == piece.version || !shown || !changedNear(piece, cap.version, *plane))) {
+            cap.version = piece.version;
+            continue;
+        }
         cap.shown = shown;
         cap.fieldId = piece.field->id();
         cap.version = piece.version;
@@ -63,8 +69,32 @@ void CapDisplay::sync(const std::vector<FieldPiece>& pieces, const std::optional
     }
 }
 
+bool CapDisplay::changedNear(const FieldPiece& piece, std::uint64_t version, const SectionPlane& plane)
+{
+    const IncrementalMesher::Changes changes = piece.mesher->changesSince(version);
+    const openvdb::math::Transform& xform = piece.field->grid().transform();
+    const int block = piece.mesher->blockVoxels();
+    constexpr int kMargin = 2;  // voxels: a cap sample interpolates its neighbours
+    for (const auto* origins : {&changes.updated, &changes.removed})
+        for (const openvdb::Coord& origin : *origins) {
+            bool below = false, above = false;
+            for (int c = 0; c < 8; ++c) {
+                const openvdb::Coord corner =
+                    origin.offsetBy((c & 1) ? block + kMargin : -kMargin, (c & 2) ? block + kMargin : -kMargin,
+                                    (c & 4) ? block + kMargin : -kMargin);
+                const openvdb::Vec3d world = piece.look->placement.transform(xform.indexToWorld(corner));
+                const double side = (world - plane.origin).dot(plane.normal);
+                below = below || side <= 0.0;
+                above = above || side >= 0.0;
+            }
+            if (below && above) return true;
+        }
+    return false;
+}
+
 void CapDisplay::remake(Cap& cap, const FieldPiece& piece, const SectionPlane& plane)
 {
+    ++mRemakes;
     const CrossSection section = placedCrossSection(*piece.field, piece.look->placement, plane);
     cap.triangles = section.region.triangles.size();
     cap.area = section.area;

@@ -18,6 +18,10 @@
 class vtkActor;
 class vtkRenderer;
 
+namespace sculpt {
+class IncrementalMesher;
+}
+
 namespace sculpt::ui {
 
 /// A piece as cut by a plane (a cap, a slice's contour): its look, the colour it is drawn in (the sculpted piece's is the clay's), and
@@ -27,6 +31,7 @@ struct FieldPiece {
     openvdb::Vec3f colour;
     bool sculpted;  ///< the piece being sculpted
     const FieldImage* field;
+    const IncrementalMesher* mesher;  ///< its live mesh: what changed since a version
     std::uint64_t version;
 };
 
@@ -41,13 +46,20 @@ public:
     /// The caps' area in the world, and their triangles.
     double area() const;
     std::size_t triangleCount() const;
+    /// How many times a cap was made (a stroke away from the plane makes none).
+    std::size_t remakes() const { return mRemakes; }
 
 private:
     struct Cap;
     void remake(Cap& cap, const FieldPiece& piece, const SectionPlane& plane);
 
+    /// Whether the blocks changed in `piece` since `version` reach the plane (with a margin for
+    /// the interpolation of the voxels they hold): only then can its cap change.
+    static bool changedNear(const FieldPiece& piece, std::uint64_t version, const SectionPlane& plane);
+
     vtkRenderer* mRenderer;
     std::vector<Cap> mCaps;
+    std::size_t mRemakes = 0;
 };
 
 }  // namespace sculpt::ui
