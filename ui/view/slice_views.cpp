@@ -36,7 +36,7 @@ namespace {
 /// The most samples a slice is drawn with along a side: finer scans are drawn coarser.
 constexpr int kMostSamples = 1024;
 /// The crosshair's colour, and the 3D marker's.
-constexpr double kCrosshair[3] = {0.35, 0.95, 0.35};
+const openvdb::Vec3f kCrosshair{0.35f, 0.95f, 0.35f};
 /// The sculpted piece's contour: a yellow that stands out on grey samples (the clay's colour
 /// does not); the other pieces' are their colours at full brightness.
 const openvdb::Vec3f kSculptedContour{1.0f, 0.85f, 0.1f};
@@ -60,12 +60,16 @@ vtkSmartPointer<vtkActor> lineActor(double width)
     return actor;
 }
 
-/// Lines from pairs of 2D points (a view's own coordinates), each pair in `colours`' colour.
+/// Where a view's lines lie: just above its slice (z 0).
+constexpr double kAboveSlice = 0.1;
+
+/// Lines from pairs of points (a view's own coordinates, or the world's for the 3D marker), each
+/// in its colour.
 class Lines {
 public:
-    void add(double u0, double v0, double u1, double v1, const openvdb::Vec3f& colour)
+    void add(const glm::dvec3& p, const glm::dvec3& q, const openvdb::Vec3f& colour)
     {
-        const vtkIdType a = mPoints->InsertNextPoint(u0, v0, 0.1), b = mPoints->InsertNextPoint(u1, v1, 0.1);
+        const vtkIdType a = mPoints->InsertNextPoint(p.x, p.y, p.z), b = mPoints->InsertNextPoint(q.x, q.y, q.z);
         const vtkIdType ids[2] = {a, b};
         mLines->InsertNextCell(2, ids);
         const unsigned char rgb[3] = {(unsigned char)(255.0f * std::clamp(colour[0], 0.0f, 1.0f)),
@@ -321,7 +325,8 @@ void SliceViews::drawContours(View& view, const std::vector<FieldPiece>& pieces)
         const openvdb::Vec3f colour = piece.sculpted ? kSculptedContour : piece.colour / brightest;
         for (const auto& [p, q] : section.outline) {
             const glm::dvec3 a(p.x(), p.y(), p.z()), b(q.x(), q.y(), q.z());
-            lines.add(glm::dot(a, right), glm::dot(a, up), glm::dot(b, right), glm::dot(b, up), colour);
+            lines.add({glm::dot(a, right), glm::dot(a, up), kAboveSlice},
+                      {glm::dot(b, right), glm::dot(b, up), kAboveSlice}, colour);
         }
         view.segments += section.outline.size();
     }
@@ -333,36 +338,22 @@ void SliceViews::drawCrosshair(View& view)
     const auto [right, up] = screenAxes(view.axis);
     const double u = glm::dot(mCursor, right), v = glm::dot(mCursor, up);
     const double reach = (mScanBox.max() - mScanBox.min()).length();
-    const openvdb::Vec3f colour{float(kCrosshair[0]), float(kCrosshair[1]), float(kCrosshair[2])};
     Lines lines;
-    lines.add(u - reach, v, u + reach, v, colour);
-    lines.add(u, v - reach, u, v + reach, colour);
+    lines.add({u - reach, v, kAboveSlice}, {u + reach, v, kAboveSlice}, kCrosshair);
+    lines.add({u, v - reach, kAboveSlice}, {u, v + reach, kAboveSlice}, kCrosshair);
     lines.drawInto(view.crosshair);
 }
 
 void SliceViews::placeMarker()
 {
     const double arm = 0.03 * (mScanBox.empty() ? 10.0 : (mScanBox.max() - mScanBox.min()).length());
-    const openvdb::Vec3f colour{float(kCrosshair[0]), float(kCrosshair[1]), float(kCrosshair[2])};
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    auto colours = vtkSmartPointer<vtkUnsignedCharArray>::New();
-    colours->SetNumberOfComponents(3);
+    Lines lines;
     for (int a = 0; a < 3; ++a) {
         glm::dvec3 d(0.0);
         d[a] = arm;
-        const vtkIdType ids[2] = {points->InsertNextPoint(mCursor.x - d.x, mCursor.y - d.y, mCursor.z - d.z),
-                                  points->InsertNextPoint(mCursor.x + d.x, mCursor.y + d.y, mCursor.z + d.z)};
-        cells->InsertNextCell(2, ids);
-        const unsigned char rgb[3] = {(unsigned char)(255 * colour[0]), (unsigned char)(255 * colour[1]),
-                                      (unsigned char)(255 * colour[2])};
-        colours->InsertNextTypedTuple(rgb);
+        lines.add(mCursor - d, mCursor + d, kCrosshair);
     }
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points);
-    poly->SetLines(cells);
-    poly->GetCellData()->SetScalars(colours);
-    vtkPolyDataMapper::SafeDownCast(mMarker->GetMapper())->SetInputData(poly);
+    lines.drawInto(mMarker);
 }
 
 void SliceViews::sync(const std::vector<FieldPiece>& pieces)
