@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -228,6 +229,24 @@ TEST(TrackedExport, SculptMorphTrackedWritesEverySegmentAndListsThem)
         EXPECT_TRUE(std::filesystem::exists(segmentPath(dir / "tracked", s, "ply")));
     }
     EXPECT_EQ(frames, 3);
+}
+
+// A morph that fails after it wrote frames (here the tracked list cannot be written: a directory
+// stands where it goes) takes back every file it wrote and the directory it made; what was there
+// before stays.
+TEST(TrackedExport, AMorphThatFailsAfterWritingFramesLeavesNoOutput)
+{
+    test::TempDir dir;
+    writeFieldImage(makeSphere(12.0, 0.5), dir / "ball.vdb");
+    writeFieldImage(makeBox(10.0, 0.5), dir / "box.vdb");
+    std::filesystem::create_directories(dir / "tracked" / "segments.json");
+    const auto run = test::runSculpt("morph ball.vdb box.vdb --frames 3 --mesh ply -o frames --tracked tracked",
+                                     dir.path().string());
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "frames"));
+    EXPECT_EQ(test::TempDir::entriesOf(dir / "tracked"), std::vector<std::string>{"segments.json"});
+    EXPECT_TRUE(std::filesystem::is_directory(dir / "tracked" / "segments.json"));
 }
 
 }  // namespace
