@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
+#include "core/field/grid_tiles.h"
 #include "core/field/voxel_size.h"
 
 #include <algorithm>
@@ -122,10 +123,13 @@ DirtyRegion FieldImage::takeDirtyRegion() { return std::exchange(mDirty, DirtyRe
 
 bool FieldImage::enclosesSomething() const
 {
-    for (auto it = mGrid->cbeginValueAll(); it; ++it) {
-        if (*it < 0.0f) return true;
+    for (auto leaf = mGrid->tree().cbeginLeaf(); leaf; ++leaf) {
+        const float* values = leaf->buffer().data();
+        if (std::any_of(values, values + leaf->SIZE, [](float phi) { return phi < 0.0f; })) return true;
     }
-    return false;
+    bool inside = false;
+    forEachTileOffBackground(mGrid->tree(), [&](const openvdb::CoordBBox&, float value, bool) { inside |= value < 0.0f; });
+    return inside;
 }
 
 }  // namespace sculpt

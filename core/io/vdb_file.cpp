@@ -6,6 +6,7 @@
 #include "core/base/text_format.h"
 #include "core/field/band_repair.h"
 #include "core/field/grid_checksum.h"
+#include "core/field/grid_tiles.h"
 #include "core/field/placement_check.h"
 #include "core/io/bounded_reader.h"
 #include "core/io/memory_stream.h"
@@ -15,10 +16,12 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/io/Stream.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <memory>
 #include <set>
@@ -279,13 +282,19 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
 /// number: a NaN would reach measurements, meshes and other files.
 void requireFiniteValues(const openvdb::FloatGrid& grid, const fs::path& path)
 {
-    for (auto it = grid.cbeginValueAll(); it; ++it) {
-        if (std::isfinite(*it)) continue;
-        const openvdb::Coord at = it.getCoord();
+    const auto refuse = [&](float value, const openvdb::Coord& at) {
         throw InputError(path.string() + ": grid '" + grid.getName() + "' holds a value that is not a finite number (" +
-                         std::to_string(*it) + " at voxel " + std::to_string(at.x()) + " " + std::to_string(at.y()) +
+                         std::to_string(value) + " at voxel " + std::to_string(at.x()) + " " + std::to_string(at.y()) +
                          " " + std::to_string(at.z()) + "): corrupt");
+    };
+    for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+        const float* values = leaf->buffer().data();
+        for (openvdb::Index i = 0; i < leaf->SIZE; ++i)
+            if (!std::isfinite(values[i])) refuse(values[i], leaf->offsetToGlobalCoord(i));
     }
+    forEachTileOffBackground(grid.tree(), [&](const openvdb::CoordBBox& block, float value, bool) {
+        if (!std::isfinite(value)) refuse(value, block.min());
+    });
 }
 
 VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
@@ -361,6 +370,29 @@ openvdb::FloatGrid::Ptr pieceGrid(const Piece& piece, bool ownChecksum)
     return grid;
 }
 
+/// Every piece's values, seal and checksum, checked side by side (a checksum reads all of a
+/// piece's tiles, a millisecond for a small one; a label map's document has thousands); the
+/// first piece refused, in file order, is named.
+void checkPieceGrids(const std::vector<openvdb::FloatGrid::Ptr>& levelSets, const fs::path& path)
+{
+    std::vector<std::exception_ptr> refused(levelSets.size());
+    tbb::parallel_for(std::size_t(0), levelSets.size(), [&](std::size_t i) {
+        try {
+            requireFiniteValues(*levelSets[i], path);
+            try {
+                checkMetadataSeal(*levelSets[i], "piece '" + levelSets[i]->getName() + "'");
+                checkPieceChecksum(*levelSets[i]);
+            } catch (const InputError& e) {
+                throw InputError(path.string() + ": " + e.what());
+            }
+        } catch (...) {
+            refused[i] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& refusal : refused)
+        if (refusal) std::rethrow_exception(refusal);
+}
+
 void checkPieceNames(const std::vector<Piece>& pieces, const fs::path& path)
 {
     if (pieces.empty()) throw InputError(path.string() + ": a document needs at least one piece");
@@ -402,24 +434,19 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
     VdbPieces read{{pieceOf(std::move(document.field), path)},
                    {{}, std::move(document.companions.metadata)},
                    std::move(document.warnings)};
+    std::vector<openvdb::FloatGrid::Ptr> levelSets;
     for (const openvdb::GridBase::Ptr& grid : document.companions.grids) {
-        const openvdb::FloatGrid::Ptr levelSet = asPieceGrid(grid);
-        if (!levelSet) {
-            read.companions.grids.push_back(grid);
-            continue;
+        if (const openvdb::FloatGrid::Ptr levelSet = asPieceGrid(grid)) levelSets.push_back(levelSet);
+        else read.companions.grids.push_back(grid);  // masks are taken out as their pieces are made
+    }
+    checkPieceGrids(levelSets, path);
+    for (const openvdb::FloatGrid::Ptr& levelSet : levelSets) {
+        FieldImage field(levelSet, units);
+        try {
+            attachMask(field, levelSet->getName(), read.companions.grids);
+        } catch (const InputError& e) {
+            throw InputError(path.string() + ": " + e.what());
         }
-        requireFiniteValues(*levelSet, path);
-        FieldImage field = [&] {
-            try {
-                checkMetadataSeal(*levelSet, "piece '" + levelSet->getName() + "'");
-                checkPieceChecksum(*levelSet);
-                FieldImage piece(levelSet, units);
-                attachMask(piece, levelSet->getName(), document.companions.grids);
-                return piece;
-            } catch (const InputError& e) {
-                throw InputError(path.string() + ": " + e.what());
-            }
-        }();
         read.pieces.push_back(pieceOf(std::move(field), path));
     }
     return read;
@@ -463,9 +490,13 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
 void writeVdbPieces(const std::vector<Piece>& pieces, const fs::path& path, const VdbCompanions& companions)
 {
     checkPieceNames(pieces, path);
+    // Each piece's checksum reads all its tiles (a millisecond for a small one): thousands of
+    // pieces (a label map's) are sealed side by side.
+    std::vector<openvdb::FloatGrid::Ptr> sealed(pieces.size());
+    tbb::parallel_for(std::size_t(1), pieces.size(), [&](std::size_t i) { sealed[i] = pieceGrid(pieces[i], true); });
     VdbCompanions others{{}, companions.metadata};
     for (std::size_t i = 1; i < pieces.size(); ++i) {
-        others.grids.push_back(pieceGrid(pieces[i], true));
+        others.grids.push_back(sealed[i]);
         if (auto mask = maskGridOf(pieces[i].field, pieces[i].name)) others.grids.push_back(mask);
     }
     others.grids.insert(others.grids.end(), companions.grids.begin(), companions.grids.end());

@@ -1,6 +1,7 @@
 #include "core/motion/volume_estimate.h"
 
 #include "core/field/central_difference.h"
+#include "core/field/grid_tiles.h"
 
 #include <openvdb/tree/LeafManager.h>
 #include <tbb/parallel_reduce.h>
@@ -38,9 +39,9 @@ VolumeArea estimateVolumeArea(const openvdb::FloatGrid& grid)
         },
         [](auto a, auto b) { return std::pair<double, double>(a.first + b.first, a.second + b.second); });
     double tileVoxels = 0.0;
-    for (auto it = grid.tree().cbeginValueAll(); it; ++it) {
-        if (!it.isVoxelValue() && *it < 0.0f) tileVoxels += double(it.getBoundingBox().volume());
-    }
+    forEachTileOffBackground(grid.tree(), [&](const openvdb::CoordBBox& block, float value, bool) {
+        if (value < 0.0f) tileVoxels += double(block.volume());
+    });
     return {(voxels.first + tileVoxels) * h * h * h, voxels.second * h * h};
 }
 

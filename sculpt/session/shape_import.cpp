@@ -12,6 +12,8 @@
 #include "core/scan/scan_to_level_set.h"
 #include "sculpt/session/label_names.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -248,6 +250,29 @@ Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std:
     return piece;
 }
 
+/// A label this small (voxels of its box at the import's voxel size) is imported beside others:
+/// its work is a few milliseconds, mostly OpenVDB's fixed cost per tree, which one thread cannot
+/// hide, and a batch of them costs little memory at once.
+constexpr double kSmallLabelVoxels = 64.0 * 64.0 * 64.0;
+constexpr std::size_t kSmallLabelBatch = 64;
+
+/// Where the batch of labels from `first` ends: one large label alone (it is parallel within),
+/// else up to kSmallLabelBatch small ones in a row.
+std::size_t labelBatchEnd(const ScanVolume& scan, const std::vector<std::pair<int, ScanVolume::LabelExtent>>& labels,
+                          std::size_t first, double voxelSize)
+{
+    const auto small = [&](std::size_t i) {
+        const openvdb::Coord dims = labels[i].second.box.dim();
+        double voxels = 1.0;
+        for (int axis = 0; axis < 3; ++axis) voxels *= std::ceil(double(dims[axis]) * scan.spacing(axis) / voxelSize);
+        return voxels <= kSmallLabelVoxels;
+    };
+    std::size_t end = first + 1;
+    if (!small(first)) return end;
+    while (end < labels.size() && end - first < kSmallLabelBatch && small(end)) ++end;
+    return end;
+}
+
 /// Runs `convert` and returns what it returns, making sure any refusal names the file: a message from deep in the engine
 /// ("the mesh at voxel size ... needs ...") does not know it.
 template <typename Convert>
@@ -299,7 +324,6 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
     }
     if (isMeshPath(input) && !options.raw) throw InputError(input.string() + ": a mesh has no labels");
     return namingInput(input, [&] {
-        std::vector<Piece> pieces;
         const ScanVolume scan = readScanOf(input, options, report);
         labelsOf(scan, input);
         if (const double same = scan.sameNeighbourFraction(); same < kLeastLabelMapAgreement) {
@@ -312,18 +336,32 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
         extents.erase(kBackgroundLabel);
         if (extents.empty()) throw InputError("every sample is background (label 0)");
         const std::map<int, LabelLook> looks = readLabelLooks(input, report.warnings);
-        std::set<std::string> names;
-        for (const auto& [label, extent] : extents) {
-            const double done = double(pieces.size()) / double(extents.size());
-            ImportOptions one = options;
-            one.label = label;
-            const std::size_t warned = report.warnings.size();
-            FieldImage field = labelSurface(scan, extent.box, input, one, report,
-                                            scaledProgress(progress, done, done + 1.0 / double(extents.size())));
-            pieces.push_back(labelPiece(label, looks, names, pieces.size(), std::move(field)));
-            for (std::size_t w = warned; w < report.warnings.size(); ++w)
-                report.warnings[w] = "piece '" + pieces.back().name + "': " + report.warnings[w];
+        const std::vector<std::pair<int, ScanVolume::LabelExtent>> labels(extents.begin(), extents.end());
+        std::vector<std::optional<FieldImage>> fields(labels.size());
+        std::vector<ImportReport> reports(labels.size());
+        const double voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
+        for (std::size_t first = 0; first < labels.size();) {
+            const std::size_t end = labelBatchEnd(scan, labels, first, voxelSize);
+            const double done = double(first) / double(labels.size());
+            const Progress one = end == first + 1 ? scaledProgress(progress, done, double(end) / double(labels.size()))
+                                                  : Progress();
+            tbb::parallel_for(first, end, [&](std::size_t i) {
+                ImportOptions labelOptions = options;
+                labelOptions.label = labels[i].first;
+                fields[i] = labelSurface(scan, labels[i].second.box, input, labelOptions, reports[i], one);
+            });
+            sculpt::report(progress, double(end) / double(labels.size()));
+            first = end;
         }
+        std::vector<Piece> pieces;
+        std::set<std::string> names;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            pieces.push_back(labelPiece(labels[i].first, looks, names, i, std::move(*fields[i])));
+            for (const std::string& warning : reports[i].warnings)
+                report.warnings.push_back("piece '" + pieces.back().name + "': " + warning);
+        }
+        reports.back().warnings = std::move(report.warnings);
+        report = std::move(reports.back());
         if (options.keepScan) report.keptScan = keptScanGrid(scan, std::nullopt);
         return pieces;
     });
