@@ -128,7 +128,8 @@ bool FieldImage::enclosesSomething() const
         if (std::any_of(values, values + leaf->SIZE, [](float phi) { return phi < 0.0f; })) return true;
     }
     bool inside = false;
-    forEachTileOffBackground(mGrid->tree(), [&](const openvdb::CoordBBox&, float value, bool) { inside |= value < 0.0f; });
+    forEachTileOffBackground(mGrid->tree(),
+                             [&](const openvdb::CoordBBox&, float value, bool) { inside |= value < 0.0f; });
     return inside;
 }
 

@@ -131,9 +131,8 @@ void measureSegments(LabelMap& map, const std::vector<int>& segmentOfLabel)
 
 int LabelMap::largestLabel() const
 {
-    int largest = 0;
-    for (const LabelSegment& segment : segments) largest = std::max(largest, segment.label);
-    return largest;
+    // The samples say, not the segments (which a map made by hand may lack).
+    return labels.empty() ? 0 : int(*std::max_element(labels.begin(), labels.end()));
 }
 
 LabelMap labelMapOf(const std::vector<Piece>& pieces, const ScanLattice& lattice, const Progress& progress)

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
+#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/io/mesh_import.h"
 #include "core/io/vdb_file.h"
@@ -250,6 +251,10 @@ Piece labelPiece(int label, const std::map<int, LabelLook>& looks, std::set<std:
     return piece;
 }
 
+/// What a piece costs at least, however small its label: a float tree's upper nodes (32,768 and
+/// 4,096 entries, about 300 KiB; more where the band straddles a node's edge), its leaves and look.
+constexpr double kPieceLeastBytes = 512.0 * 1024.0;
+
 /// A label this small (voxels of its box at the import's voxel size) is imported beside others:
 /// its work is a few milliseconds, mostly OpenVDB's fixed cost per tree, which one thread cannot
 /// hide, and a batch of them costs little memory at once.
@@ -337,14 +342,17 @@ std::vector<Piece> importLabelPieces(const fs::path& input, const ImportOptions&
         if (extents.empty()) throw InputError("every sample is background (label 0)");
         const std::map<int, LabelLook> looks = readLabelLooks(input, report.warnings);
         const std::vector<std::pair<int, ScanVolume::LabelExtent>> labels(extents.begin(), extents.end());
+        requireMemory(double(labels.size()) * kPieceLeastBytes,
+                      std::to_string(labels.size()) +
+                          " labels as pieces (each at least an OpenVDB tree's upper nodes)");
         std::vector<std::optional<FieldImage>> fields(labels.size());
         std::vector<ImportReport> reports(labels.size());
         const double voxelSize = options.voxelSize.value_or(nativeVoxelSize(scan));
         for (std::size_t first = 0; first < labels.size();) {
             const std::size_t end = labelBatchEnd(scan, labels, first, voxelSize);
             const double done = double(first) / double(labels.size());
-            const Progress one = end == first + 1 ? scaledProgress(progress, done, double(end) / double(labels.size()))
-                                                  : Progress();
+            const Progress one =
+                end == first + 1 ? scaledProgress(progress, done, double(end) / double(labels.size())) : Progress();
             tbb::parallel_for(first, end, [&](std::size_t i) {
                 ImportOptions labelOptions = options;
                 labelOptions.label = labels[i].first;

@@ -4,6 +4,7 @@
 // same lattice, and the .seg.nrrd keeps each piece's name and colour for our importer.
 
 #include "core/base/errors.h"
+#include "core/scan/label_map_files.h"
 #include "core/scan/scan_readers.h"
 #include "sculpt/session/label_export.h"
 #include "sculpt/session/label_names.h"
@@ -226,6 +227,31 @@ TEST_F(LabelExport, OverlappingPiecesGiveASampleToTheOneItIsDeepestIn)
     // The ball's samples split about evenly: neither swallowed the other.
     const double ratio = double(map.segments[0].samples) / double(map.segments[1].samples);
     EXPECT_NEAR(ratio, 1.0, 0.15);
+}
+
+// At the scale the README's limits state: 2,000 labels of 2 x 2 x 2 samples, side by side (a
+// speck each at the scan's spacing, kept), import as 2,000 pieces and come back sample for sample.
+// Its time is in pieces_bench (BM_LabelImport), not asserted here.
+TEST(LabelRoundTrip, TwoThousandLabelsOfEightSamplesComeBackSampleForSample)
+{
+    const test::TempDir dir;
+    constexpr int kBlocks[3] = {13, 13, 12}, kLabels = 2000;
+    LabelMap map;
+    map.lattice.dims = openvdb::Coord(2 * kBlocks[0], 2 * kBlocks[1], 2 * kBlocks[2]);
+    for (int k = 0; k < map.lattice.dims.z(); ++k)
+        for (int j = 0; j < map.lattice.dims.y(); ++j)
+            for (int i = 0; i < map.lattice.dims.x(); ++i) {
+                const int block = i / 2 + kBlocks[0] * (j / 2 + kBlocks[1] * (k / 2));
+                map.labels.push_back(std::uint16_t(block < kLabels ? block + 1 : 0));
+            }
+    writeLabelMap(map, dir / "labels.nii");
+
+    ImportReport report;
+    const std::vector<Piece> pieces = importLabelPieces(dir / "labels.nii", {}, report);
+    ASSERT_EQ(pieces.size(), std::size_t(kLabels));
+    EXPECT_EQ(report.warnings.size(), std::size_t(kLabels)) << "each label a speck, kept and said so";
+    for (int l = 0; l < kLabels; ++l) ASSERT_EQ(pieces[l].label, l + 1);
+    EXPECT_EQ(labelMapOf(pieces, map.lattice).labels, map.labels);
 }
 
 }  // namespace
