@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes the parsers with libFuzzer under AddressSanitizer and UndefinedBehaviorSanitizer, each
-# target for SECONDS (default 120: the twelve targets take about 12 minutes on 2 cores), starting
+# target for SECONDS (default 120: the fifteen targets take about 15 minutes on 2 cores), starting
 # from the seed corpus kept in tests/fuzz/corpus/.
 #   usage: scripts/fuzz.sh [SECONDS] [TARGET...]     (targets: see tests/fuzz/CMakeLists.txt)
 # Runs as many targets at once as there are cores and prints each one's executions and findings.

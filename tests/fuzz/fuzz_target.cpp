@@ -9,6 +9,7 @@
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
 #include "core/primitives/scene_file.h"
+#include "core/scan/kept_scan.h"
 #include "sculpt/session/document.h"
 #include "sculpt/session/script_replay.h"
 #include "sculpt/session/shape_import.h"
@@ -43,11 +44,36 @@ void importMesh(const fs::path& path)
 
 void openDocument(const fs::path& path) { readVdbDocument(path); }
 
+/// A document of pieces as `sculpt info` and the window read it: every piece's values, look,
+/// placement, mask and seal, and the scan it keeps (as `import DOC.vdb` reads it again).
+void openPieces(const fs::path& path)
+{
+    const VdbPieces read = readVdbPieces(path);
+    if (findKeptScan(read.companions.grids)) readKeptScan(path);
+}
+
+/// A label map imported a piece per label, as `import --labels` does.
+void importLabels(const fs::path& path)
+{
+    ImportReport report;
+    importLabelPieces(path, {}, report);
+}
+
 /// Replayed on a small ball: stroke limits are what keep absurd numbers from running for hours.
 void replayStrokes(const fs::path& path)
 {
     const StrokeScript script = readStrokeScript(path);
     Document document(makeSphere(10.0, 1.0), {}, {}, PieceMeshes::None);
+    replayScript(document, script, path.string());
+}
+
+/// Replayed on two small pieces, so that cuts, mask selections, drains and piece edits all land.
+void replayCuts(const fs::path& path)
+{
+    const StrokeScript script = readStrokeScript(path);
+    std::vector<Piece> pieces{{{"ball", {0.8f, 0.8f, 0.8f}}, makeSphere(10.0, 1.0)},
+                              {{"box", {0.2f, 0.4f, 0.8f}}, makeBox(4.0, 1.0)}};
+    Document document(std::move(pieces), {}, {}, PieceMeshes::None);
     replayScript(document, script, path.string());
 }
 
@@ -66,7 +92,8 @@ const Target kTargets[] = {
     {"ply", "input.ply", importMesh},       {"stl", "input.stl", importMesh},
     {"obj", "input.obj", importMesh},       {"off", "input.off", importMesh},
     {"vdb", "input.vdb", openDocument},     {"strokes", "input.json", replayStrokes},
-    {"scene", "input.json", readSceneFile},
+    {"scene", "input.json", readSceneFile}, {"pieces", "input.vdb", openPieces},
+    {"labels", "input.nii", importLabels},  {"cuts", "input.json", replayCuts},
 };
 
 const Target& chosenTarget()
