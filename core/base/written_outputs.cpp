@@ -1,5 +1,6 @@
 #include "core/base/written_outputs.h"
 
+#include "core/base/disk_budget.h"
 #include "core/base/errors.h"
 
 namespace sculpt {
@@ -30,6 +31,19 @@ const fs::path& WrittenOutputs::file(const fs::path& path)
     std::error_code ec;
     if (!fs::exists(path, ec)) mFiles.push_back(path);
     return path;
+}
+
+void WrittenOutputs::requireRoomFor(long long others, double scale, const std::string& what) const
+{
+    if (mFiles.empty() || others <= 0) return;
+    std::error_code ec;
+    double bytes = 0.0;
+    for (const fs::path& file : mFiles) {
+        const std::uintmax_t size = fs::file_size(file, ec);
+        if (!ec) bytes += double(size);
+    }
+    const fs::path dir = mFiles.front().has_parent_path() ? mFiles.front().parent_path() : fs::path(".");
+    requireDiskSpace(bytes * scale * double(others), dir, what);
 }
 
 }  // namespace sculpt

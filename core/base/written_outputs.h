@@ -7,6 +7,7 @@
 ///        make are never removed.
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace sculpt {
@@ -25,6 +26,10 @@ public:
     /// `path` is about to be written: removed on failure (unless it was there before).
     /// @return `path`, to write to.
     const std::filesystem::path& file(const std::filesystem::path& path);
+    /// Once the first of a sequence's items is written (every file noted so far): refuses if
+    /// `others` more, each `scale` times as large, would not fit where they go.
+    /// @throws InputError naming the directory and `what` (disk_budget.h).
+    void requireRoomFor(long long others, double scale, const std::string& what) const;
     /// The work succeeded: everything stays.
     void keep() { mKept = true; }
 

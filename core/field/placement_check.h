@@ -5,7 +5,7 @@
 ///        1/1000 to 1000 without mirroring or flattening, and moves by at most 10^7 units; its
 ///        images then stay finite in single precision (meshes, exports).
 
-#include <openvdb/math/Mat4.h>
+#include <openvdb/Types.h>
 
 #include <string>
 

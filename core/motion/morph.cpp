@@ -257,7 +257,10 @@ MorphSummary morph(const FieldImage& source, const FieldImage& target, const Mor
     const auto stepped = [&](const FieldImage& f) {
         if (onStep) onStep(f);
     };
-    if (o.frames < 2) throw InputError("a morph needs at least 2 frames (got " + std::to_string(o.frames) + ")");
+    if (o.frames < 2 || o.frames > kMaxMorphFrames) {
+        throw InputError("a morph writes 2 to " + std::to_string(kMaxMorphFrames) + " frames (got " +
+                         std::to_string(o.frames) + ")");
+    }
     if (!(o.toleranceVoxels > 0.0)) throw InputError("morph tolerance must be positive");
     MorphSummary summary;
     const FieldImage start = morphStart(source, target, o.align, summary.translation);

@@ -19,8 +19,12 @@
 
 namespace sculpt {
 
+/// Frames one morph may write: frame_0000 ... frame_9999, names that sort as numbers; the disk's
+/// room is what bounds it first (a document of the clay ball is about 1 MB).
+constexpr int kMaxMorphFrames = 10000;
+
 struct MorphOptions {
-    int frames = 10;          ///< frames written, >= 2: the first is the source
+    int frames = 10;          ///< frames written, 2 to kMaxMorphFrames: the first is the source
     bool keepVolume = false;  ///< hold V(t) on the line from V_source to V_target
     bool align = false;       ///< translate the source's centroid onto the target's first
     double toleranceVoxels =

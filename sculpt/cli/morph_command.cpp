@@ -91,6 +91,9 @@ void runMorph(const MorphCommandOptions& o)
     outputs.directory(o.directory);
     if (!o.tracked.empty()) outputs.directory(o.tracked);
 
+    // Frames grow towards the target's size: the disk must hold the rest at the larger one's.
+    const double growth = std::max(1.0, double(target.grid().activeVoxelCount()) /
+                                            double(std::max<openvdb::Index64>(1, source.grid().activeVoxelCount())));
     MorphSummary summary;
     MorphTracking tracking;
     {
@@ -101,6 +104,10 @@ void runMorph(const MorphCommandOptions& o)
                 writeFieldImage(frame.field, outputs.file(framePath(o.directory, frame.index, "vdb")));
                 if (!o.mesh.empty())
                     writeMesh(meshLevelSet(frame.field), outputs.file(framePath(o.directory, frame.index, o.mesh)));
+                if (frame.index == 0) {
+                    outputs.requireRoomFor(o.morph.frames - 1, growth,
+                                           "the other " + std::to_string(o.morph.frames - 1) + " frames");
+                }
                 if (!o.tracked.empty()) tracking.frame(frame.field);
             },
             bar.callback(),
@@ -143,8 +150,10 @@ void addMorphCommand(CLI::App& app)
                     "the shape to start from: a .vdb document, a scan or a mesh (as for import)")
         ->required();
     cmd->add_option("target", options->target, "the shape to arrive at: a .vdb document, a scan or a mesh")->required();
-    cmd->add_option("--frames", options->morph.frames, "number of frames, first and last included")
-        ->check(CLI::Range(2, 100000))
+    cmd->add_option("--frames", options->morph.frames,
+                    "number of frames, first and last included (at most 10,000; the disk must hold them,\n"
+                    "which is checked once the first is written)")
+        ->check(CLI::Range(2, kMaxMorphFrames))
         ->capture_default_str();
     cmd->add_option("-o,--output", options->directory, "directory for the frames (created if missing)")->required();
     cmd->add_option("--mesh", options->mesh, "also write a mesh per frame: ply, obj or stl")

@@ -106,6 +106,7 @@ void runRender(RenderCommandOptions o)
             renderOne(readFieldImage(frames[i], o.input.grid), camera, o.render,
                       outputs.file(framePath(o.output, int(i), o.format)), progress, double(i) / frames.size(),
                       double(i + 1) / frames.size());
+            if (i == 0) outputs.requireRoomFor(frames.size() - 1, 1.0, "the other frames' images");
         }
         outputs.keep();
         std::cout << "wrote " << frames.size() << " frames to " << o.output << " (frame_0000." << o.format
@@ -121,6 +122,7 @@ void runRender(RenderCommandOptions o)
             renderOne(field, camera.orbited(2.0 * M_PI * i / o.turntable), o.render,
                       outputs.file(framePath(o.output, i, o.format)), progress, double(i) / o.turntable,
                       double(i + 1) / o.turntable);
+            if (i == 0) outputs.requireRoomFor(o.turntable - 1, 1.0, "the other turntable images");
         }
         outputs.keep();
         std::cout << "wrote " << o.turntable << " turntable frames to " << o.output << " (frame_0000." << o.format
@@ -162,8 +164,10 @@ void addRenderCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--background", o->background, "background colour r,g,b (linear, 0 to 1), or none (transparent)")
         ->capture_default_str();
-    cmd->add_option("--turntable", o->turntable, "render N frames around the model into the directory -o")
-        ->check(CLI::Range(1, 100000));
+    cmd->add_option("--turntable", o->turntable,
+                    "render N frames around the model into the directory -o (at most 3,600: a tenth of a degree\n"
+                    "apart)")
+        ->check(CLI::Range(1, 3600));
     cmd->add_option("--format", o->format, "image format of frames written into a directory")
         ->check(CLI::IsMember({"png", "exr"}))
         ->capture_default_str();

@@ -35,8 +35,10 @@ MorphRun morphInto(const FieldImage& source, const std::filesystem::path& target
 void writeFrames(const std::vector<FieldImage>& frames, const std::filesystem::path& dir, WrittenOutputs& outputs)
 {
     outputs.directory(dir);
-    for (std::size_t i = 0; i < frames.size(); ++i)
+    for (std::size_t i = 0; i < frames.size(); ++i) {
         writeFieldImage(frames[i], outputs.file(framePath(dir, int(i), "vdb")));
+        if (i == 0) outputs.requireRoomFor(frames.size() - 1, 1.0, "the other frames");
+    }
 }
 
 }  // namespace sculpt
