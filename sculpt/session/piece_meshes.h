@@ -7,7 +7,7 @@
 #include "core/io/mesh_frame.h"
 #include "core/mesh/triangle_mesh.h"
 
-#include <openvdb/math/Mat4.h>
+#include <openvdb/Types.h>
 
 #include <filesystem>
 #include <string>

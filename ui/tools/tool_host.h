@@ -11,7 +11,7 @@
 #include "ui/workspace/workspace.h"
 
 #include <glm/vec2.hpp>
-#include <openvdb/math/Mat4.h>
+#include <openvdb/Types.h>
 
 #include <optional>
 #include <string>

@@ -11,7 +11,7 @@
 #include "ui/tools/tool.h"
 
 #include <openvdb/math/BBox.h>
-#include <openvdb/math/Mat4.h>
+#include <openvdb/Types.h>
 
 #include <functional>
 #include <optional>
