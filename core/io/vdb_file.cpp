@@ -5,6 +5,7 @@
 #include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 #include "core/field/band_repair.h"
+#include "core/field/document_text.h"
 #include "core/field/grid_checksum.h"
 #include "core/field/grid_tiles.h"
 #include "core/field/placement_check.h"
@@ -311,6 +312,8 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
     checkMetadataSeal(*grid, "grid '" + chosen.name + "'");
     std::string units = FieldImage::kDefaultUnits;
     if (auto u = meta.getMetadata<openvdb::StringMetadata>(kMetaUnits)) units = u->value();
+    if (const std::string problem = unitsProblem(units); !problem.empty())
+        throw InputError(path.string() + ": its length unit (" + kMetaUnits + ") cannot be: " + problem);
     checkPieceChecksum(*grid);
     requireFiniteValues(*grid, path);
     FieldImage field(asNarrowBand(grid, path, warnings), units);
@@ -329,6 +332,8 @@ VdbDocument readUnchecked(const fs::path& path, const std::string& gridName)
 Piece pieceOf(FieldImage field, const fs::path& path)
 {
     const openvdb::FloatGrid& grid = field.grid();
+    if (const std::string problem = pieceNameProblem(grid.getName()); !grid.getName().empty() && !problem.empty())
+        throw InputError(path.string() + ": a piece's name (its grid's name) cannot be: " + problem);
     Piece piece{{grid.getName().empty() ? "surface" : grid.getName()}, std::move(field)};
     const std::string where = path.string() + ": piece '" + piece.name + "': ";
     if (auto colour = grid.getMetadata<openvdb::Vec3SMetadata>(kMetaPieceColour)) {
@@ -398,7 +403,8 @@ void checkPieceNames(const std::vector<Piece>& pieces, const fs::path& path)
     if (pieces.empty()) throw InputError(path.string() + ": a document needs at least one piece");
     std::set<std::string> names;
     for (const Piece& piece : pieces) {
-        if (piece.name.empty()) throw InputError(path.string() + ": a piece has no name");
+        if (const std::string problem = pieceNameProblem(piece.name); !problem.empty())
+            throw InputError(path.string() + ": a piece's name cannot be: " + problem);
         if (!names.insert(piece.name).second)
             throw InputError(path.string() + ": two pieces are named '" + piece.name + "'");
     }

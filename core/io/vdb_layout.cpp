@@ -86,6 +86,22 @@ struct MetadataSeen {
     std::int64_t memoryBytes = 0;  // a grid's "file_mem_bytes"
 };
 
+/// OpenVDB reads a value of a fixed-size type (int32, vec3d, mat4d, ...) by its type's size,
+/// whatever length the file gives it: a length that differs would leave OpenVDB reading the next
+/// entry from the wrong place (a name "of 1.7 GB"), so it is refused here. Strings, the
+/// delayed-load table and types this build does not know are read by their length.
+void requireValueSize(const std::string& type, std::uint32_t bytes)
+{
+    if (type == "string" || type == openvdb::io::DelayedLoadMetadata::staticTypeName() ||
+        !openvdb::Metadata::isRegisteredType(type))
+        return;
+    const openvdb::Metadata::Ptr value = openvdb::Metadata::createMetadata(type);
+    if (bytes != value->size()) {
+        throw InputError("corrupt (a metadata value of type " + type + " is " + std::to_string(bytes) +
+                         " bytes long, not " + std::to_string(value->size()) + ")");
+    }
+}
+
 MetadataSeen readMetadata(BoundedReader& in)
 {
     MetadataSeen seen;
@@ -96,6 +112,7 @@ MetadataSeen readMetadata(BoundedReader& in)
         const std::string name = in.readString("a metadata name");
         const std::string type = in.readString("a metadata type");
         const auto bytes = in.read<std::uint32_t>("a metadata value");
+        requireValueSize(type, bytes);
         if (name == openvdb::GridBase::META_GRID_CLASS && type == "string") {
             seen.gridClass = in.readBytes(bytes, "a metadata value");
         } else if (name == kVdbEditedGridKey && type == "string") {

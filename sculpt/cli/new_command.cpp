@@ -1,4 +1,6 @@
 #include "core/base/atomic_file.h"
+#include "core/base/errors.h"
+#include "core/field/document_text.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
 #include "sculpt/cli/commands.h"
@@ -33,6 +35,8 @@ AnalyticSdf shapeSdf(const NewOptions& o)
 void runNew(const NewOptions& o)
 {
     AtomicFile::checkTarget(o.output);
+    if (const std::string problem = unitsProblem(o.units); !problem.empty())
+        throw InputError("--units: the length unit cannot be: " + problem);
     const AnalyticSdf shape = shapeSdf(o);
     FieldImage field = rasterizeSdf(shape, o.voxelSize);
     field.setUnits(o.units);

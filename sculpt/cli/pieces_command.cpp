@@ -1,5 +1,6 @@
 #include "core/base/atomic_file.h"
 #include "core/base/errors.h"
+#include "core/field/document_text.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
 #include "core/pieces/piece_edits.h"
@@ -87,6 +88,8 @@ void relabel(PieceList& list, const PiecesOptions& o)
 {
     for (const std::string& change : o.rename) {
         const auto [from, to] = pairOf(change, "--rename");
+        if (const std::string problem = pieceNameProblem(to); !problem.empty())
+            throw InputError("--rename " + change + ": the new name cannot be: " + problem);
         list.find(from)->name = freeName(list.pieces(), to);
     }
     for (const std::string& change : o.colour) {

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/file_extension.h"
+#include "core/field/document_text.h"
 #include "core/io/text_lines.h"
 
 #include <cstdio>
@@ -47,7 +48,7 @@ void readNames(const fs::path& path, std::map<int, LabelLook>& looks)
         try {
             const auto value = lines.integer((*words)[0], "a label");
             if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max()) continue;
-            looks[int(value)].name = std::string((*words)[1]);
+            looks[int(value)].name = printableText(std::string((*words)[1]), kMaxPieceNameBytes);
         } catch (const InputError&) {
             continue;  // a heading, not a label
         }
@@ -111,7 +112,7 @@ void readSlicerSegments(const fs::path& path, std::map<int, LabelLook>& looks)
     }
     for (const auto& [index, segment] : segments) {
         LabelLook& look = looks[segment.label.value_or(index + 1)];
-        look.name = segment.name;
+        look.name = printableText(segment.name, kMaxPieceNameBytes);
         float r = 0.0f, g = 0.0f, b = 0.0f;
         if (std::sscanf(segment.colour.c_str(), "%f %f %f", &r, &g, &b) == 3) look.colour = openvdb::Vec3f(r, g, b);
     }

@@ -2,6 +2,7 @@
 
 #include "core/base/errors.h"
 #include "core/base/json_fields.h"
+#include "core/field/document_text.h"
 #include "core/field/placement_check.h"
 #include "core/primitives/scene_file.h"
 #include "sculpt/session/sculpt_session.h"
@@ -292,7 +293,8 @@ PieceLook parseLook(const json& j, const std::string& where)
     onlyFields(j, {"name", "colour", "visible", "placement"}, where);
     PieceLook look;
     look.name = textOr(j, "name", "", where);
-    if (look.name.empty()) throw InputError(where + ": field 'name' must be a piece's name");
+    if (const std::string problem = pieceNameProblem(look.name); !problem.empty())
+        throw InputError(where + ": field 'name' cannot name a piece: " + problem);
     const openvdb::Vec3d colour = vec3(field(j, "colour", where), where + ": field 'colour'");
     for (int c = 0; c < 3; ++c) {
         if (!(colour[c] >= 0.0 && colour[c] <= 1.0))

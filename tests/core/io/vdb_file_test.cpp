@@ -1,6 +1,7 @@
 // Documents in .vdb files: exact round trips, foreign files, and damaged files refused cleanly.
 
 #include "core/base/errors.h"
+#include "core/field/document_text.h"
 #include "core/field/grid_checksum.h"
 #include "core/io/vdb_file.h"
 #include "core/io/vdb_layout.h"
@@ -466,6 +467,38 @@ TEST(VdbPieces, RefuseALookThatCannotBeAndValuesThatAreNotNumbers)
             EXPECT_THROW(readFieldImage(dir / file), InputError) << file;
         }
     }
+}
+
+// Names and units are printed in listings and one-line messages: another program's grid named
+// across two lines, or a unit a kilobyte long, is refused; our writer never writes one.
+TEST(VdbPieces, NamesAndUnitsThatAreNotShortPrintableTextAreRefused)
+{
+    TempDir dir;
+    VdbDocument document = [&] {
+        writeVdbPieces(threePieces(), dir / "doc.vdb");
+        return readVdbDocument(dir / "doc.vdb");
+    }();
+    document.companions.grids[0]->setName("hat\nrm -rf");
+    writeFieldImage(document.field, dir / "newline.vdb", document.companions);
+    const std::string newline = refusal(dir / "newline.vdb");
+    EXPECT_NE(newline.find("a piece's name (its grid's name) cannot be: it holds a control character"),
+              std::string::npos)
+        << newline;
+    EXPECT_EQ(newline.find('\n'), std::string::npos) << "one line";
+
+    FieldImage ball = makeSphere(4.0, 0.5);
+    ball.setUnits(std::string(1000, 'm'));
+    writeFieldImage(ball, dir / "units.vdb");
+    EXPECT_NE(refusal(dir / "units.vdb").find("its length unit (sculpt.units) cannot be: it is 1000 bytes long"),
+              std::string::npos)
+        << refusal(dir / "units.vdb");
+
+    std::vector<Piece> tooLong = threePieces();
+    tooLong[1].name = std::string(kMaxPieceNameBytes + 1, 'x');
+    EXPECT_THROW(writeVdbPieces(tooLong, dir / "long.vdb"), InputError);
+    EXPECT_FALSE(fs::exists(dir / "long.vdb"));
+    EXPECT_EQ(printableText("left\thippocampus\n", 64), "left hippocampus ");
+    EXPECT_EQ(printableText("caf\xc3\xa9", 4), "caf") << "cut at a whole character";
 }
 
 TEST(VdbPieces, RefuseAPieceWhoseVoxelsChangedAndNamesTakenTwice)
