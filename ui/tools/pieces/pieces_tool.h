@@ -10,8 +10,8 @@
 #include "ui/tools/pieces/piece_gesture.h"
 #include "ui/tools/tool.h"
 
-#include <openvdb/math/BBox.h>
 #include <openvdb/Types.h>
+#include <openvdb/math/BBox.h>
 
 #include <functional>
 #include <optional>
