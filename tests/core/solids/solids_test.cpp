@@ -209,6 +209,27 @@ TEST(PrismCut, MirroredAcrossXTheCutFieldIsMirrorSymmetric)
     EXPECT_NEAR(volumeOf(cut), expected, 0.005 * expected);
 }
 
+// A lasso at the limit the README states: 100,000 points drawn round a circle of radius a (with a
+// hand's wobble far under a voxel) bores a hole of radius a through the ball, leaving
+// (4 pi / 3) (R^2 - a^2)^(3/2). Its time (about 0.1 s) is in masks_bench, not asserted here.
+TEST(PrismCut, AHundredThousandPointLassoBoresTheHoleItsCircleDraws)
+{
+    const double radius = 20.0, a = 8.0;
+    ViewPrism prism = frontSquare(0.0, 0.0, 1.0, 1.0);
+    prism.polygon.clear();
+    for (int i = 0; i < 100000; ++i) {
+        const double t = 2.0 * M_PI * i / 100000.0, wobble = 0.01 * std::sin(997.0 * t);
+        prism.polygon.emplace_back((a + wobble) * std::cos(t), (a + wobble) * std::sin(t));
+    }
+    const FieldImage cut = applyPrism(makeSphere(radius, 0.5), prism, PrismMode::Cut);
+    const double expected = 4.0 / 3.0 * M_PI * std::pow(radius * radius - a * a, 1.5);
+    EXPECT_NEAR(volumeOf(cut), expected, 0.01 * expected);
+    const Topology t = topologyOf(cut);
+    EXPECT_TRUE(t.closedManifold);
+    EXPECT_EQ(t.shells, 1u);
+    EXPECT_EQ(t.euler, 0) << "a ring: the hole goes through";
+}
+
 TEST(PrismCut, AFillSlabAddsItsBoxAndAPerspectivePyramidCutsWhatTheEyeSees)
 {
     const FieldImage ball = makeSphere(10.0, 0.5);
