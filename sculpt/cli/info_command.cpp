@@ -101,13 +101,18 @@ FieldMeasures total(const std::vector<FieldMeasures>& pieces)
     return sum;
 }
 
-/// The file's grids that are not pieces.
-VdbLayout othersThan(VdbLayout layout, const std::vector<Piece>& pieces)
+/// The file's grids that are not pieces, their masks or the scan the document keeps (which have
+/// lines of their own).
+VdbLayout othersThan(VdbLayout layout, const VdbPieces& read)
 {
-    const auto isPiece = [&](const VdbGridEntry& grid) {
-        return std::any_of(pieces.begin(), pieces.end(), [&](const Piece& p) { return p.name == grid.name; });
+    const openvdb::FloatGrid::ConstPtr kept = findKeptScan(read.companions.grids);
+    const auto isShown = [&](const VdbGridEntry& grid) {
+        if (kept && grid.name == kept->getName()) return true;
+        return std::any_of(read.pieces.begin(), read.pieces.end(), [&](const Piece& p) {
+            return p.name == grid.name || (p.field.mask() && grid.name == p.name + ".mask");
+        });
     };
-    layout.grids.erase(std::remove_if(layout.grids.begin(), layout.grids.end(), isPiece), layout.grids.end());
+    layout.grids.erase(std::remove_if(layout.grids.begin(), layout.grids.end(), isShown), layout.grids.end());
     return layout;
 }
 
@@ -119,10 +124,10 @@ void printPieces(const std::vector<Piece>& pieces, const std::vector<FieldMeasur
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const FieldMeasures& m = measures[i];
         std::printf("  %-20s volume %g %s^3, area %g %s^2, euler characteristic %d, %d components, voxel size %g, "
-                    "%s%s\n",
+                    "%s%s%s\n",
                     ("'" + pieces[i].name + "'").c_str(), m.volume, units.c_str(), m.area, units.c_str(),
                     m.eulerCharacteristic, m.components, m.voxelSize, hexColour(pieces[i].colour).c_str(),
-                    pieces[i].visible ? "" : ", hidden");
+                    pieces[i].visible ? "" : ", hidden", pieces[i].field.mask() ? ", masked" : "");
     }
     std::printf("all pieces:\n");
 }
@@ -204,7 +209,7 @@ void runInfo(const InfoOptions& o)
         std::printf("grid:                 %s (the file holds %s)\n", pieces.front().field.grid().getName().c_str(),
                     describeGrids(layout).c_str());
     } else {
-        printPieces(pieces, measures, othersThan(layout, pieces));
+        printPieces(pieces, measures, othersThan(layout, read));
     }
     std::printf("frame:                %s %s (x to the patient's left, y to the back, z up%s)\n", FieldImage::kFrame,
                 units.c_str(), layout.frame.empty() ? "; assumed: the file records none" : "");

@@ -405,6 +405,10 @@ TEST(SculptCli, ALabelMapImportsAsPiecesThatMeshAndChangeOneByOne)
     EXPECT_NE(import.out.find("3 pieces"), std::string::npos) << import.out;
     const nlohmann::json info = infoJson(dir, "pieces.vdb");
     ASSERT_EQ(info["pieces"].size(), 3u);
+    // The kept scan has its own line, not one among "other grids" (there are none).
+    const std::string listing = runSculpt("info pieces.vdb", dir.path()).out;
+    EXPECT_NE(listing.find("kept scan:"), std::string::npos) << listing;
+    EXPECT_EQ(listing.find("other grids"), std::string::npos) << listing;
     double sum = 0.0;
     for (const auto& piece : info["pieces"]) sum += piece["volume"].get<double>();
     EXPECT_NEAR(info["volume"].get<double>(), sum, 1e-9 * sum);
