@@ -489,7 +489,9 @@ TEST(SculptCliRegressionCorpus, EveryFileInTheFolderIsInTheTable)
     EXPECT_GE(listed.size(), 20u);
     for (const auto& entry : fs::directory_iterator(SCULPT_TESTS_DIR "/bad-inputs")) {
         const std::string name = entry.path().filename().string();
-        if (name != "README.md") EXPECT_TRUE(listed.count(name)) << name << " is not in bad-inputs/README.md";
+        if (name != "README.md") {
+            EXPECT_TRUE(listed.count(name)) << name << " is not in bad-inputs/README.md";
+        }
     }
 }
 
