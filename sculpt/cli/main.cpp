@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <iostream>
+#include <sculpt_version.h>
 
 namespace {
 
@@ -45,6 +46,7 @@ int main(int argc, char** argv)
     sculpt::quietVtkLogger();
     CLI::App app{"sculpt: volumetric clay sculpting on sparse signed-distance grids.\n"
                  "Run 'sculpt COMMAND --help' for the options of a command."};
+    app.set_version_flag("--version", SCULPT_VERSION_TEXT("sculpt"));
     app.require_subcommand(1);
     sculpt::cli::addNewCommand(app);
     sculpt::cli::addInfoCommand(app);
@@ -67,6 +69,8 @@ int main(int argc, char** argv)
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "sculpt: " << e.what() << " (see 'sculpt --help')\n";

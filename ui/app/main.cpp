@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <memory>
+#include <sculpt_version.h>
 
 // Without these VTK builds no OpenGL objects: every frame would be one solid colour.
 VTK_MODULE_INIT(vtkRenderingOpenGL2);
@@ -50,6 +51,7 @@ int main(int argc, char** argv)
     CLI::App cli("sculpt-ui: sculpt virtual clay. Opens FILE (a .vdb document), or a new clay ball.\n"
                  "Left drag sculpts, middle/right drag orbits, wheel zooms; F1 lists every key.\n"
                  "For tests and demos it replays recorded input (--play) without a person.");
+    cli.set_version_flag("--version", SCULPT_VERSION_TEXT("sculpt-ui"));
     cli.add_option("file", options.document, "the .vdb document to open (default: a new clay ball)");
     cli.add_option("--grid", options.grid,
                    "the grid to sculpt when the file holds several level sets (default: the one named\n"

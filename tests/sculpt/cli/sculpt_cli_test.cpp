@@ -42,6 +42,16 @@ nlohmann::json infoJson(const TempDir& dir, const std::string& file)
     return nlohmann::json::parse(r.out);
 }
 
+// A bug report can say which build: the project's version and the commit it was built from.
+TEST(SculptCli, VersionNamesTheProjectVersionAndTheCommit)
+{
+    TempDir dir;
+    const auto r = runSculpt("--version", dir.path());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("sculpt " SCULPT_PROJECT_VERSION " (git ", 0), 0u) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+}
+
 TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
 {
     TempDir dir;
