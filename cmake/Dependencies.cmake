@@ -5,7 +5,7 @@ find_package(VTK 9 REQUIRED COMPONENTS
   CommonCore CommonDataModel FiltersCore FiltersSources IOGeometry IOImage IOPLY ImagingCore ImagingGeneral
   RenderingCore RenderingOpenGL2 RenderingUI)
 
-list(APPEND CMAKE_MODULE_PATH "/usr/lib/x86_64-linux-gnu/cmake/OpenVDB")
+list(APPEND CMAKE_MODULE_PATH "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/OpenVDB")  # Debian multiarch
 # Debian's FindOpenVDB.cmake asks for Boost iostreams (libboost-iostreams-dev).
 find_package(OpenVDB REQUIRED)
 find_package(Imath CONFIG REQUIRED)
