@@ -46,6 +46,7 @@ int main(int argc, char** argv)
     sculpt::quietVtkLogger();
     CLI::App app{"sculpt: volumetric clay sculpting on sparse signed-distance grids.\n"
                  "Run 'sculpt COMMAND --help' for the options of a command."};
+    app.name("sculpt");
     app.set_version_flag("--version", SCULPT_VERSION_TEXT("sculpt"));
     app.require_subcommand(1);
     sculpt::cli::addNewCommand(app);
@@ -62,6 +63,10 @@ int main(int argc, char** argv)
     sculpt::cli::addIslandsCommand(app);
     sculpt::cli::addPiecesCommand(app);
     sculpt::cli::addRenderCommand(app);
+    if (argc < 2) {  // a bare call: the usage, not CLI11's "a subcommand is required"
+        std::cerr << app.help();
+        return 2;
+    }
     try {
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);

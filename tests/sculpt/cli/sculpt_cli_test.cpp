@@ -43,13 +43,18 @@ nlohmann::json infoJson(const TempDir& dir, const std::string& file)
 }
 
 // A bug report can say which build: the project's version and the commit it was built from.
-TEST(SculptCli, VersionNamesTheProjectVersionAndTheCommit)
+TEST(SculptCli, VersionNamesTheBuildAndABareCallShowsTheUsage)
 {
     TempDir dir;
     const auto r = runSculpt("--version", dir.path());
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.rfind("sculpt " SCULPT_PROJECT_VERSION " (git ", 0), 0u) << r.out;
     EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    // A bare call shows how to call it (and fails, as a batch script must see).
+    const auto bare = runSculpt("", dir.path());
+    EXPECT_EQ(bare.exitCode, 2);
+    EXPECT_NE(bare.err.find("Usage: sculpt [OPTIONS] SUBCOMMAND"), std::string::npos) << bare.err;
+    EXPECT_NE(bare.err.find("export-labels"), std::string::npos) << bare.err;
 }
 
 TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
