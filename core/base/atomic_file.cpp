@@ -27,6 +27,18 @@ fs::path temporarySibling(const fs::path& target)
     return target.has_parent_path() ? target.parent_path() / name : fs::path(name);
 }
 
+/// fsync of `path` opened with `flags`; false (errno set) if it cannot be opened or flushed.
+bool flushToDisk(const fs::path& path, int flags)
+{
+    const int fd = open(path.c_str(), flags | O_CLOEXEC);
+    if (fd < 0) return false;
+    const bool flushed = fsync(fd) == 0;
+    const int error = errno;
+    close(fd);
+    errno = error;
+    return flushed;
+}
+
 }  // namespace
 
 void AtomicFile::checkTarget(const fs::path& target)
@@ -73,10 +85,15 @@ AtomicFile::~AtomicFile()
 
 void AtomicFile::commit()
 {
+    // On disk before it replaces the old file, and the rename on disk before we say it is done: a
+    // power cut then leaves the old document or the new one, never an empty one.
+    if (!flushToDisk(mTemporary, O_RDONLY))
+        throw InputError(mTarget.string() + ": cannot write (" + std::strerror(errno) + ")");
     std::error_code ec;
     fs::rename(mTemporary, mTarget, ec);
     if (ec) throw InputError(mTarget.string() + ": cannot write (" + ec.message() + ")");
     mCommitted = true;
+    flushToDisk(mTarget.has_parent_path() ? mTarget.parent_path() : fs::path("."), O_RDONLY | O_DIRECTORY);
 }
 
 void writeFileAtomically(const fs::path& target, const std::string& text)

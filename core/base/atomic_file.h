@@ -3,8 +3,10 @@
 /// @brief Write a file so that a crash never leaves it half written.
 ///
 /// Writers write to a temporary sibling (same directory, hence same file system), then
-/// commit() renames it over the target in one step. If commit() is never reached (an exception,
-/// a crash before it), the temporary is removed and the target keeps its previous content.
+/// commit() flushes it to disk (fsync) and renames it over the target in one step, then flushes
+/// the directory: after a power cut the target holds the old content or the new, never a part.
+/// If commit() is never reached (an exception, a crash before it), the temporary is removed and
+/// the target keeps its previous content.
 /// A file in a private directory (no access for group or others, such as the 0700 state
 /// directory) is written 0600, whatever the umask; elsewhere the new file keeps the permissions
 /// of the one it replaces, so saving never widens who may read a document.
@@ -24,7 +26,8 @@ public:
 
     /// Where the writer must write.
     const std::filesystem::path& temporaryPath() const { return mTemporary; }
-    /// Replaces the target with the temporary. @throws InputError if the rename fails.
+    /// Replaces the target with the temporary, on disk. @throws InputError if the flush or the
+    /// rename fails (the target is then unchanged).
     void commit();
 
     /// @throws InputError naming `target` if its directory does not exist or it is a directory.

@@ -243,7 +243,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCall{"render good.vdb -o out.png --background pink", "--background"},
         BadCall{"render good.vdb -o out.png --camera 0,0,0 --look-at 0,0,0", "coincide"},
         BadCall{"render good.vdb -o out.png --fov 200", "field of view"},
-        BadCall{"render . -o frames --turntable 3", "not a directory of frames"}, BadCall{"", "ubcommand"},
+        BadCall{"render . -o frames --turntable 3", "not a directory of frames"},
         // Operations that would destroy the model, or reach beyond what a model can hold.
         BadCall{"offset good.vdb --distance -100 -o out.vdb", "good.vdb: offset -100 leaves nothing of the model"},
         BadCall{"smooth good.vdb --iterations 2000 -o out.vdb", "good.vdb: smooth 2000 leaves nothing of the model"},
