@@ -64,6 +64,7 @@ void addApplyCommand(CLI::App& app)
                  "undo and redo; see data/strokes.schema.json and data/strokes/) on a document, as\n"
                  "sculpt-ui's Save Strokes writes it. Replays are deterministic: the same input and\n"
                  "script give the same output bit for bit, whatever the thread count.");
+    cmd->footer("Examples:\n  sculpt apply ball.vdb data/strokes/face.json -o face.vdb");
     addDocumentInput(*cmd, options->input, "the .vdb document to sculpt");
     addMaskInput(*cmd, options->input);
     cmd->add_option("script", options->script, "the stroke script (.json)")->required();

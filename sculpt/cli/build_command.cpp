@@ -46,6 +46,8 @@ void addBuildCommand(CLI::App& app)
         app.add_subcommand("build", "Bake a scene of implicit primitives (skeletons with field kernels, blended, see\n"
                                     "data/scene.schema.json) into a document, alone or combined into a base document\n"
                                     "by the scene's operation (union, difference, intersection, replace).");
+    cmd->footer("Examples:\n  sculpt build data/scenes/snowman.json -o snowman.vdb\n  sculpt build ear.json --into "
+                "head.vdb -o head-with-ear.vdb");
     cmd->add_option("scene", options->scene, "the scene .json file")->required();
     cmd->add_option("--voxel-size", options->voxelSize,
                     "voxel size without --into (default: the scene's voxel_size, else 0.5)")

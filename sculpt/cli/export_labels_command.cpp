@@ -48,6 +48,7 @@ void addExportLabelsCommand(CLI::App& app)
                          "with (import --labels); the others take the smallest unused values. The format follows the\n"
                          "output's extension: .nii or .nii.gz (NIfTI-1, RAS sform and qform), .nrrd (LPS space), or\n"
                          ".seg.nrrd (3D Slicer's segmentation: each segment's name and colour too).");
+    cmd->footer("Examples:\n  sculpt export-labels atlas.vdb -o atlas-edited.seg.nrrd");
     addDocumentInput(*cmd, o->input, "the .vdb document whose pieces to label");
     cmd->add_option("--like", o->like,
                     "the scan whose lattice the labels take (any scan `import` reads, or a document\n"

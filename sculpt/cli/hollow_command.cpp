@@ -46,6 +46,7 @@ void addHollowCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "hollow", "Make the solid a shell of a given wall thickness (less resin, lighter prints), with a\n"
                   "drain hole at the lowest point of each cavity for the print direction.");
+    cmd->footer("Examples:\n  sculpt hollow figure.vdb --thickness 2 --drain -o shell.vdb");
     addDocumentInput(*cmd, options->input, "the .vdb document to hollow");
     cmd->add_option("--thickness", options->filter.hollow.thicknessWorld, "the wall's thickness, world units")
         ->check(positiveNumber())

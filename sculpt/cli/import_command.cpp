@@ -146,6 +146,9 @@ void addImportCommand(CLI::App& app)
                   "above it); spacing, origin and orientation are kept, so the surface sits where the\n"
                   "scan says, in LPS millimetres. The document keeps the scan (--no-keep-scan: not).\n"
                   "Meshes: .obj, .ply, .stl, .off; an open mesh imports with a warning.");
+    cmd->footer("Examples:\n  sculpt import /usr/share/mricron/templates/ch2better.nii.gz --voxel-size 0.5 -o "
+                "brain.vdb\n  sculpt import atlas.nii.gz --labels -o atlas.vdb   (a piece per label)\n  sculpt import "
+                "part.stl --voxel-size 0.2 -o part.vdb");
     cmd->add_option("input", o->input, "the scan file, DICOM directory or slice, or mesh file")->required();
     cmd->add_flag("--verbose", o->verbose,
                   "print every warning (a label map's pieces can give hundreds alike: without it, each kind is\n"

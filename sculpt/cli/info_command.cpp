@@ -236,6 +236,7 @@ void addInfoCommand(CLI::App& app)
                                    "area, Euler characteristic (2 per sphere-like piece, 0 per torus) and\n"
                                    "number of connected surface components, and the grids the file holds.\n"
                                    "A document of several pieces is measured per piece and in total.");
+    cmd->footer("Examples:\n  sculpt info head.vdb\n  sculpt info head.vdb --json");
     addDocumentInput(*cmd, options->input, "the .vdb document to measure");
     cmd->add_flag("--json", options->json,
                   "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"

@@ -41,6 +41,7 @@ void addIslandsCommand(CLI::App& app)
     CLI::App* cmd = app.add_subcommand(
         "islands", "Remove the islands (disjoint solids: a scan's specks) smaller than a volume; the others keep\n"
                    "their voxels. `sculpt info` counts them (shells); `sculpt pieces --split` makes each a piece.");
+    cmd->footer("Examples:\n  sculpt islands scan.vdb --remove-under 1 -o clean.vdb");
     addDocumentInput(*cmd, options->input, "the .vdb document");
     cmd->add_option("--remove-under", options->removeUnder,
                     "remove the islands of less volume than this (world units^3)")

@@ -33,6 +33,8 @@ void addMeshCommand(CLI::App& app)
                                    "normals), .obj (text) or .stl (binary). A document of several pieces gives\n"
                                    "one OBJ file of an object per piece, or a .ply or .stl file per piece named\n"
                                    "OUTPUT's stem, a dash and the piece's name; --piece NAME exports one.");
+    cmd->footer(
+        "Examples:\n  sculpt mesh head.vdb -o head.stl\n  sculpt mesh atlas.vdb -o atlas.obj   (an object per piece)");
     addDocumentInput(*cmd, options->input, "the .vdb document to mesh");
     cmd->add_option("-o,--output", options->output, "the mesh file to write")->required();
     cmd->add_flag("--ras", options->ras,

@@ -146,6 +146,8 @@ void addMorphCommand(CLI::App& app)
                                     "by level-set motion (growing where the target is larger, shrinking where it is\n"
                                     "smaller, changing topology as needed). Writes DIR/frame_0000.vdb ... evenly\n"
                                     "spaced in morph time; the last frame is the converged shape.");
+    cmd->footer("Examples:\n  sculpt morph ball.vdb box.vdb --frames 24 -o frames --mesh ply\n  sculpt render frames "
+                "-o movie   (then one camera for every frame)");
     cmd->add_option("source", options->source,
                     "the shape to start from: a .vdb document, a scan or a mesh (as for import)")
         ->required();

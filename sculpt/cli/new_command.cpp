@@ -52,6 +52,8 @@ void addNewCommand(CLI::App& app)
     auto options = std::make_shared<NewOptions>();
     CLI::App* cmd = app.add_subcommand("new", "Create a document holding a starting shape, centred at the origin.\n"
                                               "The defaults give the clay ball a sculptor starts from.");
+    cmd->footer(
+        "Examples:\n  sculpt new -o ball.vdb\n  sculpt new --shape torus --radius 30 --voxel-size 0.25 -o ring.vdb");
     cmd->add_option("--shape", options->shape, "sphere, box or torus")
         ->check(CLI::IsMember({"sphere", "box", "torus"}))
         ->capture_default_str();

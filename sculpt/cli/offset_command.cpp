@@ -34,6 +34,7 @@ void addOffsetCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("offset", "Move the whole surface along its normal by a distance: positive grows\n"
                                      "(thickens), negative shrinks (thins). Cost grows with |distance| / voxel size.");
+    cmd->footer("Examples:\n  sculpt offset head.vdb --distance 2 -o thicker.vdb");
     addDocumentInput(*cmd, options->input, "the .vdb document");
     addMaskInput(*cmd, options->input);
     cmd->add_option("--distance", options->distance, "offset in world units (> 0 grows)")->required();

@@ -150,6 +150,7 @@ void addPiecesCommand(CLI::App& app)
         "pieces", "Change a document's pieces (parts that never blend; `sculpt info` lists them) and write\n"
                   "the result: in this order, add other documents' pieces, rename, colour, hide and show,\n"
                   "merge pairs into one (CSG union), split pieces into their solids, delete.");
+    cmd->footer("Examples:\n  sculpt pieces atlas.vdb --rename 'label 3=thalamus' --delete 'label 7' -o edited.vdb");
     cmd->add_option("input", o->input, "the .vdb document")->required();
     cmd->add_option("--add", o->add, "a .vdb document whose pieces to add (a name taken gets a number)");
     cmd->add_option("--rename", o->rename, "OLD=NEW");

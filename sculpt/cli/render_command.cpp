@@ -146,6 +146,8 @@ void addRenderCommand(CLI::App& app)
                   ".png a tone-mapped 8-bit picture. --turntable N writes N frames around the model into\n"
                   "the directory -o; a directory of .vdb frames (a morph) renders to frames in -o with one\n"
                   "camera that frames them all. Without --camera, a three-quarter view frames the model.");
+    cmd->footer(
+        "Examples:\n  sculpt render head.vdb -o head.png\n  sculpt render head.vdb --turntable 36 -o turntable");
     addDocumentInput(*cmd, o->input, "a .vdb document, or a directory of .vdb frames");
     cmd->add_option("-o,--output", o->output, "the image (.exr or .png), or a directory for frames")->required();
     cmd->add_option("--width", o->render.width, "image width in pixels (1 to 16384)")->capture_default_str();

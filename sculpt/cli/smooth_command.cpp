@@ -39,6 +39,7 @@ void addSmoothCommand(CLI::App& app)
     CLI::App* cmd =
         app.add_subcommand("smooth", "Smooth the whole surface by mean-curvature flow: bumps and creases relax,\n"
                                      "small features vanish first. One iteration is one stable step (dt = h^2/6).");
+    cmd->footer("Examples:\n  sculpt smooth brain.vdb --iterations 20 --keep-volume -o smooth.vdb");
     addDocumentInput(*cmd, options->input, "the .vdb document to smooth");
     addMaskInput(*cmd, options->input);
     cmd->add_option("--iterations", options->iterations, "number of smoothing steps")

@@ -57,6 +57,19 @@ TEST(SculptCli, VersionNamesTheBuildAndABareCallShowsTheUsage)
     EXPECT_NE(bare.err.find("export-labels"), std::string::npos) << bare.err;
 }
 
+// Each command's --help ends with examples of calling it.
+TEST(SculptCli, EveryCommandsHelpShowsExamplesOfIt)
+{
+    TempDir dir;
+    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply", "import",
+                                "export-labels", "hollow", "islands", "pieces", "render"}) {
+        const auto r = runSculpt(std::string(command) + " --help", dir.path());
+        EXPECT_EQ(r.exitCode, 0) << command;
+        const auto examples = r.out.find("Examples:\n  sculpt " + std::string(command) + " ");
+        EXPECT_NE(examples, std::string::npos) << command << ":\n" << r.out;
+    }
+}
+
 TEST(SculptCli, NewInfoMeshOnTheDefaultClayBall)
 {
     TempDir dir;
