@@ -283,18 +283,20 @@ void checkDocumentMetadata(const openvdb::MetaMap& meta, const FieldImage& field
 /// number: a NaN would reach measurements, meshes and other files.
 void requireFiniteValues(const openvdb::FloatGrid& grid, const fs::path& path)
 {
-    const auto refuse = [&](float value, const openvdb::Coord& at) {
+    const auto refuse = [&](float value, const std::string& where) {
         throw InputError(path.string() + ": grid '" + grid.getName() + "' holds a value that is not a finite number (" +
-                         std::to_string(value) + " at voxel " + std::to_string(at.x()) + " " + std::to_string(at.y()) +
-                         " " + std::to_string(at.z()) + "): corrupt");
+                         std::to_string(value) + " " + where + "): corrupt");
+    };
+    const auto at = [](const openvdb::Coord& c) {
+        return "at voxel " + std::to_string(c.x()) + " " + std::to_string(c.y()) + " " + std::to_string(c.z());
     };
     for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
         const float* values = leaf->buffer().data();
         for (openvdb::Index i = 0; i < leaf->SIZE; ++i)
-            if (!std::isfinite(values[i])) refuse(values[i], leaf->offsetToGlobalCoord(i));
+            if (!std::isfinite(values[i])) refuse(values[i], at(leaf->offsetToGlobalCoord(i)));
     }
     forEachTileOffBackground(grid.tree(), [&](const openvdb::CoordBBox& block, float value, bool) {
-        if (!std::isfinite(value)) refuse(value, block.min());
+        if (!std::isfinite(value)) refuse(value, at(block.min()));
     });
 }
 
@@ -447,12 +449,15 @@ VdbPieces readVdbPieces(const fs::path& path, const std::string& gridName)
     }
     checkPieceGrids(levelSets, path);
     for (const openvdb::FloatGrid::Ptr& levelSet : levelSets) {
-        FieldImage field(levelSet, units);
-        try {
-            attachMask(field, levelSet->getName(), read.companions.grids);
-        } catch (const InputError& e) {
-            throw InputError(path.string() + ": " + e.what());
-        }
+        FieldImage field = [&] {
+            try {
+                FieldImage piece(levelSet, units);  // refuses a background that is not a number
+                attachMask(piece, levelSet->getName(), read.companions.grids);
+                return piece;
+            } catch (const InputError& e) {
+                throw InputError(path.string() + ": " + e.what());
+            }
+        }();
         read.pieces.push_back(pieceOf(std::move(field), path));
     }
     return read;

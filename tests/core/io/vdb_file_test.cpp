@@ -467,6 +467,16 @@ TEST(VdbPieces, RefuseALookThatCannotBeAndValuesThatAreNotNumbers)
             EXPECT_THROW(readFieldImage(dir / file), InputError) << file;
         }
     }
+    // A piece whose background is not a number (every background tile is one): refused, naming the file.
+    document = readVdbDocument(dir / "doc.vdb");
+    auto hat = openvdb::gridPtrCast<openvdb::FloatGrid>(document.companions.grids[0]);
+    hat->tree().root().setBackground(std::numeric_limits<float>::quiet_NaN(), /*updateChildNodes=*/true);
+    hat->removeMeta("sculpt.sealed");
+    hat->removeMeta("sculpt.checksum");
+    writeFieldImage(document.field, dir / "background.vdb", document.companions);
+    EXPECT_NE(refusal(dir / "background.vdb").find((dir / "background.vdb").string() + ": grid 'hat'"),
+              std::string::npos)
+        << refusal(dir / "background.vdb");
 }
 
 // Names and units are printed in listings and one-line messages: another program's grid named
