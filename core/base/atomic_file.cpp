@@ -1,6 +1,7 @@
 #include "core/base/atomic_file.h"
 
 #include "core/base/errors.h"
+#include "core/base/interrupt_cleanup.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -58,7 +59,13 @@ AtomicFile::AtomicFile(fs::path target) : mTarget(std::move(target))
 {
     checkTarget(mTarget);
     mTemporary = temporarySibling(mTarget);
-    createWithMode();
+    mTicket = registerTemporary(mTemporary);  // before it exists: an interruption never leaves it
+    try {
+        createWithMode();
+    } catch (...) {
+        forgetTemporary(mTicket);
+        throw;
+    }
 }
 
 void AtomicFile::createWithMode()
@@ -81,6 +88,7 @@ AtomicFile::~AtomicFile()
         std::error_code ignored;
         fs::remove(mTemporary, ignored);
     }
+    forgetTemporary(mTicket);
 }
 
 void AtomicFile::commit()
@@ -93,6 +101,8 @@ void AtomicFile::commit()
     fs::rename(mTemporary, mTarget, ec);
     if (ec) throw InputError(mTarget.string() + ": cannot write (" + ec.message() + ")");
     mCommitted = true;
+    forgetTemporary(mTicket);
+    mTicket = -1;
     flushToDisk(mTarget.has_parent_path() ? mTarget.parent_path() : fs::path("."), O_RDONLY | O_DIRECTORY);
 }
 

@@ -6,7 +6,7 @@
 /// commit() flushes it to disk (fsync) and renames it over the target in one step, then flushes
 /// the directory: after a power cut the target holds the old content or the new, never a part.
 /// If commit() is never reached (an exception, a crash before it), the temporary is removed and
-/// the target keeps its previous content.
+/// the target keeps its previous content; an interruption removes it too (interrupt_cleanup.h).
 /// A file in a private directory (no access for group or others, such as the 0700 state
 /// directory) is written 0600, whatever the umask; elsewhere the new file keeps the permissions
 /// of the one it replaces, so saving never widens who may read a document.
@@ -41,6 +41,7 @@ private:
     std::filesystem::path mTarget;
     std::filesystem::path mTemporary;
     bool mCommitted = false;
+    int mTicket = -1;  ///< its registration for removal on an interruption
 };
 
 /// Writes `text` to `target` through an AtomicFile.

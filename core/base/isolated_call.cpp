@@ -1,6 +1,7 @@
 #include "core/base/isolated_call.h"
 
 #include "core/base/errors.h"
+#include "core/base/memory_budget.h"
 #include "core/base/text_format.h"
 
 #include <sys/mman.h>
@@ -14,7 +15,6 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <new>
 #include <poll.h>
 #include <signal.h>
@@ -30,15 +30,6 @@ constexpr std::uint64_t kHeaderLimit = 64u << 20;  // headers are descriptions, 
 
 /// Where the child writes the file it is decoding: a page shared with the parent.
 char* gSubjectPage = nullptr;
-
-/// The process's address space now: what a child inherits before it allocates anything.
-std::uint64_t addressSpaceBytes()
-{
-    std::ifstream statm("/proc/self/statm");
-    std::uint64_t pages = 0;
-    statm >> pages;
-    return pages * std::uint64_t(sysconf(_SC_PAGESIZE));
-}
 
 /// Sets a soft limit, keeping any lower one the parent runs under (ulimit -v, -t).
 void lowerLimit(int resource, rlim_t value)

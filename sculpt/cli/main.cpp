@@ -1,7 +1,9 @@
 // The `sculpt` command-line program: every edit the UI can make, headless.
-// Exit codes: 0 success, 2 bad input or usage, 1 internal error.
+// Exit codes: 0 success, 2 bad input or usage, 1 internal error, 128 + N on signal N (130 Ctrl-C,
+// 143 SIGTERM), with no temporary file left.
 
 #include "core/base/errors.h"
+#include "core/base/interrupt_cleanup.h"
 #include "core/base/progress.h"
 #include "core/io/vtk_logging.h"
 #include "sculpt/cli/commands.h"
@@ -44,6 +46,7 @@ const char* remedyFlag(sculpt::Remedy remedy)
 int main(int argc, char** argv)
 {
     sculpt::quietVtkLogger();
+    sculpt::exitCleanlyOnInterrupt("sculpt");
     CLI::App app{"sculpt: volumetric clay sculpting on sparse signed-distance grids.\n"
                  "Run 'sculpt COMMAND --help' for the options of a command."};
     app.name("sculpt");

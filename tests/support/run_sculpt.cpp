@@ -1,6 +1,7 @@
 #include "tests/support/run_sculpt.h"
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -18,6 +19,18 @@ std::string slurp(const std::string& path)
     return text.str();
 }
 
+/// The exit code (128 + the signal for a killed one) and the output a command left in `workDir`.
+CommandResult collectResult(int status, const std::string& workDir)
+{
+    CommandResult result;
+    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.out = slurp(workDir + "/.stdout");
+    result.err = slurp(workDir + "/.stderr");
+    std::remove((workDir + "/.stdout").c_str());
+    std::remove((workDir + "/.stderr").c_str());
+    return result;
+}
+
 }  // namespace
 
 // gcc says __SANITIZE_ADDRESS__, clang (before 15) only __has_feature(address_sanitizer).
@@ -28,6 +41,8 @@ std::string slurp(const std::string& path)
 #else
 #define SCULPT_ADDRESS_SANITIZER 0
 #endif
+
+const char* sculptExecutable() { return SCULPT_EXECUTABLE; }
 
 CommandResult runSculpt(const std::string& args, const std::string& workDir)
 {
@@ -53,14 +68,26 @@ CommandResult runCommand(const std::string& command, const std::string& workDir)
     const std::string outFile = workDir + "/.stdout", errFile = workDir + "/.stderr";
     const std::string line =
         "cd '" + workDir + "' && " + command + " >'" + outFile + "' 2>'" + errFile + "' </dev/null";
-    const int status = std::system(line.c_str());
-    CommandResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    result.out = slurp(outFile);
-    result.err = slurp(errFile);
-    std::remove(outFile.c_str());
-    std::remove(errFile.c_str());
-    return result;
+    return collectResult(std::system(line.c_str()), workDir);
+}
+
+int startSculpt(const std::string& args, const std::string& workDir)
+{
+    const std::string line = "cd '" + workDir + "' && exec '" SCULPT_EXECUTABLE "' " + args + " >'" + workDir +
+                             "/.stdout' 2>'" + workDir + "/.stderr' </dev/null";
+    const pid_t pid = fork();
+    if (pid == 0) {  // `exec`: the shell becomes sculpt, so the id is the program's own
+        execl("/bin/sh", "sh", "-c", line.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return int(pid);
+}
+
+CommandResult finishSculpt(int pid, const std::string& workDir)
+{
+    int status = 0;
+    waitpid(pid_t(pid), &status, 0);
+    return collectResult(status, workDir);
 }
 
 }  // namespace sculpt::test

@@ -12,10 +12,19 @@ struct CommandResult {
     std::string err;  ///< standard error
 };
 
+/// The path of the `sculpt` executable under test.
+const char* sculptExecutable();
+
 /// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
 CommandResult runSculpt(const std::string& args, const std::string& workDir);
 /// runSculpt killed after `seconds` and refused more than `addressSpaceMiB` of address space.
 CommandResult runSculptBounded(const std::string& args, const std::string& workDir, int seconds, int addressSpaceMiB);
+
+/// Starts `sculpt ARGS` in `workDir` without waiting (its output kept as runSculpt's); returns its
+/// process id for signals and finishSculpt.
+int startSculpt(const std::string& args, const std::string& workDir);
+/// Waits for what startSculpt started and gives its result.
+CommandResult finishSculpt(int pid, const std::string& workDir);
 
 /// Runs `COMMAND` (a shell command line, already shell-safe) in `workDir`.
 CommandResult runCommand(const std::string& command, const std::string& workDir);
