@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project builds, tests and runs with. Idempotent: only
 # missing packages are installed, so a second run returns in a moment. Needs root (or sudo).
+# python3-jsonschema: the independent validator the tests check every --json report with.
 set -euo pipefail
 
 packages=(
@@ -12,7 +13,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
-  mricron-data libcgal-demo
+  mricron-data libcgal-demo python3-jsonschema
 )
 
 # --sanitizers: also what scripts/sanitizer-tree.sh builds with (clang and its sanitizer and

@@ -10,6 +10,7 @@
 #include "core/field/grid_tiles.h"
 #include "core/field/placement_check.h"
 #include "core/io/bounded_reader.h"
+#include "core/io/content_uuid.h"
 #include "core/io/memory_stream.h"
 #include "core/io/metadata_seal.h"
 #include "core/io/vdb_layout.h"
@@ -492,6 +493,9 @@ void writeFieldImage(const FieldImage& field, const fs::path& path, const VdbCom
         openvdb::io::File file(out.temporaryPath().string());
         file.write(grids, meta);
         file.close();
+        stampContentUuid(out.temporaryPath());
+    } catch (const InputError&) {
+        throw;
     } catch (const std::exception& e) {
         throw InputError(path.string() + ": cannot write (" + e.what() + ")");
     }

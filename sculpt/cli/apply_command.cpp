@@ -1,5 +1,6 @@
 #include "core/base/atomic_file.h"
 #include "core/base/text_format.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/mesh_output.h"
@@ -10,11 +11,9 @@
 #include "sculpt/session/script_replay.h"
 
 #include <CLI/CLI.hpp>
-#include <tbb/global_control.h>
 
-#include <iostream>
 #include <memory>
-#include <optional>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -23,13 +22,11 @@ namespace {
 struct ApplyOptions {
     DocumentInput input;
     std::string script, output, mesh;
-    int threads = 0;
+    RunOptions run;
 };
 
 void runApply(const ApplyOptions& o)
 {
-    std::optional<tbb::global_control> threadLimit;
-    if (o.threads > 0) threadLimit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
     checkMeshOutput(o.mesh);
     const StrokeScript script = readStrokeScript(o.script);  // every error before any work
     AtomicFile::checkTarget(o.output);
@@ -46,12 +43,24 @@ void runApply(const ApplyOptions& o)
     writeVdbPieces(document.piecesAsFiled(), o.output, file.companions);
     std::size_t historyBytes = 0;
     for (const DocumentPiece& piece : document.pieces()) historyBytes += piece.session->history().memoryBytes();
-    std::cout << "wrote " << o.output << ": " << done.strokes << " strokes (" << done.stamps << " stamps), "
-              << done.undos << " undo, " << done.redos << " redo";
+    CommandReport report("apply", o.run);
+    report.wrote(o.output, "document");
+    report["strokes"] = done.strokes;
+    report["stamps"] = done.stamps;
+    report["undos"] = done.undos;
+    report["redos"] = done.redos;
+    report["piece_edits"] = done.pieceEdits;
+    report["pieces"] = document.pieces().size();
+    report["history_bytes"] = historyBytes;
+    std::ostringstream line;
+    line << "wrote " << o.output << ": " << done.strokes << " strokes (" << done.stamps << " stamps), " << done.undos
+         << " undo, " << done.redos << " redo";
     if (done.pieceEdits > 0)
-        std::cout << ", " << done.pieceEdits << " piece edits (" << document.pieces().size() << " pieces)";
-    std::cout << "; undo history " << formatBytes(historyBytes) << "\n";
-    writeMeshOutput(document.session().field(), o.mesh);
+        line << ", " << done.pieceEdits << " piece edits (" << document.pieces().size() << " pieces)";
+    line << "; undo history " << formatBytes(historyBytes);
+    report.say(line.str());
+    writeMeshOutput(document.session().field(), o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -69,8 +78,8 @@ void addApplyCommand(CLI::App& app)
     addMaskInput(*cmd, options->input);
     cmd->add_option("script", options->script, "the stroke script (.json)")->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
-    cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");
-    cmd->add_option("--threads", options->threads, "worker threads (default: all cores)")->check(positiveNumber());
+    addMeshOutput(*cmd, options->mesh);
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runApply(*options); });
 }
 

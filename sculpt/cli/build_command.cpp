@@ -2,6 +2,7 @@
 #include "core/base/errors.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/scene_file.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
 #include "sculpt/cli/mesh_output.h"
@@ -10,8 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -20,6 +21,7 @@ namespace {
 struct BuildOptions {
     std::string scene, base, output, mesh;
     double voxelSize = 0.0;
+    RunOptions run;
 };
 
 void runBuild(const BuildOptions& o)
@@ -31,10 +33,18 @@ void runBuild(const BuildOptions& o)
         o.base.empty() ? bakeScene(scene, o.voxelSize > 0.0 ? o.voxelSize : scene.voxelSize.value_or(0.5), o.scene)
                        : bakeScene(readFieldImage(o.base), scene, o.scene, o.base);
     writeFieldImage(result, o.output);
-    std::cout << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
-              << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()
-              << " active voxels\n";
-    writeMeshOutput(result, o.mesh);
+    CommandReport report("build", o.run);
+    report.wrote(o.output, "document");
+    report["primitives"] = scene.primitives.primitives().size();
+    report["active_voxels"] = result.grid().activeVoxelCount();
+    report["voxel_size"] = result.voxelSize();
+    std::ostringstream line;
+    line << "wrote " << o.output << ": " << scene.primitives.primitives().size() << " primitives"
+         << (o.base.empty() ? "" : " combined into " + o.base) << ", " << result.grid().activeVoxelCount()
+         << " active voxels";
+    report.say(line.str());
+    writeMeshOutput(result, o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -54,7 +64,8 @@ void addBuildCommand(CLI::App& app)
         ->check(positiveNumber());
     cmd->add_option("--into", options->base, "base .vdb document to combine the scene into");
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
-    cmd->add_option("--mesh", options->mesh, "also write the surface as .ply, .obj or .stl");
+    addMeshOutput(*cmd, options->mesh);
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runBuild(*options); });
 }
 

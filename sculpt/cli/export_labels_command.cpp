@@ -2,6 +2,7 @@
 #include "core/base/errors.h"
 #include "core/scan/kept_scan.h"
 #include "core/scan/label_map_files.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/progress_bar.h"
@@ -9,7 +10,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
 
 namespace sculpt::cli {
@@ -19,6 +19,7 @@ namespace {
 struct ExportLabelsOptions {
     DocumentInput input;
     std::string like, output;
+    RunOptions run;
 };
 
 void runExportLabels(const ExportLabelsOptions& o)
@@ -32,8 +33,16 @@ void runExportLabels(const ExportLabelsOptions& o)
         return exportLabels(document.pieces, lattice, o.output, bar.callback());
     }();
     const std::vector<std::string> lines = describeLabels(map);
-    std::cout << "wrote " << o.output << ": " << lines.front() << "\n";
-    for (std::size_t i = 1; i < lines.size(); ++i) std::cout << "  " << lines[i] << "\n";
+    CommandReport report("export-labels", o.run);
+    report.wrote(o.output, "labels");
+    const openvdb::Coord& d = map.lattice.dims;
+    report["dims"] = {d.x(), d.y(), d.z()};
+    report["labels"] = nlohmann::json::array();
+    for (const LabelSegment& segment : map.segments)
+        report["labels"].push_back({{"label", segment.label}, {"name", segment.name}, {"samples", segment.samples}});
+    report.say("wrote " + o.output + ": " + lines.front());
+    for (std::size_t i = 1; i < lines.size(); ++i) report.say("  " + lines[i]);
+    report.print();
 }
 
 }  // namespace
@@ -54,6 +63,7 @@ void addExportLabelsCommand(CLI::App& app)
                     "the scan whose lattice the labels take (any scan `import` reads, or a document\n"
                     "keeping one); default: the scan the document keeps");
     cmd->add_option("-o,--output", o->output, "the label map to write (.nii, .nii.gz, .nrrd, .seg.nrrd)")->required();
+    addRunOptions(*cmd, o->run);
     cmd->callback([o] { runExportLabels(*o); });
 }
 

@@ -1,14 +1,16 @@
 #include "core/mesh/field_measures.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/session/model_filter.h"
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <map>
 #include <memory>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -18,6 +20,8 @@ struct HollowCommandOptions {
     DocumentInput input;
     std::string output, side = "inside", up = "z";
     ModelFilter filter{ModelFilter::Kind::Hollow};
+    std::string mesh;
+    RunOptions run;
 };
 
 const std::map<std::string, openvdb::Vec3d> kDirections{{"x", {1, 0, 0}},   {"y", {0, 1, 0}},   {"z", {0, 0, 1}},
@@ -27,15 +31,29 @@ void runHollow(HollowCommandOptions o)
 {
     o.filter.hollow.side = shellSideFromName(o.side);
     o.filter.up = kDirections.at(o.up);
+    checkMeshOutput(o.mesh);
     double before = 0.0;
     const FieldImage field = editDocument(o.input, o.output, "hollowing", [&](FieldImage& f, const Progress& p) {
         before = measureField(f).volume;
         f = applyFilter(std::move(f), o.filter, o.input.path, p);
     });
     const FieldMeasures after = measureField(field);
-    std::cout << "wrote " << o.output << ": a shell of " << o.filter.hollow.thicknessWorld << " " << field.units()
-              << " (" << o.side << "), volume " << before << " -> " << after.volume << " " << field.units() << "^3, "
-              << after.components << (after.components == 1 ? " surface" : " surfaces") << "\n";
+    CommandReport report("hollow", o.run);
+    report.wrote(o.output, "document");
+    report["thickness"] = o.filter.hollow.thicknessWorld;
+    report["side"] = o.side;
+    report["drain"] = o.filter.drain;
+    report["units"] = field.units();
+    report["volume_before"] = before;
+    report["volume_after"] = after.volume;
+    report["components"] = after.components;
+    std::ostringstream line;
+    line << "wrote " << o.output << ": a shell of " << o.filter.hollow.thicknessWorld << " " << field.units() << " ("
+         << o.side << "), volume " << before << " -> " << after.volume << " " << field.units() << "^3, "
+         << after.components << (after.components == 1 ? " surface" : " surfaces");
+    report.say(line.str());
+    writeMeshOutput(field, o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -70,6 +88,8 @@ void addHollowCommand(CLI::App& app)
         ->check(CLI::IsMember({"x", "y", "z", "-x", "-y", "-z"}))
         ->capture_default_str();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    addMeshOutput(*cmd, options->mesh);
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runHollow(*options); });
 }
 

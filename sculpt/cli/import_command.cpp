@@ -3,6 +3,7 @@
 #include "core/base/warning_summary.h"
 #include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
@@ -34,6 +35,7 @@ struct ImportCommandOptions {
     CLI::Option* voxelOption = nullptr;
     CLI::Option* antiAliasOption = nullptr;
     CLI::Option* labelOption = nullptr;
+    RunOptions run;
 };
 
 ImportOptions toImportOptions(const ImportCommandOptions& o)
@@ -88,15 +90,28 @@ void runLabelsImport(const ImportCommandOptions& o)
     }();
     printWarnings(report.warnings, o.verbose);
     writeVdbPieces(pieces, o.output, keptScanOf(report));
-    std::cout << "imported " << o.input << " (a label map): " << pieces.size() << " pieces, voxel size "
-              << report.voxelSize << (report.maskAntiAliased ? ", anti-aliased" : "") << "\nwrote " << o.output
-              << ":\n";
+    CommandReport out("import", o.run);
+    out.wrote(o.output, "document");
+    out["kind"] = "labels";
+    out["voxel_size"] = report.voxelSize;
+    out["anti_aliased"] = report.maskAntiAliased;
+    out["pieces"] = nlohmann::json::array();
+    std::ostringstream head;
+    head << "imported " << o.input << " (a label map): " << pieces.size() << " pieces, voxel size " << report.voxelSize
+         << (report.maskAntiAliased ? ", anti-aliased" : "");
+    out.say(head.str());
+    out.say("wrote " + o.output + ":");
     for (const Piece& piece : pieces) {
         const FieldMeasures m = measureField(piece.field);
-        std::cout << "  '" << piece.name << "': volume " << m.volume << ", area " << m.area << ", " << m.components
-                  << " components\n";
+        out["pieces"].push_back(
+            {{"name", piece.name}, {"volume", m.volume}, {"area", m.area}, {"components", m.components}});
+        std::ostringstream line;
+        line << "  '" << piece.name << "': volume " << m.volume << ", area " << m.area << ", " << m.components
+             << " components";
+        out.say(line.str());
     }
-    if (!o.mesh.empty()) writePiecesMeshes(pieces, o.mesh);
+    writePiecesMeshes(pieces, o.mesh, out);
+    out.print();
 }
 
 void runImport(const ImportCommandOptions& o)
@@ -112,24 +127,37 @@ void runImport(const ImportCommandOptions& o)
     printWarnings(report.warnings, o.verbose);
     writeFieldImage(field, o.output, keptScanOf(report));
     const FieldMeasures m = measureField(field);
-    std::cout << "imported " << o.input << " (" << report.kind << ")";
-    if (o.labelOption->count()) std::cout << " label " << o.label;
-    else if (report.kind == "scan") std::cout << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
-    std::cout << ", voxel size " << report.voxelSize
-              << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
+    CommandReport out("import", o.run);
+    out.wrote(o.output, "document");
+    out["kind"] = report.kind;
+    out["iso"] = report.kind == "scan" && !o.labelOption->count() ? nlohmann::json(report.iso) : nlohmann::json();
+    out["iso_chosen"] = report.isoChosen;
+    out["voxel_size"] = report.voxelSize;
+    out["anti_aliased"] = report.maskAntiAliased;
+    out["volume"] = m.volume;
+    out["area"] = m.area;
+    out["components"] = m.components;
+    std::ostringstream head;
+    head << "imported " << o.input << " (" << report.kind << ")";
+    if (o.labelOption->count()) head << " label " << o.label;
+    else if (report.kind == "scan") head << " at iso-value " << report.iso << (report.isoChosen ? " (Otsu)" : "");
+    head << ", voxel size " << report.voxelSize << (report.antiAliased ? " (samples low-pass filtered for it)" : "");
     if (o.largest) {
-        std::cout << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
-                  << " cavities filled";
+        head << ", " << report.pieces.islandsDropped << " islands dropped, " << report.pieces.cavitiesFilled
+             << " cavities filled";
     }
+    out.say(head.str());
     if (report.maskAntiAliased) {
-        std::cout << "\n"
-                  << (report.twoValued ? "the samples take two values only (a mask): its voxel terraces were "
-                                         "anti-aliased (--no-antialias keeps them)"
-                                       : "the surface's voxel terraces were anti-aliased");
+        out.say(report.twoValued ? "the samples take two values only (a mask): its voxel terraces were "
+                                   "anti-aliased (--no-antialias keeps them)"
+                                 : "the surface's voxel terraces were anti-aliased");
     }
-    std::cout << "\nwrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
-              << " components\n";
-    writeMeshOutput(field, o.mesh);
+    std::ostringstream wrote;
+    wrote << "wrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
+          << " components";
+    out.say(wrote.str());
+    writeMeshOutput(field, o.mesh, out);
+    out.print();
 }
 
 }  // namespace
@@ -193,7 +221,8 @@ void addImportCommand(CLI::App& app)
                   "do not keep the scan's samples in the document (kept by default, so the window shows\n"
                   "its slices and `sculpt import DOC.vdb --iso V` imports it again at another iso-value)");
     cmd->add_option("-o,--output", o->output, "the .vdb document to write")->required();
-    cmd->add_option("--mesh", o->mesh, "also write the surface as .ply, .obj or .stl");
+    addMeshOutput(*cmd, o->mesh);
+    addRunOptions(*cmd, o->run);
     cmd->callback([o] { runImport(*o); });
 }
 

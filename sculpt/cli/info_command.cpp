@@ -7,6 +7,7 @@
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/number_checks.h"
+#include "sculpt/cli/run_options.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -23,7 +24,7 @@ namespace {
 
 struct InfoOptions {
     DocumentInput input;
-    bool json = false;
+    RunOptions run;
     double thickness = 0.0;  ///< > 0: look for walls thinner than this
 };
 
@@ -184,8 +185,11 @@ void runInfo(const InfoOptions& o)
     for (const Piece& piece : pieces) measures.push_back(measureField(piece.field));
     const FieldMeasures all = total(measures);
     const std::string& units = pieces.front().field.units();
-    if (o.json) {
+    if (o.run.quiet) return;
+    if (o.run.json) {
         nlohmann::json report = toJson(all, units);
+        report["command"] = "info";
+        report["outputs"] = nlohmann::json::array();
         report["frame"] = FieldImage::kFrame;
         report["frame_recorded"] = !layout.frame.empty();
         report["grid"] = pieces.front().field.grid().getName();
@@ -238,8 +242,8 @@ void addInfoCommand(CLI::App& app)
                                    "A document of several pieces is measured per piece and in total.");
     cmd->footer("Examples:\n  sculpt info head.vdb\n  sculpt info head.vdb --json");
     addDocumentInput(*cmd, options->input, "the .vdb document to measure");
-    cmd->add_flag("--json", options->json,
-                  "print one JSON object with the keys voxel_size, active_voxels, memory_bytes,\n"
+    addRunOptions(*cmd, options->run,
+                  "here the keys voxel_size, active_voxels, memory_bytes,\n"
                   "bbox_min, bbox_max, volume, area, euler_characteristic, components\n"
                   "(plus units, frame: LPS, x to the patient's left, y to the back, z up, and\n"
                   "frame_recorded: false for a file that records none, read as LPS;\n"

@@ -1,13 +1,15 @@
 #include "core/solids/islands.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/edit_document.h"
+#include "sculpt/cli/mesh_output.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/session/model_filter.h"
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -17,10 +19,13 @@ struct IslandsOptions {
     DocumentInput input;
     std::string output;
     double removeUnder = 0.0;
+    std::string mesh;
+    RunOptions run;
 };
 
 void runIslands(const IslandsOptions& o)
 {
+    checkMeshOutput(o.mesh);
     std::size_t removed = 0, found = 0;
     const FieldImage field = editDocument(o.input, o.output, "removing islands", [&](FieldImage& f, const Progress& p) {
         found = findIslands(f).size();
@@ -29,8 +34,18 @@ void runIslands(const IslandsOptions& o)
         f = applyFilter(std::move(f), filter, o.input.path, p);
         removed = found - findIslands(f).size();
     });
-    std::cout << "wrote " << o.output << ": " << removed << " of " << found << " islands were under " << o.removeUnder
-              << " " << field.units() << "^3 and removed\n";
+    CommandReport report("islands", o.run);
+    report.wrote(o.output, "document");
+    report["islands_found"] = found;
+    report["islands_removed"] = removed;
+    report["remove_under"] = o.removeUnder;
+    report["units"] = field.units();
+    std::ostringstream line;
+    line << "wrote " << o.output << ": " << removed << " of " << found << " islands were under " << o.removeUnder << " "
+         << field.units() << "^3 and removed";
+    report.say(line.str());
+    writeMeshOutput(field, o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -48,6 +63,8 @@ void addIslandsCommand(CLI::App& app)
         ->check(positiveNumber())
         ->required();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    addMeshOutput(*cmd, options->mesh);
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runIslands(*options); });
 }
 

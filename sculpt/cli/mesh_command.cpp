@@ -1,3 +1,4 @@
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/mesh_output.h"
@@ -14,12 +15,16 @@ struct MeshOptions {
     DocumentInput input;
     std::string output;
     bool ras = false;
+    RunOptions run;
 };
 
 void runMesh(const MeshOptions& o)
 {
     checkMeshOutput(o.output);
-    writePiecesMeshes(readPieces(o.input).pieces, o.output, o.ras ? MeshFrame::Ras : MeshFrame::Lps);
+    CommandReport report("mesh", o.run);
+    report["frame"] = o.ras ? "RAS" : "LPS";
+    writePiecesMeshes(readPieces(o.input).pieces, o.output, report, o.ras ? MeshFrame::Ras : MeshFrame::Lps);
+    report.print();
 }
 
 }  // namespace
@@ -41,6 +46,7 @@ void addMeshCommand(CLI::App& app)
                   "write RAS coordinates (x to the patient's right, y to the front: FreeSurfer, nibabel)\n"
                   "instead of the document's LPS (x to the left, y to the back: DICOM, ITK, Slicer);\n"
                   "the header names the frame either way (SPACE=LPS or SPACE=RAS, as Slicer reads it)");
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runMesh(*options); });
 }
 

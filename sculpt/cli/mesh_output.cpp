@@ -5,9 +5,31 @@
 #include "core/mesh/incremental_mesher.h"
 #include "sculpt/session/piece_meshes.h"
 
-#include <iostream>
+#include <CLI/CLI.hpp>
 
 namespace sculpt::cli {
+
+namespace {
+
+void reportMeshes(const std::vector<WrittenMesh>& written, CommandReport& report)
+{
+    for (const WrittenMesh& mesh : written) {
+        report.say(mesh.line());
+        report.wrote(mesh.file.string(), "mesh");
+        nlohmann::json& entry = report.lastOutput();
+        if (!mesh.piece.empty()) entry["piece"] = mesh.piece;
+        entry["vertices"] = mesh.vertices;
+        entry["triangles"] = mesh.triangles;
+    }
+}
+
+}  // namespace
+
+void addMeshOutput(CLI::App& cmd, std::string& path)
+{
+    cmd.add_option("--mesh", path,
+                   "also write the surface as .ply, .obj or .stl (several pieces: a file per piece, or one OBJ)");
+}
 
 void checkMeshOutput(const std::string& path)
 {
@@ -16,21 +38,21 @@ void checkMeshOutput(const std::string& path)
     AtomicFile::checkTarget(path);
 }
 
-void writeMeshOutput(const FieldImage& field, const std::string& path)
+void writeMeshOutput(const FieldImage& field, const std::string& path, CommandReport& report)
 {
     if (path.empty()) return;
-    const TriangleMesh mesh = meshLevelSet(field);
-    writeMesh(mesh, path);
-    std::cout << "wrote " << path << ": " << mesh.triangles.size() << " triangles\n";
+    reportMeshes(writePieceMeshes({{"", meshLevelSet(field)}}, path), report);
 }
 
-void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path, MeshFrame frame)
+void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path, CommandReport& report,
+                       MeshFrame frame)
 {
+    if (path.empty()) return;
     checkMeshOutput(path);
     std::vector<PieceMesh> meshes;
     for (const Piece& piece : pieces)
         meshes.push_back({piece.name, placedMesh(meshLevelSet(piece.field), piece.placement)});
-    for (const std::string& line : writePieceMeshes(meshes, path, frame)) std::cout << line << "\n";
+    reportMeshes(writePieceMeshes(meshes, path, frame), report);
 }
 
 }  // namespace sculpt::cli

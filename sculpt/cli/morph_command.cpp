@@ -5,6 +5,7 @@
 #include "core/io/vdb_file.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/motion/morph_verdict.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/progress_bar.h"
@@ -32,6 +33,7 @@ namespace {
 struct MorphCommandOptions {
     std::string source, target, directory, mesh, tracked;
     MorphOptions morph;
+    RunOptions run;
 };
 
 /// The verdict with the option that does what it suggests.
@@ -47,15 +49,17 @@ std::string verdict(const MorphSummary& s, double voxelSize)
 /// no kept state, so its frames take longer).
 using MorphStepWatch = std::function<void(const FieldImage&)>;
 
-void printTracking(const MorphTracking& tracking, const std::string& directory)
+void reportTracking(const MorphTracking& tracking, const std::string& directory, CommandReport& report)
 {
     const TrackedSequence& sequence = tracking.sequence();
     const TrackingTally& t = tracking.tally();
-    std::printf(
+    report.wrote(directory, "tracked");
+    report["tracked_segments"] = sequence.segments().size();
+    report.sayFormatted(
         "tracked mesh: %zu segments of constant connectivity in %s (segment_0000.ply/.pc2/.glb/.usda ...); over %zu "
         "steps %zu splits, %zu collapses, %zu inverted triangles unfolded, %zu quasi-critical points; topology "
         "events: %zu cut and closed, %zu seeded again, %zu shells vanished under the resolution; seeded again "
-        "after folding over %g%% of its triangles: %zu\n",
+        "after folding over %g%% of its triangles: %zu",
         sequence.segments().size(), directory.c_str(), t.steps, t.splits, t.collapses, t.inverted, t.quasiCritical,
         t.surgeries, t.reseeds - t.folds, t.vanished, 100.0 * MeshTracker::kLostFoldedShare, t.folds);
     for (std::size_t s = 0; s < sequence.segments().size(); ++s) {
@@ -69,10 +73,11 @@ void printTracking(const MorphTracking& tracking, const std::string& directory)
                 longest = std::max(longest, frame.quality.longestEdge / tracking.edgeLength());
                 flagged += frame.flagged;
             }
-        std::printf("  segment %04zu: frames %d to %zu, %zu vertices, %zu triangles; smallest angle %.1f degrees, "
-                    "edges %.2f e to %.2f e, %zu points flagged\n",
-                    s, segment.firstFrame, segment.firstFrame + segment.positions.size() - 1, segment.ids.size(),
-                    segment.triangles.size(), angle, shortest, longest, flagged);
+        report.sayFormatted(
+            "  segment %04zu: frames %d to %zu, %zu vertices, %zu triangles; smallest angle %.1f degrees, "
+            "edges %.2f e to %.2f e, %zu points flagged",
+            s, segment.firstFrame, segment.firstFrame + segment.positions.size() - 1, segment.ids.size(),
+            segment.triangles.size(), angle, shortest, longest, flagged);
     }
 }
 
@@ -113,27 +118,42 @@ void runMorph(const MorphCommandOptions& o)
             bar.callback(),
             o.tracked.empty() ? MorphStepWatch() : [&](const FieldImage& field) { tracking.step(field); });
     }
+    CommandReport report("morph", o.run);
     if (!o.tracked.empty()) {
         writeTrackedSequence(tracking.sequence(), o.tracked);
-        printTracking(tracking, o.tracked);
+        reportTracking(tracking, o.tracked, report);
     }
     outputs.keep();
-    std::printf("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)\n", o.morph.frames, o.directory.c_str(),
-                o.morph.frames - 1, o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
+    report.wrote(o.directory, "frames");
+    report["frames"] = o.morph.frames;
+    report["translation"] = {summary.translation.x(), summary.translation.y(), summary.translation.z()};
+    report["steps"] = summary.steps;
+    report["morph_time"] = summary.duration;
+    report["final_distance"] = summary.finalDistanceWorld;
+    report["worst_distance"] = summary.worstDistanceWorld;
+    report["resolved_fraction"] = summary.resolvedFraction;
+    report["verdict"] = verdict(summary, target.voxelSize());
+    report["units"] = target.units();
+    report["frame_volumes"] = summary.frameVolumes;
+    report.sayFormatted("wrote %d frames to %s (frame_0000.vdb ... frame_%04d.vdb%s)", o.morph.frames,
+                        o.directory.c_str(), o.morph.frames - 1,
+                        o.mesh.empty() ? "" : (" and ." + o.mesh + " meshes").c_str());
     if (summary.translation != openvdb::Vec3d(0.0)) {
-        std::printf("aligned: source moved by (%g, %g, %g)\n", summary.translation.x(), summary.translation.y(),
-                    summary.translation.z());
+        report.sayFormatted("aligned: source moved by (%g, %g, %g)", summary.translation.x(), summary.translation.y(),
+                            summary.translation.z());
     }
-    std::printf("steps: %d, morph time: %g, final distance to target: %g %s (%s)\n", summary.steps, summary.duration,
-                summary.finalDistanceWorld, target.units().c_str(), verdict(summary, target.voxelSize()).c_str());
+    report.sayFormatted("steps: %d, morph time: %g, final distance to target: %g %s (%s)", summary.steps,
+                        summary.duration, summary.finalDistanceWorld, target.units().c_str(),
+                        verdict(summary, target.voxelSize()).c_str());
     if (summary.resolvedFraction < 1.0) {
-        std::printf("  measured where the target is at least 2.4 voxels thick (%.1f%% of the surface); at its thinner "
-                    "parts and sharp edges: %g %s\n",
-                    100.0 * summary.resolvedFraction, summary.worstDistanceWorld, target.units().c_str());
+        report.sayFormatted(
+            "  measured where the target is at least 2.4 voxels thick (%.1f%% of the surface); at its thinner "
+            "parts and sharp edges: %g %s",
+            100.0 * summary.resolvedFraction, summary.worstDistanceWorld, target.units().c_str());
     }
-    for (size_t i = 0; i < summary.frameVolumes.size(); ++i) {
-        std::printf("frame %04zu volume %g %s^3\n", i, summary.frameVolumes[i], target.units().c_str());
-    }
+    for (size_t i = 0; i < summary.frameVolumes.size(); ++i)
+        report.sayFormatted("frame %04zu volume %g %s^3", i, summary.frameVolumes[i], target.units().c_str());
+    report.print();
 }
 
 }  // namespace
@@ -179,6 +199,7 @@ void addMorphCommand(CLI::App& app)
     cmd->add_option("--max-steps", options->morph.maxSteps, "give up after this many steps")
         ->check(positiveNumber())
         ->capture_default_str();
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runMorph(*options); });
 }
 

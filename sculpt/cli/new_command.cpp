@@ -3,12 +3,14 @@
 #include "core/field/document_text.h"
 #include "core/io/vdb_file.h"
 #include "core/primitives/analytic_shapes.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
 
 #include <CLI/CLI.hpp>
 
-#include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -20,7 +22,8 @@ struct NewOptions {
     double minorRadius = 0.0;  // 0: radius / 3
     double voxelSize = 0.5;
     std::string units = FieldImage::kDefaultUnits;
-    std::string output;
+    std::string output, mesh;
+    RunOptions run;
 };
 
 AnalyticSdf shapeSdf(const NewOptions& o)
@@ -35,14 +38,25 @@ AnalyticSdf shapeSdf(const NewOptions& o)
 void runNew(const NewOptions& o)
 {
     AtomicFile::checkTarget(o.output);
+    checkMeshOutput(o.mesh);
     if (const std::string problem = unitsProblem(o.units); !problem.empty())
         throw InputError("--units: the length unit cannot be: " + problem);
     const AnalyticSdf shape = shapeSdf(o);
     FieldImage field = rasterizeSdf(shape, o.voxelSize);
     field.setUnits(o.units);
     writeFieldImage(field, o.output);
-    std::cout << "wrote " << o.output << ": " << shape.description << " " << o.units << ", voxel size " << o.voxelSize
-              << " " << o.units << ", " << field.grid().activeVoxelCount() << " active voxels\n";
+    CommandReport report("new", o.run);
+    report.wrote(o.output, "document");
+    report["shape"] = o.shape;
+    report["voxel_size"] = o.voxelSize;
+    report["units"] = o.units;
+    report["active_voxels"] = field.grid().activeVoxelCount();
+    std::ostringstream line;
+    line << "wrote " << o.output << ": " << shape.description << " " << o.units << ", voxel size " << o.voxelSize << " "
+         << o.units << ", " << field.grid().activeVoxelCount() << " active voxels";
+    report.say(line.str());
+    writeMeshOutput(field, o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -65,6 +79,8 @@ void addNewCommand(CLI::App& app)
         ->capture_default_str();
     cmd->add_option("--units", options->units, "length unit recorded in the document")->capture_default_str();
     cmd->add_option("-o,--output", options->output, "the .vdb document to write")->required();
+    addMeshOutput(*cmd, options->mesh);
+    addRunOptions(*cmd, options->run);
     cmd->callback([options] { runNew(*options); });
 }
 

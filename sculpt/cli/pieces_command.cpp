@@ -4,13 +4,16 @@
 #include "core/io/vdb_file.h"
 #include "core/mesh/field_measures.h"
 #include "core/pieces/piece_edits.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/mesh_output.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 namespace sculpt::cli {
 
@@ -19,6 +22,8 @@ namespace {
 struct PiecesOptions {
     std::string input, output;
     std::vector<std::string> add, rename, colour, hide, show, merge, split, remove;
+    std::string mesh;
+    RunOptions run;
 };
 
 /// "a" or "a 2", "a 3", ...: the first of them no piece has.
@@ -123,6 +128,7 @@ void reshape(PieceList& list, const PiecesOptions& o)
 void runPieces(const PiecesOptions& o)
 {
     AtomicFile::checkTarget(o.output);
+    checkMeshOutput(o.mesh);
     VdbPieces document = readVdbPieces(o.input);
     for (const std::string& warning : document.warnings) std::cerr << "sculpt: warning: " << warning << "\n";
     PieceList list(std::move(document.pieces), o.input);
@@ -133,12 +139,21 @@ void runPieces(const PiecesOptions& o)
     for (const std::string& name : o.remove) list.pieces().erase(list.find(name));
     if (list.pieces().empty()) throw InputError(o.input + ": deleting every piece would leave nothing to save");
     writeVdbPieces(list.pieces(), o.output, document.companions);
-    std::cout << "wrote " << o.output << ": " << list.pieces().size() << " pieces\n";
+    CommandReport report("pieces", o.run);
+    report.wrote(o.output, "document");
+    report.say("wrote " + o.output + ": " + std::to_string(list.pieces().size()) + " pieces");
+    report["pieces"] = nlohmann::json::array();
     for (const Piece& piece : list.pieces()) {
         const FieldMeasures m = measureField(piece.field);
-        std::cout << "  '" << piece.name << "': volume " << m.volume << ", " << m.components << " components"
-                  << (piece.visible ? "" : ", hidden") << "\n";
+        report["pieces"].push_back(
+            {{"name", piece.name}, {"volume", m.volume}, {"components", m.components}, {"visible", piece.visible}});
+        std::ostringstream line;
+        line << "  '" << piece.name << "': volume " << m.volume << ", " << m.components << " components"
+             << (piece.visible ? "" : ", hidden");
+        report.say(line.str());
     }
+    writePiecesMeshes(list.pieces(), o.mesh, report);
+    report.print();
 }
 
 }  // namespace
@@ -161,6 +176,8 @@ void addPiecesCommand(CLI::App& app)
     cmd->add_option("--split", o->split, "a piece to split into one piece per solid ('NAME 1', 'NAME 2', ...)");
     cmd->add_option("--delete", o->remove, "a piece to delete");
     cmd->add_option("-o,--output", o->output, "the .vdb document to write")->required();
+    addMeshOutput(*cmd, o->mesh);
+    addRunOptions(*cmd, o->run);
     cmd->callback([o] { runPieces(*o); });
 }
 

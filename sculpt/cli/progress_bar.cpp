@@ -7,7 +7,12 @@
 
 namespace sculpt::cli {
 
-ProgressBar::ProgressBar(std::string label) : mLabel(std::move(label)), mEnabled(isatty(STDERR_FILENO) != 0) {}
+bool ProgressBar::sHidden = false;
+
+ProgressBar::ProgressBar(std::string label) : mLabel(std::move(label)), mEnabled(!sHidden && isatty(STDERR_FILENO) != 0)
+{}
+
+void ProgressBar::hideAll() { sHidden = true; }
 
 ProgressBar::~ProgressBar()
 {

@@ -18,10 +18,13 @@ public:
 
     /// The callback to hand to a core operation; never cancels.
     Progress callback();
+    /// No bar from now on, even on a terminal (--quiet).
+    static void hideAll();
 
 private:
     void draw(double fraction);
 
+    static bool sHidden;
     std::string mLabel;
     bool mEnabled;
     int mShownPercent = -1;

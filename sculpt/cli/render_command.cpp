@@ -3,6 +3,7 @@
 #include "core/base/written_outputs.h"
 #include "core/io/image_file.h"
 #include "core/render/ray_tracer.h"
+#include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/progress_bar.h"
@@ -31,7 +32,26 @@ struct RenderCommandOptions {
     std::string background = "0.16,0.16,0.18";
     int turntable = 0;
     std::string format = "png";
+    std::string frames;  ///< "A-B": the part of a sequence to render
+    RunOptions run;
 };
+
+/// The frames `--frames A-B` names (first and last included, counted from 0) of a sequence of
+/// `count`; all of them without the option.
+std::pair<std::size_t, std::size_t> frameRange(const std::string& text, std::size_t count)
+{
+    if (text.empty()) return {0, count - 1};
+    std::istringstream in(text);
+    long first = -1, last = -1;
+    char dash = 0;
+    if (!(in >> first >> dash >> last) || dash != '-' || !in.eof() || first < 0 || last < first)
+        throw InputError("--frames: expected A-B, the first and last frame counted from 0 (got '" + text + "')");
+    if (std::size_t(last) >= count) {
+        throw InputError("--frames " + text + ": the sequence has " + std::to_string(count) + " frames (0-" +
+                         std::to_string(count - 1) + ")");
+    }
+    return {std::size_t(first), std::size_t(last)};
+}
 
 Vec3d vec3(const std::vector<double>& v) { return Vec3d(v[0], v[1], v[2]); }
 
@@ -85,6 +105,12 @@ void runRender(RenderCommandOptions o)
     if (sequence && o.turntable > 0) {
         throw InputError(o.input.path + ": --turntable turns one document, not a directory of frames");
     }
+    if (!sequence && !o.frames.empty()) {
+        throw InputError(o.input.path + ": --frames picks frames of a directory of .vdb frames, not of one document");
+    }
+    CommandReport report("render", o.run);
+    report["width"] = o.render.width;
+    report["height"] = o.render.height;
     WrittenOutputs outputs;  // a sequence that fails leaves no frames behind
     if (sequence || o.turntable > 0) {
         imageFormatOf("frame." + o.format);
@@ -95,22 +121,31 @@ void runRender(RenderCommandOptions o)
     }
     if (sequence) {
         // One camera for every frame: it frames the union of the frames' bounds.
+        // The camera frames the whole sequence even for a part of it, so parts rendered apart
+        // (in parallel jobs) join up; frames keep their numbers.
         const std::vector<fs::path> frames = documentsIn(o.input.path);
+        const auto [first, last] = frameRange(o.frames, frames.size());
         // Frames are read twice (here and to render) so that only one is in memory at a time.
         SurfaceExtent extent;
         for (const fs::path& frame : frames) extent.add(readFieldImage(frame, o.input.grid));
         const Camera camera = chooseCamera(o, extent);
-        ProgressBar bar("rendering " + std::to_string(frames.size()) + " frames");
+        const std::size_t count = last - first + 1;
+        ProgressBar bar("rendering " + std::to_string(count) + " frames");
         const Progress progress = bar.callback();
-        for (std::size_t i = 0; i < frames.size(); ++i) {
+        for (std::size_t i = first; i <= last; ++i) {
             renderOne(readFieldImage(frames[i], o.input.grid), camera, o.render,
-                      outputs.file(framePath(o.output, int(i), o.format)), progress, double(i) / frames.size(),
-                      double(i + 1) / frames.size());
-            if (i == 0) outputs.requireRoomFor(frames.size() - 1, 1.0, "the other frames' images");
+                      outputs.file(framePath(o.output, int(i), o.format)), progress, double(i - first) / count,
+                      double(i - first + 1) / count);
+            if (i == first) outputs.requireRoomFor(count - 1, 1.0, "the other frames' images");
         }
         outputs.keep();
-        std::cout << "wrote " << frames.size() << " frames to " << o.output << " (frame_0000." << o.format
-                  << " ...), one camera for all\n";
+        report.wrote(o.output, "frames");
+        report["frames"] = {first, last};
+        report["camera"] = {camera.position.x(), camera.position.y(), camera.position.z()};
+        report.say("wrote " + std::to_string(count) + " frames to " + o.output + " (" +
+                   framePath("", int(first), o.format).string() + " ... " +
+                   framePath("", int(last), o.format).string() + "), one camera for the whole sequence");
+        report.print();
         return;
     }
     const FieldImage field = readDocument(o.input).field;
@@ -125,13 +160,22 @@ void runRender(RenderCommandOptions o)
             if (i == 0) outputs.requireRoomFor(o.turntable - 1, 1.0, "the other turntable images");
         }
         outputs.keep();
-        std::cout << "wrote " << o.turntable << " turntable frames to " << o.output << " (frame_0000." << o.format
-                  << " ...)\n";
+        report.wrote(o.output, "frames");
+        report["frames"] = {0, o.turntable - 1};
+        report["camera"] = {camera.position.x(), camera.position.y(), camera.position.z()};
+        report.say("wrote " + std::to_string(o.turntable) + " turntable frames to " + o.output + " (frame_0000." +
+                   o.format + " ...)");
+        report.print();
         return;
     }
     renderOne(field, camera, o.render, o.output, progress, 0.0, 1.0);
-    std::cout << "wrote " << o.output << ": " << o.render.width << " x " << o.render.height << ", camera at ("
-              << camera.position.x() << ", " << camera.position.y() << ", " << camera.position.z() << ")\n";
+    report.wrote(o.output, "image");
+    report["camera"] = {camera.position.x(), camera.position.y(), camera.position.z()};
+    std::ostringstream line;
+    line << "wrote " << o.output << ": " << o.render.width << " x " << o.render.height << ", camera at ("
+         << camera.position.x() << ", " << camera.position.y() << ", " << camera.position.z() << ")";
+    report.say(line.str());
+    report.print();
 }
 
 }  // namespace
@@ -173,6 +217,10 @@ void addRenderCommand(CLI::App& app)
     cmd->add_option("--format", o->format, "image format of frames written into a directory")
         ->check(CLI::IsMember({"png", "exr"}))
         ->capture_default_str();
+    cmd->add_option("--frames", o->frames,
+                    "A-B: render only frames A to B of a directory of frames (counted from 0), framed as the\n"
+                    "whole sequence and numbered as in it, so parts rendered by parallel jobs join up");
+    addRunOptions(*cmd, o->run);
     cmd->callback([o] { runRender(*o); });
 }
 

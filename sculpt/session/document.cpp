@@ -139,7 +139,7 @@ std::vector<PieceMesh> Document::meshesToExport(const std::filesystem::path& pat
 
 std::vector<std::string> Document::exportMesh(const std::filesystem::path& path) const
 {
-    return writePieceMeshes(meshesToExport(path), path);
+    return linesOf(writePieceMeshes(meshesToExport(path), path));
 }
 
 void Document::saveStrokes(const std::filesystem::path& path) const

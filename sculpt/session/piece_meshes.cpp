@@ -20,13 +20,21 @@ std::string fileSafe(const std::string& name)
     return safe;
 }
 
-std::string wrote(const std::string& path, const std::string& what, const TriangleMesh& mesh)
+}  // namespace
+
+std::vector<std::string> linesOf(const std::vector<WrittenMesh>& written)
 {
-    return "wrote " + path + what + ": " + std::to_string(mesh.positions.size()) + " vertices, " +
-           std::to_string(mesh.triangles.size()) + " triangles";
+    std::vector<std::string> lines;
+    for (const WrittenMesh& mesh : written) lines.push_back(mesh.line());
+    return lines;
 }
 
-}  // namespace
+std::string WrittenMesh::line() const
+{
+    const std::string what = piece.empty() ? "" : objObject ? " object '" + piece + "'" : " (piece '" + piece + "')";
+    return "wrote " + file.string() + what + ": " + std::to_string(vertices) + " vertices, " +
+           std::to_string(triangles) + " triangles";
+}
 
 TriangleMesh placedMesh(TriangleMesh mesh, const openvdb::Mat4d& placement)
 {
@@ -42,19 +50,19 @@ TriangleMesh placedMesh(TriangleMesh mesh, const openvdb::Mat4d& placement)
     return mesh;
 }
 
-std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path,
+std::vector<WrittenMesh> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path,
                                           MeshFrame frame)
 {
     meshFormatOf(path);
     AtomicFile::checkTarget(path);
-    std::vector<std::string> lines;
+    std::vector<WrittenMesh> written;
     if (pieces.size() > 1 && meshFormatOf(path) == MeshFormat::Obj) {
         std::vector<ObjObject> objects;
         for (const PieceMesh& piece : pieces) objects.push_back({piece.name, &piece.mesh});
         writeObjObjects(objects, path, frame);
         for (const PieceMesh& piece : pieces)
-            lines.push_back(wrote(path.string(), " object '" + piece.name + "'", piece.mesh));
-        return lines;
+            written.push_back({path, piece.name, piece.mesh.positions.size(), piece.mesh.triangles.size(), true});
+        return written;
     }
     std::vector<std::filesystem::path> files;
     for (const PieceMesh& piece : pieces) {
@@ -66,11 +74,11 @@ std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, 
     WrittenOutputs outputs;  // every piece's file, or (a write failing) none
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         writeMesh(pieces[i].mesh, outputs.file(files[i]), frame);
-        lines.push_back(
-            wrote(files[i].string(), pieces.size() > 1 ? " (piece '" + pieces[i].name + "')" : "", pieces[i].mesh));
+        written.push_back({files[i], pieces.size() > 1 ? pieces[i].name : "", pieces[i].mesh.positions.size(),
+                           pieces[i].mesh.triangles.size(), false});
     }
     outputs.keep();
-    return lines;
+    return written;
 }
 
 }  // namespace sculpt

@@ -24,11 +24,24 @@ struct PieceMesh {
 /// `mesh` (in its piece's own world) where `placement` puts it: positions moved, normals turned.
 TriangleMesh placedMesh(TriangleMesh mesh, const openvdb::Mat4d& placement);
 
+/// A piece's mesh as written: the file (shared by every piece of an OBJ) and its size.
+struct WrittenMesh {
+    std::filesystem::path file;
+    std::string piece;  ///< empty for a document's only piece
+    std::size_t vertices = 0, triangles = 0;
+    bool objObject = false;  ///< one object of a multi-object OBJ file
+
+    /// A line for the user ("wrote a.ply (piece 'eye'): 10 vertices, 16 triangles").
+    std::string line() const;
+};
+/// A line per mesh written.
+std::vector<std::string> linesOf(const std::vector<WrittenMesh>& written);
+
 /// Writes the pieces' meshes as above, every target checked before any is written, in `frame`
 /// (documents are LPS; RAS negates x and y), the frame named in each file's header.
-/// @return a line per piece for the user ("wrote a.ply (piece 'eye'): 10 vertices, 16 triangles").
+/// @return what was written, a record per piece.
 /// @throws InputError naming the file (an unknown extension, an unwritable target).
-std::vector<std::string> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path,
+std::vector<WrittenMesh> writePieceMeshes(const std::vector<PieceMesh>& pieces, const std::filesystem::path& path,
                                           MeshFrame frame = MeshFrame::Lps);
 
 }  // namespace sculpt

@@ -12,7 +12,7 @@ fail() { echo "install_test: $*" >&2; exit 1; }
 [[ $("$prefix/bin/sculpt-ui" --version) == "sculpt-ui "*" (git "*")" ]] || fail "installed sculpt-ui --version"
 "$prefix/bin/sculpt" new --radius 3 -o "$prefix/ball.vdb" >/dev/null || fail "installed sculpt new"
 for file in share/doc/sculpt/LICENSE share/doc/sculpt/THIRD_PARTY_LICENSES share/doc/sculpt/README.md \
-            share/sculpt/strokes.schema.json share/sculpt/examples/strokes/face.json; do
+            share/sculpt/strokes.schema.json share/sculpt/reports.schema.json share/sculpt/examples/strokes/face.json; do
   [[ -f $prefix/$file ]] || fail "$file is not installed"
 done
 echo "install_test: programs, docs and data installed into a prefix and run from it"

@@ -107,7 +107,7 @@ void DocumentFiles::exportMesh(const fs::path& path)
     auto meshes = std::make_shared<std::vector<PieceMesh>>(mWork.document().meshesToExport(path));
     mWork.startJob<std::vector<std::string>>(
         "export " + path.filename().string(),
-        [meshes, path](const Progress&) { return writePieceMeshes(*meshes, path); },
+        [meshes, path](const Progress&) { return linesOf(writePieceMeshes(*meshes, path)); },
         [this](std::vector<std::string> lines) {
             mWork.notices().say(lines.size() == 1 ? lines.front()
                                                   : "exported " + std::to_string(lines.size()) +

@@ -1,5 +1,7 @@
-// The program as a batch job runs it: interrupted by Ctrl-C or a scheduler, under a memory limit.
+// The program as a batch job runs it: interrupted by Ctrl-C or a scheduler, under a memory limit,
+// its reports read as JSON, on any number of threads.
 
+#include "tests/support/file_bytes.h"
 #include "tests/support/run_sculpt.h"
 #include "tests/support/temp_dir.h"
 
@@ -9,9 +11,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <thread>
 
 namespace sculpt {
@@ -103,6 +107,107 @@ TEST(Batch, AControlGroupsMemoryLimitRefusesWhatWouldNotFit)
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find("under the control group's memory limit"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(dir / "big.vdb"));
+}
+
+/// A raw label map of three labels: a box (1) around a ball (2), and a ball (3) beside them.
+void writeThreeLabelMap(const fs::path& file)
+{
+    std::string bytes;
+    for (int k = 0; k < 32; ++k)
+        for (int j = 0; j < 32; ++j)
+            for (int i = 0; i < 48; ++i) {
+                const bool box = std::max({std::abs(i - 15.5), std::abs(j - 15.5), std::abs(k - 15.5)}) < 10.0;
+                const bool inner = std::hypot(i - 15.5, j - 15.5, k - 15.5) < 5.0;
+                bytes.push_back(inner ? 2 : box ? 1 : std::hypot(i - 31.5, j - 15.5, k - 15.5) < 6.0 ? 3 : 0);
+            }
+    std::ofstream(file, std::ios::binary) << bytes;
+}
+
+/// Every command, each input made by an earlier one, as a pipeline author chains them.
+const std::vector<std::string> kEveryCommand{
+    "new --radius 6 --voxel-size 0.5 -o a.vdb --mesh a-new.ply",
+    "new --shape box --radius 5 --voxel-size 0.5 -o b.vdb",
+    "info a.vdb",
+    "mesh a.vdb -o a.stl",
+    "smooth a.vdb --iterations 3 --keep-volume -o smooth.vdb --mesh smooth.ply",
+    "offset a.vdb --distance 0.5 -o offset.vdb --mesh offset.obj",
+    "hollow a.vdb --thickness 1.5 --drain -o hollow.vdb --mesh hollow.stl",
+    "islands a.vdb --remove-under 1 -o islands.vdb --mesh islands.ply",
+    "morph a.vdb b.vdb --frames 3 --keep-volume -o frames --mesh ply",
+    "build " SCULPT_DATA_DIR "/scenes/snowman.json --voxel-size 0.5 -o snowman.vdb --mesh snowman.ply",
+    "new -o clay.vdb",
+    "apply clay.vdb " SCULPT_DATA_DIR "/strokes/face.json -o face.vdb --mesh face.ply",
+    "import map.raw --raw-dims 48,32,32 --iso 0.5 -o scan.vdb --mesh scan.ply",
+    "import a-new.ply --voxel-size 0.5 -o from-mesh.vdb",
+    "import map.raw --raw-dims 48,32,32 --labels -o labels.vdb --mesh labels.obj",
+    "export-labels labels.vdb -o labels.nii.gz",
+    "pieces labels.vdb --rename 'label 1=box' -o renamed.vdb --mesh renamed.stl",
+    "render a.vdb -o a.png --width 64 --height 48",
+    "render frames -o images --frames 1-2 --width 32 --height 24 --format exr",
+};
+
+/// Runs every command in `dir` with `options`; returns their reports, each written to a file in
+/// `reports` for the validator.
+std::vector<std::string> runEveryCommand(const TempDir& dir, const std::string& options, const fs::path& reports)
+{
+    writeThreeLabelMap(dir / "map.raw");
+    std::vector<std::string> files;
+    for (const std::string& command : kEveryCommand) {
+        const auto r = runSculpt(command + " " + options, dir.path().string());
+        EXPECT_EQ(r.exitCode, 0) << command << ": " << r.err;
+        files.push_back((reports / (std::to_string(files.size()) + ".json")).string());
+        std::ofstream(files.back()) << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << command << ": " << r.out;
+    }
+    return files;
+}
+
+/// Every regular file under `dir`, by path relative to it, with its bytes.
+std::map<std::string, std::string> filesUnder(const fs::path& dir)
+{
+    std::map<std::string, std::string> files;
+    for (const auto& entry : fs::recursive_directory_iterator(dir))
+        if (entry.is_regular_file()) files[fs::relative(entry.path(), dir).string()] = test::fileBytes(entry.path());
+    return files;
+}
+
+// A pipeline reads every command's report as JSON with stable keys (validated here by Debian's
+// python3-jsonschema against data/reports.schema.json), and gets the same files whatever the
+// thread count: one worker or two, bit for bit.
+TEST(Batch, EveryCommandsJsonValidatesAndOneThreadOrTwoWriteTheSameFiles)
+{
+    TempDir one, two, reports;
+    std::vector<std::string> files = runEveryCommand(one, "--json --threads 1", reports.path());
+    fs::create_directory(reports / "two");
+    for (const std::string& file : runEveryCommand(two, "--json --threads 2", reports / "two")) files.push_back(file);
+    std::string arguments;
+    for (const std::string& file : files) arguments += " '" + file + "'";
+    const auto valid = test::runCommand("/usr/bin/python3 '" SCULPT_TESTS_DIR
+                                        "/support/validate_json.py' '" SCULPT_DATA_DIR "/reports.schema.json'" +
+                                            arguments,
+                                        reports.path().string());
+    EXPECT_EQ(valid.exitCode, 0) << valid.out << valid.err;
+
+    const auto first = filesUnder(one.path()), second = filesUnder(two.path());
+    ASSERT_EQ(first.size(), second.size());
+    EXPECT_GT(first.size(), 30u);
+    for (const auto& [name, bytes] : first) {
+        ASSERT_TRUE(second.count(name)) << name;
+        EXPECT_TRUE(second.at(name) == bytes) << name << " differs between one thread and two";
+    }
+}
+
+// --quiet prints nothing on success; errors still get their one line.
+TEST(Batch, QuietPrintsOnlyErrors)
+{
+    TempDir dir;
+    auto r = runSculpt("new --radius 4 --voxel-size 0.5 -o a.vdb --quiet", dir.path());
+    EXPECT_EQ(r.exitCode, 0);
+    EXPECT_EQ(r.out + r.err, "");
+    r = runSculpt("smooth missing.vdb -o b.vdb -q", dir.path());
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 }  // namespace
