@@ -27,6 +27,13 @@ pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 
 if(SCULPT_BUILD_TESTS)
   find_package(GTest REQUIRED)
+  # lib3mf (the 3MF Consortium's library): the independent reader the 3MF writer is tested against.
+  # Found by hand: its lib3MF.pc asks to link libzip, which only its shared library needs.
+  find_library(LIB3MF_LIBRARY 3MF REQUIRED)
+  find_path(LIB3MF_INCLUDE_DIR Model/COM/NMR_DLLInterfaces.h PATH_SUFFIXES lib3mf REQUIRED)
+  add_library(lib3mf::lib3mf UNKNOWN IMPORTED)
+  set_target_properties(lib3mf::lib3mf PROPERTIES IMPORTED_LOCATION "${LIB3MF_LIBRARY}"
+                                                  INTERFACE_INCLUDE_DIRECTORIES "${LIB3MF_INCLUDE_DIR}")
 endif()
 if(SCULPT_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project builds, tests and runs with. Idempotent: only
 # missing packages are installed, so a second run returns in a moment. Needs root (or sudo).
-# python3-jsonschema: the independent validator the tests check every --json report with.
+# python3-jsonschema and lib3mf-dev: the independent validator and 3MF reader the tests check
+# every --json report and every 3MF file with.
 set -euo pipefail
 
 packages=(
@@ -13,7 +14,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
-  mricron-data libcgal-demo python3-jsonschema
+  mricron-data libcgal-demo python3-jsonschema lib3mf-dev
 )
 
 # --sanitizers: also what scripts/sanitizer-tree.sh builds with (clang and its sanitizer and

@@ -5,6 +5,7 @@
 #include "core/base/file_extension.h"
 #include "core/io/obj_file.h"
 #include "core/io/ply_file.h"
+#include "core/io/threemf_file.h"
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -76,6 +77,7 @@ bool writeFormat(MeshFormat format, const TriangleMesh& mesh, const fs::path& pa
         if (frame == MeshFrame::Ras) return writeWith(writer.Get(), toPolyData(inOtherFrame(mesh)), path);
         return writeWith(writer.Get(), toPolyData(mesh), path);
     }
+    case MeshFormat::ThreeMf: writeThreeMf({{"", &mesh, openvdb::Vec3f(0.8f)}}, path, "mm", frame); return true;
     }
     return false;
 }
@@ -88,8 +90,9 @@ MeshFormat meshFormatOf(const fs::path& path)
     if (ext == ".ply") return MeshFormat::Ply;
     if (ext == ".obj") return MeshFormat::Obj;
     if (ext == ".stl") return MeshFormat::Stl;
+    if (ext == ".3mf") return MeshFormat::ThreeMf;
     throw InputError(path.string() + ": unknown mesh extension '" + path.extension().string() +
-                     "' (expected .ply, .obj or .stl)");
+                     "' (expected .ply, .obj, .stl or .3mf)");
 }
 
 void writeMesh(const TriangleMesh& mesh, const fs::path& path, MeshFrame frame)

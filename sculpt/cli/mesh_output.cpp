@@ -28,7 +28,8 @@ void reportMeshes(const std::vector<WrittenMesh>& written, CommandReport& report
 void addMeshOutput(CLI::App& cmd, std::string& path)
 {
     cmd.add_option("--mesh", path,
-                   "also write the surface as .ply, .obj or .stl (several pieces: a file per piece, or one OBJ)");
+                   "also write the surface as .ply, .obj, .stl or .3mf (several pieces: a file per piece, or\n"
+                   "one OBJ or 3MF of an object per piece)");
 }
 
 void checkMeshOutput(const std::string& path)
@@ -41,7 +42,7 @@ void checkMeshOutput(const std::string& path)
 void writeMeshOutput(const FieldImage& field, const std::string& path, CommandReport& report)
 {
     if (path.empty()) return;
-    reportMeshes(writePieceMeshes({{"", meshLevelSet(field)}}, path), report);
+    reportMeshes(writePieceMeshes({{"", meshLevelSet(field), openvdb::Vec3f(0.8f), field.units()}}, path), report);
 }
 
 void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path, CommandReport& report,
@@ -51,7 +52,8 @@ void writePiecesMeshes(const std::vector<Piece>& pieces, const std::string& path
     checkMeshOutput(path);
     std::vector<PieceMesh> meshes;
     for (const Piece& piece : pieces)
-        meshes.push_back({piece.name, placedMesh(meshLevelSet(piece.field), piece.placement)});
+        meshes.push_back(
+            {piece.name, placedMesh(meshLevelSet(piece.field), piece.placement), piece.colour, piece.field.units()});
     reportMeshes(writePieceMeshes(meshes, path, frame), report);
 }
 

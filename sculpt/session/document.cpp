@@ -131,8 +131,8 @@ std::vector<PieceMesh> Document::meshesToExport(const std::filesystem::path& pat
     std::vector<PieceMesh> meshes;
     for (const DocumentPiece& piece : mPieces)
         if (piece.look.visible || mPieces.size() == 1)
-            meshes.push_back(
-                {piece.look.name, placedMesh(piece.session->mesher()->weldedMesh(), piece.look.placement)});
+            meshes.push_back({piece.look.name, placedMesh(piece.session->mesher()->weldedMesh(), piece.look.placement),
+                              piece.look.colour, piece.session->field().units()});
     if (meshes.empty()) throw InputError(path.string() + ": every piece is hidden: nothing to export");
     return meshes;
 }

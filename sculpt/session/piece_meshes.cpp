@@ -4,6 +4,7 @@
 #include "core/base/written_outputs.h"
 #include "core/io/mesh_file.h"
 #include "core/io/obj_file.h"
+#include "core/io/threemf_file.h"
 
 #include <cctype>
 
@@ -31,7 +32,7 @@ std::vector<std::string> linesOf(const std::vector<WrittenMesh>& written)
 
 std::string WrittenMesh::line() const
 {
-    const std::string what = piece.empty() ? "" : objObject ? " object '" + piece + "'" : " (piece '" + piece + "')";
+    const std::string what = piece.empty() ? "" : sharedFile ? " object '" + piece + "'" : " (piece '" + piece + "')";
     return "wrote " + file.string() + what + ": " + std::to_string(vertices) + " vertices, " +
            std::to_string(triangles) + " triangles";
 }
@@ -56,6 +57,15 @@ std::vector<WrittenMesh> writePieceMeshes(const std::vector<PieceMesh>& pieces, 
     meshFormatOf(path);
     AtomicFile::checkTarget(path);
     std::vector<WrittenMesh> written;
+    if (meshFormatOf(path) == MeshFormat::ThreeMf) {
+        std::vector<ThreeMfObject> objects;
+        for (const PieceMesh& piece : pieces) objects.push_back({piece.name, &piece.mesh, piece.colour});
+        writeThreeMf(objects, path, pieces.front().units, frame);
+        for (const PieceMesh& piece : pieces)
+            written.push_back({path, pieces.size() > 1 ? piece.name : "", piece.mesh.positions.size(),
+                               piece.mesh.triangles.size(), true});
+        return written;
+    }
     if (pieces.size() > 1 && meshFormatOf(path) == MeshFormat::Obj) {
         std::vector<ObjObject> objects;
         for (const PieceMesh& piece : pieces) objects.push_back({piece.name, &piece.mesh});

@@ -2,7 +2,8 @@
 /// @file piece_meshes.h
 /// @brief A document's pieces as mesh files, each where it is placed: one file for one piece;
 ///        several as one OBJ of an object each, or (.ply, .stl) a file each named after the
-///        target's stem and the piece ("head-label_3.ply").
+///        target's stem and the piece ("head-label_3.ply"); a 3MF always holds them all, as an
+///        object each with its colour, in the document's unit.
 
 #include "core/io/mesh_frame.h"
 #include "core/mesh/triangle_mesh.h"
@@ -15,10 +16,12 @@
 
 namespace sculpt {
 
-/// A piece's surface in world coordinates, and its name.
+/// A piece's surface in world coordinates, its name, and what a 3MF says of it.
 struct PieceMesh {
     std::string name;
     TriangleMesh mesh;
+    openvdb::Vec3f colour{0.8f, 0.8f, 0.8f};  ///< sRGB, 0..1
+    std::string units = "mm";                 ///< the document's length unit
 };
 
 /// `mesh` (in its piece's own world) where `placement` puts it: positions moved, normals turned.
@@ -29,7 +32,7 @@ struct WrittenMesh {
     std::filesystem::path file;
     std::string piece;  ///< empty for a document's only piece
     std::size_t vertices = 0, triangles = 0;
-    bool objObject = false;  ///< one object of a multi-object OBJ file
+    bool sharedFile = false;  ///< one object of a file holding several (OBJ, 3MF)
 
     /// A line for the user ("wrote a.ply (piece 'eye'): 10 vertices, 16 triangles").
     std::string line() const;

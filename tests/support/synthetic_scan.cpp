@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <fstream>
 
 namespace sculpt::test {
 
@@ -55,6 +57,19 @@ void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::
     EXPECT_NEAR(radius, ball.radius, 0.5 * field.voxelSize()) << format;
     EXPECT_NEAR((centre - ball.centre).length(), 0.0, 0.5 * field.voxelSize())
         << format << " centre " << centre << " expected " << ball.centre;
+}
+
+void writeThreeLabelRaw(const std::filesystem::path& file)
+{
+    std::string bytes;
+    for (int k = 0; k < 32; ++k)
+        for (int j = 0; j < 32; ++j)
+            for (int i = 0; i < 48; ++i) {
+                const bool box = std::max({std::abs(i - 15.5), std::abs(j - 15.5), std::abs(k - 15.5)}) < 10.0;
+                const bool inner = std::hypot(i - 15.5, j - 15.5, k - 15.5) < 5.0;
+                bytes.push_back(inner ? 2 : box ? 1 : std::hypot(i - 31.5, j - 15.5, k - 15.5) < 6.0 ? 3 : 0);
+            }
+    std::ofstream(file, std::ios::binary) << bytes;
 }
 
 }  // namespace sculpt::test

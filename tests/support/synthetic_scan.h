@@ -10,6 +10,7 @@
 #include <vtkImageData.h>
 #include <vtkSmartPointer.h>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <utility>
@@ -42,5 +43,9 @@ struct SyntheticBall {
 /// Imports the scan at iso 100 and its finest spacing, and expects the ball's radius and centre
 /// within half a voxel; `format` names the case in failures.
 void expectBallAt(const ScanVolume& scan, const SyntheticBall& ball, const std::string& format);
+
+/// A raw label map (48 x 32 x 32 bytes) of three labels: a box (1) around a ball (2), and a
+/// ball (3) beside them.
+void writeThreeLabelRaw(const std::filesystem::path& file);
 
 }  // namespace sculpt::test

@@ -65,7 +65,8 @@ int main(int argc, char** argv)
     cli.add_option("--strokes", options.strokes, "replay a `sculpt apply` stroke script into the document, on screen")
         ->check(CLI::ExistingFile);
     cli.add_option("--save-as", options.saveAs, "after --play or --strokes, save the document here (.vdb)");
-    cli.add_option("--export", options.exportMesh, "after --play or --strokes, export the mesh here (.ply .obj .stl)");
+    cli.add_option("--export", options.exportMesh,
+                   "after --play or --strokes, export the mesh here (.ply .obj .stl .3mf)");
     cli.add_option("--stroke-log", options.strokeLog,
                    "after --play or --strokes, save the session's strokes as a stroke script");
     cli.add_flag("--stay", options.stay, "keep the window open after a replay");

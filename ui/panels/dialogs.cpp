@@ -49,7 +49,7 @@ FileKinds kindsOf(Prompt::Kind prompt)
     switch (prompt) {
     case P::Open:
     case P::SaveAs: return {{".vdb"}};
-    case P::ExportMesh: return {{".ply", ".obj", ".stl"}};
+    case P::ExportMesh: return {{".ply", ".obj", ".stl", ".3mf"}};
     case P::ExportLabels: return {{".nii", ".nii.gz", ".nrrd", ".seg.nrrd"}};
     case P::SaveStrokes:
     case P::LoadScene:
@@ -261,7 +261,7 @@ void drawDialogs(PanelHost& host)
     case Prompt::Kind::New: return newDialog(host);
     case Prompt::Kind::Open: return pathDialog(host, "Open", "A .vdb document (path, then Enter; Tab completes)");
     case Prompt::Kind::SaveAs: return pathDialog(host, "Save As", "A .vdb file to write");
-    case Prompt::Kind::ExportMesh: return pathDialog(host, "Export Mesh", "A .ply, .obj or .stl file to write");
+    case Prompt::Kind::ExportMesh: return pathDialog(host, "Export Mesh", "A .ply, .obj, .stl or .3mf file to write");
     case Prompt::Kind::ExportLabels:
         return pathDialog(host, "Export Segmentation",
                           "A .nii, .nii.gz, .nrrd or .seg.nrrd (3D Slicer) label map to write on the kept scan's "

@@ -3,11 +3,14 @@
 
 #include "tests/support/file_bytes.h"
 #include "tests/support/run_sculpt.h"
+#include "tests/support/synthetic_scan.h"
 #include "tests/support/temp_dir.h"
+#include "tests/support/threemf_reader.h"
 
 #include <unistd.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -109,20 +112,6 @@ TEST(Batch, AControlGroupsMemoryLimitRefusesWhatWouldNotFit)
     EXPECT_FALSE(fs::exists(dir / "big.vdb"));
 }
 
-/// A raw label map of three labels: a box (1) around a ball (2), and a ball (3) beside them.
-void writeThreeLabelMap(const fs::path& file)
-{
-    std::string bytes;
-    for (int k = 0; k < 32; ++k)
-        for (int j = 0; j < 32; ++j)
-            for (int i = 0; i < 48; ++i) {
-                const bool box = std::max({std::abs(i - 15.5), std::abs(j - 15.5), std::abs(k - 15.5)}) < 10.0;
-                const bool inner = std::hypot(i - 15.5, j - 15.5, k - 15.5) < 5.0;
-                bytes.push_back(inner ? 2 : box ? 1 : std::hypot(i - 31.5, j - 15.5, k - 15.5) < 6.0 ? 3 : 0);
-            }
-    std::ofstream(file, std::ios::binary) << bytes;
-}
-
 /// Every command, each input made by an earlier one, as a pipeline author chains them.
 const std::vector<std::string> kEveryCommand{
     "new --radius 6 --voxel-size 0.5 -o a.vdb --mesh a-new.ply",
@@ -141,7 +130,7 @@ const std::vector<std::string> kEveryCommand{
     "import a-new.ply --voxel-size 0.5 -o from-mesh.vdb",
     "import map.raw --raw-dims 48,32,32 --labels -o labels.vdb --mesh labels.obj",
     "export-labels labels.vdb -o labels.nii.gz",
-    "pieces labels.vdb --rename 'label 1=box' -o renamed.vdb --mesh renamed.stl",
+    "pieces labels.vdb --rename 'label 1=box' -o renamed.vdb --mesh renamed.3mf",
     "render a.vdb -o a.png --width 64 --height 48",
     "render frames -o images --frames 1-2 --width 32 --height 24 --format exr",
 };
@@ -150,7 +139,7 @@ const std::vector<std::string> kEveryCommand{
 /// `reports` for the validator.
 std::vector<std::string> runEveryCommand(const TempDir& dir, const std::string& options, const fs::path& reports)
 {
-    writeThreeLabelMap(dir / "map.raw");
+    test::writeThreeLabelRaw(dir / "map.raw");
     std::vector<std::string> files;
     for (const std::string& command : kEveryCommand) {
         const auto r = runSculpt(command + " " + options, dir.path().string());
@@ -208,6 +197,30 @@ TEST(Batch, QuietPrintsOnlyErrors)
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.out, "");
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// A print shop's file: the three labels of a segmentation as three objects of one 3MF, in
+// millimetres, each in its piece's colour, read back by lib3mf.
+TEST(Batch, AThreeLabelImportGivesA3mfOfThreeObjectsInMillimetresWithTheirColours)
+{
+    TempDir dir;
+    test::writeThreeLabelRaw(dir / "map.raw");
+    const auto r = runSculpt("import map.raw --raw-dims 48,32,32 --labels -o labels.vdb --mesh labels.3mf", dir.path());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json info = nlohmann::json::parse(runSculpt("info labels.vdb --json", dir.path()).out);
+    const test::ThreeMfModel model = test::readThreeMf(dir / "labels.3mf");
+    ASSERT_TRUE(model.read);
+    EXPECT_EQ(model.unit, 1);  // millimetres, as the document
+    ASSERT_EQ(model.objects.size(), 3u);
+    EXPECT_EQ(model.buildItems, 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const nlohmann::json& piece = info["pieces"][i];
+        EXPECT_EQ(model.objects[i].name, piece["name"].get<std::string>());
+        for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(int(model.objects[i].colour[c]), int(std::lround(piece["colour"][c].get<double>() * 255.0)))
+                << piece["name"];
+        EXPECT_GT(model.objects[i].triangles, 100u);
+    }
 }
 
 }  // namespace
