@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the build tree BUILD into a temporary prefix and checks what a packager relies on: the
-# installed programs run from there (--version names the build), and the docs, licences, schemas
-# and examples are where the GNU layout puts them.   usage: install_test.sh BUILD
+# installed programs run from there (--version names the build), the docs, licences, schemas
+# and examples are where the GNU layout puts them, and a small program builds against the
+# installed CMake package.   usage: install_test.sh BUILD
 set -euo pipefail
 build=$1
 prefix=$(mktemp -d)
@@ -15,4 +16,10 @@ for file in share/doc/sculpt/LICENSE share/doc/sculpt/THIRD_PARTY_LICENSES share
             share/sculpt/strokes.schema.json share/sculpt/reports.schema.json share/sculpt/examples/strokes/face.json; do
   [[ -f $prefix/$file ]] || fail "$file is not installed"
 done
-echo "install_test: programs, docs and data installed into a prefix and run from it"
+# Another program finds the installed libraries with find_package(sculpt) and links sculpt::core.
+cmake -S "$(dirname "$0")/consumer" -B "$prefix/consumer" -DCMAKE_PREFIX_PATH="$prefix" \
+      -DCMAKE_BUILD_TYPE=Release >"$prefix/consumer.log" 2>&1 || { cat "$prefix/consumer.log"; fail "find_package(sculpt)"; }
+cmake --build "$prefix/consumer" >>"$prefix/consumer.log" 2>&1 || { cat "$prefix/consumer.log"; fail "building against sculpt::core"; }
+"$prefix/consumer/consumer" "$prefix/consumer-ball.vdb" || fail "the consumer's ball"
+"$prefix/bin/sculpt" info "$prefix/consumer-ball.vdb" >/dev/null || fail "sculpt info of the consumer's document"
+echo "install_test: programs, docs, data, libraries and the CMake package installed into a prefix and used from it"
