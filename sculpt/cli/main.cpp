@@ -7,6 +7,7 @@
 #include "core/base/progress.h"
 #include "core/io/vtk_logging.h"
 #include "sculpt/cli/commands.h"
+#include "sculpt/cli/shell_completion.h"
 
 #include <CLI/CLI.hpp>
 
@@ -66,11 +67,18 @@ int main(int argc, char** argv)
     sculpt::cli::addIslandsCommand(app);
     sculpt::cli::addPiecesCommand(app);
     sculpt::cli::addRenderCommand(app);
+    app.add_option("--completion", "print the completion script for bash, zsh or fish (installed with the program)")
+        ->check(CLI::IsMember({"bash", "zsh", "fish"}))
+        ->type_name("SHELL");
     if (argc < 2) {  // a bare call: the usage, not CLI11's "a subcommand is required"
         std::cerr << app.help();
         return 2;
     }
     try {
+        if (argc == 3 && std::string(argv[1]) == "--completion") {  // no command needed
+            std::cout << sculpt::cli::completionScript(app, argv[2]);
+            return 0;
+        }
         rejectUnknownCommand(app, argc, argv);
         app.parse(argc, argv);
         return 0;

@@ -32,12 +32,13 @@ void runMesh(const MeshOptions& o)
 void addMeshCommand(CLI::App& app)
 {
     auto options = std::make_shared<MeshOptions>();
-    CLI::App* cmd =
-        app.add_subcommand("mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
-                                   "or rendering. The format follows the output's extension: .ply (binary, with\n"
-                                   "normals), .obj (text) or .stl (binary). A document of several pieces gives\n"
-                                   "one OBJ file of an object per piece, or a .ply or .stl file per piece named\n"
-                                   "OUTPUT's stem, a dash and the piece's name; --piece NAME exports one.");
+    CLI::App* cmd = app.add_subcommand(
+        "mesh", "Export a document's surface as one welded, closed triangle mesh for printing\n"
+                "or rendering. The format follows the output's extension: .ply (binary, with\n"
+                "normals), .obj (text), .stl (binary) or .3mf (for slicers: the unit, an object per\n"
+                "piece in its colour). A document of several pieces gives one OBJ or 3MF file of\n"
+                "an object per piece, or a .ply or .stl file per piece named OUTPUT's stem, a\n"
+                "dash and the piece's name; --piece NAME exports one.");
     cmd->footer(
         "Examples:\n  sculpt mesh head.vdb -o head.stl\n  sculpt mesh atlas.vdb -o atlas.obj   (an object per piece)");
     addDocumentInput(*cmd, options->input, "the .vdb document to mesh");

@@ -13,9 +13,18 @@ fail() { echo "install_test: $*" >&2; exit 1; }
 [[ $("$prefix/bin/sculpt-ui" --version) == "sculpt-ui "*" (git "*")" ]] || fail "installed sculpt-ui --version"
 "$prefix/bin/sculpt" new --radius 3 -o "$prefix/ball.vdb" >/dev/null || fail "installed sculpt new"
 for file in share/doc/sculpt/LICENSE share/doc/sculpt/THIRD_PARTY_LICENSES share/doc/sculpt/README.md \
-            share/sculpt/strokes.schema.json share/sculpt/reports.schema.json share/sculpt/examples/strokes/face.json; do
+            share/sculpt/strokes.schema.json share/sculpt/reports.schema.json share/sculpt/examples/strokes/face.json \
+            share/man/man1/sculpt.1 share/man/man1/sculpt-ui.1 share/bash-completion/completions/sculpt \
+            share/zsh/vendor-completions/_sculpt share/fish/vendor_completions.d/sculpt.fish; do
   [[ -f $prefix/$file ]] || fail "$file is not installed"
 done
+# The man page documents every command (help2man's COMMANDS section), as man shows it.
+if command -v man >/dev/null; then
+  page=$(MANWIDTH=100 man -l "$prefix/share/man/man1/sculpt.1" 2>/dev/null)
+  for command in new info mesh smooth offset morph build apply import export-labels hollow islands pieces render; do
+    grep -q "sculpt $command" <<<"$page" || fail "man sculpt says nothing of 'sculpt $command'"
+  done
+fi
 # Another program finds the installed libraries with find_package(sculpt) and links sculpt::core.
 cmake -S "$(dirname "$0")/consumer" -B "$prefix/consumer" -DCMAKE_PREFIX_PATH="$prefix" \
       -DCMAKE_BUILD_TYPE=Release >"$prefix/consumer.log" 2>&1 || { cat "$prefix/consumer.log"; fail "find_package(sculpt)"; }

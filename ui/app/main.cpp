@@ -51,6 +51,7 @@ int main(int argc, char** argv)
     CLI::App cli("sculpt-ui: sculpt virtual clay. Opens FILE (a .vdb document), or a new clay ball.\n"
                  "Left drag sculpts, middle/right drag orbits, wheel zooms; F1 lists every key.\n"
                  "For tests and demos it replays recorded input (--play) without a person.");
+    cli.name("sculpt-ui");
     cli.set_version_flag("--version", SCULPT_VERSION_TEXT("sculpt-ui"));
     cli.add_option("file", options.document, "the .vdb document to open (default: a new clay ball)");
     cli.add_option("--grid", options.grid,

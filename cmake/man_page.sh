@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Makes PROGRAM's man page with help2man from its --help and --version, with a COMMANDS section
+# holding each COMMAND's own --help.   usage: man_page.sh PROGRAM OUTPUT SUMMARY [COMMAND...]
+set -euo pipefail
+program=$1 output=$2 summary=$3
+shift 3
+include=$(mktemp)
+trap 'rm -f "$include"' EXIT
+includes=()
+if (($# > 0)); then
+  includes=(--include="$include")
+  echo "[COMMANDS]" >"$include"
+  for command in "$@"; do
+    echo ".SS \"$(basename "$program") $command\""
+    echo ".nf"
+    # roff: a backslash is \e; a line starting with a dot or a quote would be a request.
+    "$program" "$command" --help | sed -e 's/\\/\\e/g' -e "s/^\([.']\)/\\\\\&\1/"
+    echo ".fi"
+  done >>"$include"
+fi
+help2man --no-info --no-discard-stderr --name="$summary" "${includes[@]}" --output="$output" "$program"
