@@ -69,6 +69,7 @@ UiEvents& UiEvents::quit() { return add({{"type", "quit"}}); }
 UiEvents& UiEvents::untilJobEnds() { return add({{"type", "wait"}}); }
 
 UiEvents& UiEvents::fault(const std::string& kind) { return add({{"type", "fault"}, {"kind", kind}}); }
+UiEvents& UiEvents::drop(const std::filesystem::path& path) { return add({{"type", "drop"}, {"path", path.string()}}); }
 
 UiEvents& UiEvents::wait(double seconds)
 {

@@ -39,6 +39,8 @@ public:
     UiEvents& untilJobEnds();
     /// An internal error of `kind` (bad_alloc, openvdb, runtime) raised on the UI thread.
     UiEvents& fault(const std::string& kind);
+    /// A file dropped on the window.
+    UiEvents& drop(const std::filesystem::path& path);
     void write(const std::filesystem::path& path) const;
 
 private:

@@ -382,6 +382,35 @@ TEST(SculptUi, SaveExportAndOpenThroughTheirPromptsAndACorruptFileChangesNothing
     EXPECT_EQ(reports["reopened"]["undo"], 0);  // a freshly opened document
 }
 
+// A document dropped on the window opens; with unsaved changes "save changes?" comes first, then
+// the Open prompt holds the dropped path. A mesh dropped goes to Import.
+TEST(SculptUi, AFileDroppedOnTheWindowOpensOrImports)
+{
+    TempDir dir;
+    const fs::path r = dir / "r.jsonl";
+    ASSERT_EQ(runSculpt("new --shape box --radius 20 --voxel-size 1 -o box.vdb", dir.path().string()).exitCode, 0);
+    ASSERT_EQ(runSculpt("new --shape torus --radius 20 --voxel-size 1 -o ring.vdb --mesh ring.stl", dir.path().string())
+                  .exitCode,
+              0);
+    UiEvents events;
+    events.drop(dir / "box.vdb").untilJobEnds().report(r, "box");
+    events.drag(560, 380, 700, 380).drop(dir / "ring.vdb").report(r, "asking").key("D").report(r, "prompt");
+    events.key("Enter").untilJobEnds().report(r, "ring");
+    events.drop(dir / "ring.stl").untilJobEnds().report(r, "import");
+    const CommandResult run = play(dir, events);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const Reports reports(r);
+    EXPECT_EQ(reports["box"]["title"], "box.vdb");
+    EXPECT_EQ(reports["box"]["checksum"], checksumOfFile(dir / "box.vdb"));
+    EXPECT_TRUE(reports["asking"]["asking_unsaved"].get<bool>());
+    EXPECT_EQ(reports["asking"]["title"], "box.vdb *");
+    EXPECT_EQ(reports["prompt"]["prompt"], "open");
+    EXPECT_EQ(reports["prompt"]["prompt_path"], (dir / "ring.vdb").string());
+    EXPECT_EQ(reports["ring"]["title"], "ring.vdb");
+    EXPECT_EQ(reports["ring"]["checksum"], checksumOfFile(dir / "ring.vdb"));
+    EXPECT_EQ(reports["import"]["mode"], "import") << reports["import"].dump();
+}
+
 TEST(SculptUi, TheFileChooserListsTheFoldersAndDocumentsAndTabCompletesThePathToOpen)
 {
     TempDir dir;

@@ -2,6 +2,7 @@
 // the tool, the open mode or the camera.
 
 #include "core/base/errors.h"
+#include "core/base/file_extension.h"
 #include "ui/app/sculpt_app.h"
 #include "ui/input/imgui_input.h"
 #include "ui/window/window.h"
@@ -59,8 +60,19 @@ void SculptApp::handle(const InputEvent& event)
         if (mReplay.player() && holdsReplay()) mReplay.player()->hold(mWindow.time());
         break;
     case EventType::Fault: raiseFault(event.text);
+    case EventType::Drop: openDropped(event.text); break;
     default: routeMouse(event); break;
     }
+}
+
+void SculptApp::openDropped(const std::string& path)
+{
+    // As File > Open (a document) or File > Import (a scan, a mesh) of that path, confirmed at
+    // once; after "save changes?" if it comes first (the prompt then waits, filled in).
+    mDialogs.dropped = path;
+    execute(lowerExtension(path) == ".vdb" ? Command::Open : Command::Import);
+    if (mDialogs.prompt.open() && mDialogs.prompt.path == path) mDialogs.confirm(mWork.notices());
+    else if (!mFiles.asking()) mDialogs.dropped.clear();  // busy: dropped on a job, nothing opens
 }
 
 void SculptApp::routeMouse(const InputEvent& event)

@@ -100,6 +100,8 @@ private:
     /// Appends the state as a JSON line to `path`, called `name` (if not ""): each part adds its own.
     void writeReport(const std::filesystem::path& path, const std::string& name);
 
+    /// A file dropped on the window: opened (.vdb) or imported.
+    void openDropped(const std::string& path);
     void routeMouse(const InputEvent& event);
     void routeKey(const InputEvent& event);
     /// While a dialog is open it takes every key: its answers are commands of Scope::Dialog.

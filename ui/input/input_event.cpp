@@ -83,6 +83,7 @@ const std::vector<std::pair<EventType, const char*>> kTypeNames = {
     {EventType::Quit, "quit"},
     {EventType::WaitForJob, "wait"},
     {EventType::Fault, "fault"},
+    {EventType::Drop, "drop"},
 };
 const std::vector<std::pair<int, const char*>> kModNames = {
     {kShift, "shift"}, {kControl, "ctrl"}, {kAlt, "alt"}, {kSuper, "super"}};
@@ -126,8 +127,10 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         if (type == name) e.type = t, known = true;
     }
     if (!known)
-        throw InputError(where + ": field 'type' is \"" + type +
-                         "\" (expected move, button, wheel, key, text, resize, screenshot, report or quit)");
+        throw InputError(
+            where + ": field 'type' is \"" + type +
+            "\" (expected move, button, wheel, key, text, resize, screenshot, report, quit, wait, fault or "
+            "drop)");
     if (j.contains("t")) {
         const double t = number(j, "t", where);
         if (!(t >= clock)) throw InputError(where + ": field 't' must not decrease (seconds since the start)");
@@ -178,6 +181,7 @@ void parseEvent(const json& j, const std::string& where, double& clock, std::vec
         break;
     case EventType::Screenshot:
     case EventType::Report:
+    case EventType::Drop:
         e.text = textOr(j, "path", "", where);
         if (e.text.empty()) throw InputError(where + ": field 'path' is missing");
         if (e.type == EventType::Report) e.name = textOr(j, "name", "", where);
@@ -218,7 +222,8 @@ json eventJson(const InputEvent& e)
         break;
     case EventType::Text: j["text"] = e.text; break;
     case EventType::Resize: j["width"] = e.width, j["height"] = e.height; break;
-    case EventType::Screenshot: j["path"] = e.text; break;
+    case EventType::Screenshot:
+    case EventType::Drop: j["path"] = e.text; break;
     case EventType::Report:
         j["path"] = e.text;
         if (!e.name.empty()) j["name"] = e.name;

@@ -24,6 +24,7 @@ enum class EventType {
     Quit,         ///< as closing the window
     WaitForJob,   ///< the replay holds until the running job has ended (or a morph's playback)
     Fault,        ///< text: an internal error to raise on the UI thread (tests of the recovery)
+    Drop,         ///< text: the path of a file dropped on the window
 };
 
 /// The internal errors a fault event may raise: out of memory, an OpenVDB error, any other.
@@ -42,7 +43,7 @@ struct InputEvent {
     bool press = true;
     int key = 0;
     int mods = 0;
-    std::string text;  ///< Text: the characters; Screenshot, Report: the path
+    std::string text;  ///< Text: the characters; Screenshot, Report, Drop: the path
     std::string name;  ///< Report: what the report is called (tests find it by its name), or ""
     int width = 0, height = 0;
 };

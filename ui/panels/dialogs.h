@@ -72,8 +72,11 @@ struct Dialogs {
     double creaseRadius = 0.0;  ///< Mask Cavities: concave within it is a cavity (0: four voxels)
     PieceNameField pieceName;   ///< the Pieces panel's
     bool help = false;          ///< the Help panel is open
+    /// A path dropped on the window: the next Open or Import prompt starts with it.
+    std::string dropped;
 
-    /// Opens the prompt `kind` with `path` in its field, focused; OK runs `confirm` with the path.
+    /// Opens the prompt `kind` with `path` in its field (an Open or Import prompt without one: the
+    /// path dropped, if any), focused; OK runs `confirm` with the path.
     void ask(Prompt::Kind kind, std::string path, Prompt::Confirm confirm);
     /// OK: the prompt closes and runs what it was opened for (an error goes to `notices`).
     void confirm(Notices& notices);

@@ -44,6 +44,8 @@ bool Prompt::settingsOnly() const
 void Dialogs::ask(Prompt::Kind kind, std::string path, Prompt::Confirm confirm)
 {
     prompt.kind = kind;
+    if (path.empty() && (kind == Prompt::Kind::Open || kind == Prompt::Kind::Import)) path = std::move(dropped);
+    dropped.clear();
     prompt.path = std::move(path);
     prompt.focusField = true;
     prompt.confirm = std::move(confirm);

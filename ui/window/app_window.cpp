@@ -80,6 +80,12 @@ void AppWindow::installCallbacks()
         e.width = width, e.height = height;
         owner(w)->deliver(e);
     });
+    glfwSetDropCallback(mWindow, [](GLFWwindow* w, int count, const char** paths) {
+        if (count < 1) return;  // one document at a time: the first of several
+        InputEvent e = eventOf(EventType::Drop);
+        e.text = paths[0];
+        owner(w)->deliver(e);
+    });
     glfwSetWindowCloseCallback(mWindow, [](GLFWwindow* w) {
         glfwSetWindowShouldClose(w, GLFW_FALSE);  // the application decides (unsaved changes)
         owner(w)->deliver(eventOf(EventType::Quit));
