@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages this project builds, tests and runs with. Idempotent: only
 # missing packages are installed, so a second run returns in a moment. Needs root (or sudo).
-# python3-jsonschema and lib3mf-dev: the independent validator and 3MF reader the tests check
-# every --json report and every 3MF file with.
+# python3-jsonschema, lib3mf-dev, desktop-file-utils, appstream, shared-mime-info: the independent
+# validators and readers the tests check --json reports, 3MF files and the desktop files with.
 set -euo pipefail
 
 packages=(
@@ -15,6 +15,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
   mricron-data libcgal-demo python3-jsonschema lib3mf-dev
+  desktop-file-utils appstream shared-mime-info
 )
 
 # --sanitizers: also what scripts/sanitizer-tree.sh builds with (clang and its sanitizer and

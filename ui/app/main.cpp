@@ -3,6 +3,7 @@
 #include "core/base/errors.h"
 #include "core/io/vtk_logging.h"
 #include "ui/app/sculpt_app.h"
+#include "ui/app/window_icon.h"
 #include "ui/window/app_window.h"
 #include "ui/window/headless_window.h"
 
@@ -117,7 +118,11 @@ int main(int argc, char** argv)
     try {
         std::unique_ptr<ui::Window> window;
         if (headless) window = std::make_unique<ui::HeadlessWindow>(width, height);
-        else window = std::make_unique<ui::AppWindow>(width, height, "Sculpt");
+        else {
+            auto shown = std::make_unique<ui::AppWindow>(width, height, "Sculpt");
+            shown->setIcon(ui::applicationIcon());
+            window = std::move(shown);
+        }
         ui::SculptApp app(*window, options);
         return app.run();
     } catch (const InputError& e) {

@@ -33,6 +33,9 @@ AppWindow::AppWindow(int width, int height, const std::string& title)
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_SAMPLES, 0);  // VTK renders into its own framebuffer
+    // X11's WM_CLASS: the launcher's StartupWMClass, so the desktop groups the window with it.
+    glfwWindowHintString(GLFW_X11_CLASS_NAME, "sculpt-ui");
+    glfwWindowHintString(GLFW_X11_INSTANCE_NAME, "sculpt-ui");
     mWindow = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
     if (!mWindow) {
         const std::string why = glfwError();
@@ -115,6 +118,14 @@ void AppWindow::pollEvents(double timeoutSeconds)
 }
 
 void AppWindow::swapBuffers() { glfwSwapBuffers(mWindow); }
+void AppWindow::setIcon(const std::vector<IconImage>& sizes)
+{
+    std::vector<GLFWimage> images;
+    for (const IconImage& size : sizes)
+        images.push_back({size.width, size.height, const_cast<unsigned char*>(size.rgba.data())});
+    if (!images.empty()) glfwSetWindowIcon(mWindow, int(images.size()), images.data());
+}
+
 void AppWindow::setTitle(const std::string& title)
 {
     if (title == mTitle) return;  // the window manager's round trip, every frame otherwise

@@ -7,6 +7,7 @@
 #include "ui/window/window.h"
 
 #include <stdexcept>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -16,6 +17,12 @@ namespace sculpt::ui {
 /// 2 with the reason, and scripts/demo.sh goes headless.
 struct WindowUnavailable : std::runtime_error {
     using std::runtime_error::runtime_error;
+};
+
+/// An icon's image: RGBA, 8 bits a channel, top row first.
+struct IconImage {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgba;
 };
 
 class AppWindow final : public Window {
@@ -31,6 +38,8 @@ public:
     void pollEvents(double timeoutSeconds) override;
     void swapBuffers() override;
     void setTitle(const std::string& title) override;
+    /// The window's icon, in the sizes given (the system picks one).
+    void setIcon(const std::vector<IconImage>& sizes);
     void resize(int width, int height) override;
     int width() const override;
     int height() const override;
