@@ -9,8 +9,8 @@ add_custom_command(OUTPUT ${icons}/hicolor/256x256/apps/${SCULPT_APP_ID}.png
 add_custom_target(icons ALL DEPENDS ${icons}/hicolor/256x256/apps/${SCULPT_APP_ID}.png)
 
 set(desktop ${PROJECT_SOURCE_DIR}/data/desktop)
-install(FILES ${desktop}/${SCULPT_APP_ID}.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
-install(FILES ${desktop}/${SCULPT_APP_ID}.metainfo.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo)
-install(FILES ${desktop}/sculpt-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages RENAME sculpt.xml)
-install(FILES ${desktop}/sculpt.thumbnailer DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers)
-install(DIRECTORY ${icons}/hicolor DESTINATION ${CMAKE_INSTALL_DATADIR}/icons)
+install(FILES ${desktop}/${SCULPT_APP_ID}.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications COMPONENT Runtime)
+install(FILES ${desktop}/${SCULPT_APP_ID}.metainfo.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/metainfo COMPONENT Runtime)
+install(FILES ${desktop}/sculpt-mime.xml DESTINATION ${CMAKE_INSTALL_DATADIR}/mime/packages RENAME sculpt.xml COMPONENT Runtime)
+install(FILES ${desktop}/sculpt.thumbnailer DESTINATION ${CMAKE_INSTALL_DATADIR}/thumbnailers COMPONENT Runtime)
+install(DIRECTORY ${icons}/hicolor DESTINATION ${CMAKE_INSTALL_DATADIR}/icons COMPONENT Runtime)

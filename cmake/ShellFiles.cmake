@@ -20,7 +20,7 @@ add_custom_command(OUTPUT ${completions}/sculpt ${completions}/_sculpt ${complet
   DEPENDS sculpt VERBATIM)
 add_custom_target(shell_files ALL DEPENDS ${generated}/sculpt.1 ${generated}/sculpt-ui.1 ${completions}/sculpt)
 
-install(FILES ${generated}/sculpt.1 ${generated}/sculpt-ui.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
-install(FILES ${completions}/sculpt DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions)
-install(FILES ${completions}/_sculpt DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions)
-install(FILES ${completions}/sculpt.fish DESTINATION ${CMAKE_INSTALL_DATADIR}/fish/vendor_completions.d)
+install(FILES ${generated}/sculpt.1 ${generated}/sculpt-ui.1 DESTINATION ${CMAKE_INSTALL_MANDIR}/man1 COMPONENT Runtime)
+install(FILES ${completions}/sculpt DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions COMPONENT Runtime)
+install(FILES ${completions}/_sculpt DESTINATION ${CMAKE_INSTALL_DATADIR}/zsh/vendor-completions COMPONENT Runtime)
+install(FILES ${completions}/sculpt.fish DESTINATION ${CMAKE_INSTALL_DATADIR}/fish/vendor_completions.d COMPONENT Runtime)

@@ -6,7 +6,7 @@
 set -euo pipefail
 
 packages=(
-  cmake g++ make pkg-config ccache clang-format clang-tidy help2man
+  cmake g++ make pkg-config ccache clang-format clang-tidy help2man dpkg-dev
   libopenvdb-dev libboost-iostreams-dev libimath-dev libtbb-dev libblosc-dev zlib1g-dev
   libgdcm-dev libgdcm-tools
   libvtk9-dev libopenexr-dev
