@@ -3,11 +3,11 @@
 #include "core/io/vdb_layout.h"
 #include "core/mesh/field_measures.h"
 #include "core/scan/kept_scan.h"
-#include "core/solids/wall_thickness.h"
 #include "sculpt/cli/commands.h"
 #include "sculpt/cli/document_input.h"
 #include "sculpt/cli/number_checks.h"
 #include "sculpt/cli/run_options.h"
+#include "sculpt/session/document_info.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -27,39 +27,6 @@ struct InfoOptions {
     RunOptions run;
     double thickness = 0.0;  ///< > 0: look for walls thinner than this
 };
-
-/// The first piece's thinnest wall under `under` as JSON: null when none is thinner.
-nlohmann::json thinnestJson(const FieldImage& field, double under)
-{
-    const std::optional<ThinnestWall> thinnest = thinnestWall(field, under);
-    if (!thinnest) return nullptr;
-    const openvdb::Vec3d& w = thinnest->where;
-    return {{"thickness", thinnest->thickness}, {"where", {w.x(), w.y(), w.z()}}};
-}
-
-nlohmann::json gridsJson(const VdbLayout& layout)
-{
-    nlohmann::json grids = nlohmann::json::array();
-    for (const VdbGridEntry& g : layout.grids)
-        grids.push_back({{"name", g.name}, {"type", g.type}, {"class", g.gridClass}});
-    return grids;
-}
-
-nlohmann::json toJson(const FieldMeasures& m, const std::string& units)
-{
-    auto vec = [](const openvdb::Vec3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); };
-    return {{"voxel_size", m.voxelSize},
-            {"units", units},
-            {"half_width_voxels", m.halfWidthVoxels},
-            {"active_voxels", m.activeVoxels},
-            {"memory_bytes", m.memoryBytes},
-            {"bbox_min", vec(m.bboxMin)},
-            {"bbox_max", vec(m.bboxMax)},
-            {"volume", m.volume},
-            {"area", m.area},
-            {"euler_characteristic", m.eulerCharacteristic},
-            {"components", m.components}};
-}
 
 void printMeasures(const FieldMeasures& m, const std::string& units)
 {
@@ -82,24 +49,6 @@ std::string hexColour(const openvdb::Vec3f& c)
     const auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
     std::snprintf(text, sizeof text, "#%02x%02x%02x", byte(c[0]), byte(c[1]), byte(c[2]));
     return text;
-}
-
-/// The pieces together: sums, the union of their boxes, the first's voxel size and band.
-FieldMeasures total(const std::vector<FieldMeasures>& pieces)
-{
-    FieldMeasures sum = pieces.front();
-    for (std::size_t i = 1; i < pieces.size(); ++i) {
-        const FieldMeasures& m = pieces[i];
-        sum.activeVoxels += m.activeVoxels;
-        sum.memoryBytes += m.memoryBytes;
-        sum.bboxMin = openvdb::math::minComponent(sum.bboxMin, m.bboxMin);
-        sum.bboxMax = openvdb::math::maxComponent(sum.bboxMax, m.bboxMax);
-        sum.volume += m.volume;
-        sum.area += m.area;
-        sum.eulerCharacteristic += m.eulerCharacteristic;
-        sum.components += m.components;
-    }
-    return sum;
 }
 
 /// The file's grids that are not pieces, their masks or the scan the document keeps (which have
@@ -133,33 +82,6 @@ void printPieces(const std::vector<Piece>& pieces, const std::vector<FieldMeasur
     std::printf("all pieces:\n");
 }
 
-/// The scan the document keeps (kept_scan.h) as JSON: its samples, where they came from, and
-/// what they cost in memory and in the file; null when it keeps none.
-nlohmann::json keptScanJson(const VdbCompanions& companions, const VdbLayout& layout, const std::string& path)
-{
-    const openvdb::FloatGrid::ConstPtr grid = findKeptScan(companions.grids);
-    if (!grid) return nullptr;
-    KeptScanRecord record;
-    try {
-        record = keptScanRecord(*grid);
-    } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
-    }
-    std::int64_t fileBytes = 0;
-    for (const VdbGridEntry& entry : layout.grids)
-        if (entry.name == grid->getName() && entry.located()) fileBytes = entry.end - entry.begin;
-    const openvdb::Coord& d = record.lattice.dims;
-    nlohmann::json kept = {{"dims", {d.x(), d.y(), d.z()}},
-                           {"source", record.source},
-                           {"sample_type", record.sampleType},
-                           {"iso", nullptr},
-                           {"memory_bytes", grid->memUsage()},
-                           {"file_bytes", fileBytes},
-                           {"dense_float_bytes", 4.0 * double(d.x()) * d.y() * d.z()}};
-    if (record.iso) kept["iso"] = *record.iso;
-    return kept;
-}
-
 void printKeptScan(const nlohmann::json& kept)
 {
     if (kept.is_null()) {
@@ -178,36 +100,21 @@ void printKeptScan(const nlohmann::json& kept)
 void runInfo(const InfoOptions& o)
 {
     const VdbPieces read = readPieces(o.input);
-    const std::vector<Piece>& pieces = read.pieces;
     const VdbLayout layout = scanVdbLayout(o.input.path);
-    const nlohmann::json kept = keptScanJson(read.companions, layout, o.input.path);
-    std::vector<FieldMeasures> measures;
-    for (const Piece& piece : pieces) measures.push_back(measureField(piece.field));
-    const FieldMeasures all = total(measures);
-    const std::string& units = pieces.front().field.units();
     if (o.run.quiet) return;
     if (o.run.json) {
-        nlohmann::json report = toJson(all, units);
+        nlohmann::json report = documentInfo(read, layout, o.input.path, o.thickness);
         report["command"] = "info";
         report["outputs"] = nlohmann::json::array();
-        report["frame"] = FieldImage::kFrame;
-        report["frame_recorded"] = !layout.frame.empty();
-        report["grid"] = pieces.front().field.grid().getName();
-        report["grids"] = gridsJson(layout);
-        report["kept_scan"] = kept;
-        report["pieces"] = nlohmann::json::array();
-        for (std::size_t i = 0; i < pieces.size(); ++i) {
-            nlohmann::json piece = toJson(measures[i], units);
-            const openvdb::Vec3f& c = pieces[i].colour;
-            piece["name"] = pieces[i].name;
-            piece["colour"] = {c[0], c[1], c[2]};
-            piece["visible"] = pieces[i].visible;
-            report["pieces"].push_back(piece);
-        }
-        if (o.thickness > 0.0) report["thinnest_wall"] = thinnestJson(pieces.front().field, o.thickness);
         std::cout << report.dump() << "\n";
         return;
     }
+    const std::vector<Piece>& pieces = read.pieces;
+    const nlohmann::json kept = keptScanJson(read.companions, layout, o.input.path);
+    std::vector<FieldMeasures> measures;
+    for (const Piece& piece : pieces) measures.push_back(measureField(piece.field));
+    const FieldMeasures all = totalMeasures(measures);
+    const std::string& units = pieces.front().field.units();
     std::printf("file:                 %s\n", o.input.path.c_str());
     if (pieces.size() == 1) {
         std::printf("grid:                 %s (the file holds %s)\n", pieces.front().field.grid().getName().c_str(),
