@@ -23,6 +23,13 @@ find_package(glfw3 3.3 REQUIRED)
 find_package(glm REQUIRED)
 find_package(OpenGL REQUIRED)
 find_package(PkgConfig REQUIRED)
+# The Python module: pybind11 (pybind11-dev) for the system's python3 (python3-dev).
+set(PYBIND11_FINDPYTHON ON)
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3)  # Debian's, which the package installs the module for
+endif()
+find_package(Python3 COMPONENTS Interpreter Development.Module REQUIRED)
+find_package(pybind11 CONFIG REQUIRED)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 
 if(SCULPT_BUILD_TESTS)

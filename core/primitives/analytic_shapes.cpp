@@ -79,4 +79,12 @@ FieldImage makeTorus(double majorRadiusWorld, double minorRadiusWorld, double vo
     return rasterizeSdf(torusSdf(majorRadiusWorld, minorRadiusWorld), voxelSize, halfWidthVoxels);
 }
 
+AnalyticSdf startingShapeSdf(const std::string& name, double size, double minor)
+{
+    if (name == "sphere") return sphereSdf(size);
+    if (name == "box") return boxSdf(size);
+    if (name == "torus") return torusSdf(size, minor > 0.0 ? minor : size / 3.0);
+    throw InputError("unknown shape '" + name + "' (sphere, box or torus)");
+}
+
 }  // namespace sculpt

@@ -20,6 +20,11 @@ AnalyticSdf boxSdf(double halfSideWorld);
 /// @throws InputError unless 0 < r < R, both finite.
 AnalyticSdf torusSdf(double majorRadiusWorld, double minorRadiusWorld);
 
+/// The starting shape `name` ("sphere", "box" or "torus"; `sculpt new --shape`): `size` is the
+/// sphere's radius, the box's half side or the torus's major radius, `minor` the torus's tube
+/// radius (0: size / 3). @throws InputError for another name or sizes as above.
+AnalyticSdf startingShapeSdf(const std::string& name, double size, double minor = 0.0);
+
 /// Convenience builders: rasterizeSdf(shapeSdf(...), voxelSize, halfWidthVoxels).
 FieldImage makeSphere(double radiusWorld, double voxelSize,
                       double halfWidthVoxels = FieldImage::kDefaultHalfWidthVoxels);

@@ -26,22 +26,13 @@ struct NewOptions {
     RunOptions run;
 };
 
-AnalyticSdf shapeSdf(const NewOptions& o)
-{
-    if (o.shape == "box") return boxSdf(o.radius);
-    if (o.shape == "torus") {
-        return torusSdf(o.radius, o.minorRadius > 0.0 ? o.minorRadius : o.radius / 3.0);
-    }
-    return sphereSdf(o.radius);
-}
-
 void runNew(const NewOptions& o)
 {
     AtomicFile::checkTarget(o.output);
     checkMeshOutput(o.mesh);
     if (const std::string problem = unitsProblem(o.units); !problem.empty())
         throw InputError("--units: the length unit cannot be: " + problem);
-    const AnalyticSdf shape = shapeSdf(o);
+    const AnalyticSdf shape = startingShapeSdf(o.shape, o.radius, o.minorRadius);
     FieldImage field = rasterizeSdf(shape, o.voxelSize);
     field.setUnits(o.units);
     writeFieldImage(field, o.output);
