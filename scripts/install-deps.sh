@@ -13,6 +13,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libgl1-mesa-dri
   libcli11-dev nlohmann-json3-dev
+  pybind11-dev python3-dev python3-numpy
   libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
   mricron-data libcgal-demo python3-jsonschema lib3mf-dev
   desktop-file-utils appstream shared-mime-info
