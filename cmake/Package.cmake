@@ -1,5 +1,5 @@
 # Debian packages (`cpack` in the build directory): sculpt (the programs, their man pages,
-# completions, desktop files and data) and sculpt-dev (the libraries, headers and CMake package),
+# completions, desktop files and data, the Python module) and sculpt-dev (the libraries, headers and CMake package),
 # for /usr. The programs' library dependencies are read from the binaries by dpkg-shlibdeps, so
 # `apt install ./sculpt_*.deb` on a fresh Debian 12 brings exactly what they need.
 set(CPACK_GENERATOR DEB)
@@ -23,7 +23,10 @@ set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/volumetric-sculpt/sculpt")
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME sculpt)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
 # The window draws with OpenGL: Mesa's drivers where no other is installed.
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libgl1-mesa-dri")
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libgl1-mesa-dri, python3-numpy")
+# The Python module is built for the system's python3 (its ABI: one minor version).
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS
+    "python3 (>= ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}~), python3 (<< ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR}.99)")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME sculpt-dev)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 # The static libraries' dependencies are the -dev packages find_package(sculpt) looks for.

@@ -80,6 +80,18 @@ VdbCompanions keptScanOf(const ImportReport& report)
     return companions;
 }
 
+/// A solid's measures, for the report's JSON and its prose ("volume V, area A, C components").
+nlohmann::json solidJson(const FieldMeasures& m)
+{
+    return {{"volume", m.volume}, {"area", m.area}, {"components", m.components}};
+}
+std::string describeSolid(const FieldMeasures& m)
+{
+    std::ostringstream text;
+    text << "volume " << m.volume << ", area " << m.area << ", " << m.components << " components";
+    return text.str();
+}
+
 /// `--labels`: a piece per label, written as one document.
 void runLabelsImport(const ImportCommandOptions& o)
 {
@@ -103,12 +115,10 @@ void runLabelsImport(const ImportCommandOptions& o)
     out.say("wrote " + o.output + ":");
     for (const Piece& piece : pieces) {
         const FieldMeasures m = measureField(piece.field);
-        out["pieces"].push_back(
-            {{"name", piece.name}, {"volume", m.volume}, {"area", m.area}, {"components", m.components}});
-        std::ostringstream line;
-        line << "  '" << piece.name << "': volume " << m.volume << ", area " << m.area << ", " << m.components
-             << " components";
-        out.say(line.str());
+        nlohmann::json entry = solidJson(m);
+        entry["name"] = piece.name;
+        out["pieces"].push_back(entry);
+        out.say("  '" + piece.name + "': " + describeSolid(m));
     }
     writePiecesMeshes(pieces, o.mesh, out);
     out.print();
@@ -134,9 +144,8 @@ void runImport(const ImportCommandOptions& o)
     out["iso_chosen"] = report.isoChosen;
     out["voxel_size"] = report.voxelSize;
     out["anti_aliased"] = report.maskAntiAliased;
-    out["volume"] = m.volume;
-    out["area"] = m.area;
-    out["components"] = m.components;
+    const nlohmann::json solid = solidJson(m);
+    for (const auto& [key, value] : solid.items()) out[key] = value;
     std::ostringstream head;
     head << "imported " << o.input << " (" << report.kind << ")";
     if (o.labelOption->count()) head << " label " << o.label;
@@ -152,10 +161,7 @@ void runImport(const ImportCommandOptions& o)
                                    "anti-aliased (--no-antialias keeps them)"
                                  : "the surface's voxel terraces were anti-aliased");
     }
-    std::ostringstream wrote;
-    wrote << "wrote " << o.output << ": volume " << m.volume << ", area " << m.area << ", " << m.components
-          << " components";
-    out.say(wrote.str());
+    out.say("wrote " + o.output + ": " + describeSolid(m));
     writeMeshOutput(field, o.mesh, out);
     out.print();
 }

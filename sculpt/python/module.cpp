@@ -44,7 +44,8 @@ namespace fs = std::filesystem;
 /// other grids (the scan it keeps, masks), as `sculpt` reads and writes them.
 struct PyDocument {
     VdbPieces file;
-    std::string name;  ///< where it came from, for messages
+    std::string name;          ///< where it came from, for messages
+    bool madeAsField = false;  ///< a new shape or an import: written as `sculpt new` and `import` write it
 
     FieldImage& edited() { return file.pieces.front().field; }
 };
@@ -56,7 +57,16 @@ PyDocument documentOf(FieldImage field, std::string name, VdbCompanions companio
     VdbPieces file;
     file.pieces.emplace_back(look, std::move(field));
     file.companions = std::move(companions);
-    return {std::move(file), std::move(name)};
+    return {std::move(file), std::move(name), true};
+}
+
+/// Writes the document as the program writes the same one (a lone field with no look of its own
+/// as a field, else its pieces).
+void write(const PyDocument& document, const fs::path& path)
+{
+    if (document.madeAsField && document.file.pieces.size() == 1)
+        writeFieldImage(document.file.pieces.front().field, path, document.file.companions);
+    else writeVdbPieces(document.file.pieces, path, document.file.companions);
 }
 
 py::object fromJson(const nlohmann::json& json) { return py::module_::import("json").attr("loads")(json.dump()); }
@@ -78,7 +88,7 @@ PyDocument newDocument(const std::string& shape, double radius, double minorRadi
 PyDocument openDocument(const fs::path& path, const std::string& grid)
 {
     py::gil_scoped_release release;
-    return {readVdbPieces(path, grid), path.string()};
+    return {readVdbPieces(path, grid), path.string(), false};
 }
 
 PyDocument importFile(const fs::path& path, std::optional<double> voxelSize, std::optional<double> iso,
@@ -95,7 +105,7 @@ PyDocument importFile(const fs::path& path, std::optional<double> voxelSize, std
     options.antiAliasMask = antialias;
     ImportReport report;
     PyDocument document = PythonProgress(progress).run([&](const Progress& p) {
-        if (labels) return PyDocument{{importLabelPieces(path, options, report, p), {}, {}}, path.string()};
+        if (labels) return PyDocument{{importLabelPieces(path, options, report, p), {}, {}}, path.string(), false};
         return documentOf(importShape(path, options, report, p), path.string());
     });
     if (report.keptScan) document.file.companions.grids.push_back(report.keptScan);
@@ -107,7 +117,7 @@ PyDocument importFile(const fs::path& path, std::optional<double> voxelSize, std
 void save(const PyDocument& document, const fs::path& path)
 {
     py::gil_scoped_release release;
-    writeVdbPieces(document.file.pieces, path, document.file.companions);
+    write(document, path);
 }
 
 const Piece& pieceNamed(const PyDocument& document, const std::optional<std::string>& name)
@@ -147,7 +157,7 @@ py::object info(const PyDocument& document, double thickness)
     nlohmann::json report;
     {
         py::gil_scoped_release release;
-        writeVdbPieces(document.file.pieces, file, document.file.companions);
+        write(document, file);
         try {
             report = documentInfo(document.file, scanVdbLayout(file), document.name, thickness);
         } catch (...) {

@@ -47,6 +47,12 @@ exec_line=${exec_line//%s/128}
 [[ $(od -An -tx1 -N8 "$prefix/thumbnail.png" | tr -d ' \n') == 89504e470d0a1a0a ]] || fail "the thumbnail is no PNG"
 [[ $(od -An -tu4 --endian=big -j16 -N8 "$prefix/thumbnail.png" | xargs) == "128 128" ]] || fail "the thumbnail is not 128 x 128"
 
+# The Python module imports from where it was installed.
+python=$(find "$prefix/lib" -name "sculpt.cpython-*.so" | head -n 1)
+[[ -n $python ]] || fail "the Python module is not installed"
+PYTHONPATH=$(dirname "$python") /usr/bin/python3 -c "import sculpt; assert sculpt.new(radius=3).info()['euler_characteristic'] == 2" \
+  || fail "import sculpt from the install"
+
 # Another program finds the installed libraries with find_package(sculpt) and links sculpt::core.
 cmake -S "$(dirname "$0")/consumer" -B "$prefix/consumer" -DCMAKE_PREFIX_PATH="$prefix" \
       -DCMAKE_BUILD_TYPE=Release >"$prefix/consumer.log" 2>&1 || { cat "$prefix/consumer.log"; fail "find_package(sculpt)"; }

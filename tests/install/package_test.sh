@@ -16,6 +16,8 @@ for library in libopenvdb libvtk9 libgdcm libglfw3 libtbb libopenexr; do
   grep -q "$library" <<<"$depends" || fail "the runtime package does not depend on $library: $depends"
 done
 contents=$(dpkg-deb --contents "$runtime")
+grep -q "python3 (>= " <<<"$depends" || fail "the runtime package does not depend on python3: $depends"
+grep -q "dist-packages/sculpt.cpython" <<<"$(dpkg-deb --contents "$runtime")" || fail "no Python module in /usr/lib/python3/dist-packages"
 for file in usr/bin/sculpt usr/bin/sculpt-ui usr/share/man/man1/sculpt.1 usr/share/bash-completion/completions/sculpt \
             usr/share/applications/io.github.volumetric_sculpt.SculptUi.desktop usr/share/mime/packages/sculpt.xml \
             usr/share/thumbnailers/sculpt.thumbnailer usr/share/doc/sculpt/LICENSE; do
