@@ -91,11 +91,35 @@ PyDocument openDocument(const fs::path& path, const std::string& grid)
     return {readVdbPieces(path, grid), path.string(), false};
 }
 
+/// `raw_dims` and the other raw_ keywords: a file of bare samples (sculpt import --raw-dims ...).
+std::optional<RawLayout> rawLayout(const std::optional<std::array<int, 3>>& dims, const std::string& type,
+                                   const std::array<double, 3>& spacing, const std::array<double, 3>& origin,
+                                   bool bigEndian, std::size_t header)
+{
+    if (!dims) return std::nullopt;
+    RawLayout raw;
+    raw.dims = openvdb::Coord((*dims)[0], (*dims)[1], (*dims)[2]);
+    raw.type = type;
+    raw.spacing = openvdb::Vec3d(spacing[0], spacing[1], spacing[2]);
+    raw.origin = openvdb::Vec3d(origin[0], origin[1], origin[2]);
+    raw.bigEndian = bigEndian;
+    raw.headerBytes = header;
+    return raw;
+}
+
 PyDocument importFile(const fs::path& path, std::optional<double> voxelSize, std::optional<double> iso,
                       std::optional<int> label, bool labels, double smooth, bool largestComponent, bool keepScan,
-                      std::optional<bool> antialias, const py::object& progress)
+                      std::optional<bool> antialias, const std::optional<std::array<int, 6>>& crop,
+                      const std::optional<std::array<int, 3>>& rawDims, const std::string& rawType,
+                      const std::array<double, 3>& rawSpacing, const std::array<double, 3>& rawOrigin,
+                      bool rawBigEndian, std::size_t rawHeader, const py::object& progress)
 {
     ImportOptions options;
+    if (crop) {
+        const std::array<int, 6>& c = *crop;
+        options.crop = openvdb::CoordBBox(openvdb::Coord(c[0], c[1], c[2]), openvdb::Coord(c[3], c[4], c[5]));
+    }
+    options.raw = rawLayout(rawDims, rawType, rawSpacing, rawOrigin, rawBigEndian, rawHeader);
     options.voxelSize = voxelSize;
     options.iso = iso;
     options.label = label;
@@ -298,6 +322,9 @@ PYBIND11_MODULE(sculpt, m)
     m.def("open", &openDocument, "path"_a, "grid"_a = "", "Reads a .vdb document.");
     m.def("import_file", &importFile, "path"_a, "voxel_size"_a = py::none(), "iso"_a = py::none(),
           "label"_a = py::none(), "labels"_a = false, "smooth"_a = 0.0, "largest_component"_a = false,
-          "keep_scan"_a = true, "antialias"_a = py::none(), "progress"_a = py::none(),
+          "keep_scan"_a = true, "antialias"_a = py::none(), "crop"_a = py::none(), "raw_dims"_a = py::none(),
+          "raw_type"_a = "uint8", "raw_spacing"_a = std::array<double, 3>{1.0, 1.0, 1.0},
+          "raw_origin"_a = std::array<double, 3>{0.0, 0.0, 0.0}, "raw_big_endian"_a = false, "raw_header"_a = 0,
+          "progress"_a = py::none(),
           "A scan (NIfTI, NRRD, MetaImage, INRIMAGE, DICOM) or a mesh as a document, with sculpt import's options.");
 }

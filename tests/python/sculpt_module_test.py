@@ -65,6 +65,20 @@ class SculptModule(unittest.TestCase):
         run_sculpt("import", "ring.stl", "--voxel-size", "0.4", "-o", "cli.vdb", cwd=self.path)
         sculpt.import_file(os.path.join(self.path, "ring.stl"), voxel_size=0.4).save(os.path.join(self.path, "py.vdb"))
         self.assertEqual(file_bytes(os.path.join(self.path, "cli.vdb")), file_bytes(os.path.join(self.path, "py.vdb")))
+        # A label map of bare samples, a piece per label: the raw_ keywords are --raw-dims and the rest.
+        ball = numpy.zeros((32, 32, 48), dtype=numpy.uint8)  # z, y, x: x varies fastest in the file
+        z, y, x = numpy.mgrid[0:32, 0:32, 0:48]
+        ball[numpy.maximum(numpy.maximum(abs(x - 15.5), abs(y - 15.5)), abs(z - 15.5)) < 10] = 1
+        ball[numpy.sqrt((x - 31.5) ** 2 + (y - 15.5) ** 2 + (z - 15.5) ** 2) < 6] = 3
+        ball.tofile(os.path.join(self.path, "map.raw"))
+        run_sculpt("import", "map.raw", "--raw-dims", "48,32,32", "--labels", "--crop", "0,0,0,47,31,30", "-o",
+                   "labels-cli.vdb", cwd=self.path)
+        labels = sculpt.import_file(os.path.join(self.path, "map.raw"), raw_dims=(48, 32, 32), labels=True,
+                                    crop=(0, 0, 0, 47, 31, 30))
+        self.assertEqual(labels.pieces, ["label 1", "label 3"])
+        labels.save(os.path.join(self.path, "labels-py.vdb"))
+        self.assertEqual(file_bytes(os.path.join(self.path, "labels-cli.vdb")),
+                         file_bytes(os.path.join(self.path, "labels-py.vdb")))
         scan = "/usr/share/mricron/templates/ch2bet.nii.gz"
         if os.path.exists(scan):
             run_sculpt("import", scan, "--voxel-size", "4", "-o", "brain-cli.vdb", cwd=self.path)
