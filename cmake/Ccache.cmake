@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Compiles through ccache when it is installed (scripts/install-deps.sh adds it), so a rebuild
 # after a fix, in any of the build trees (build/, build-sanitize/), recompiles only what changed
 # since any earlier build. The precompiled headers need ccache's PCH sloppiness to be cached.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Finds every third-party package. The order matters on Debian 12:
 # VTK must come before anything that loads OpenVDB's FindTBB.cmake, otherwise
 # CMake stops with "Some (but not all) targets in this export set were already defined".

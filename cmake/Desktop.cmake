@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Desktop integration (freedesktop.org): the launcher, the AppStream description software centres
 # show, a MIME type for .vdb files (OpenVDB's magic number), a thumbnailer that renders them, and
 # the icon, rendered at build time by the program itself (the window shows it too).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What `cmake --install` puts where (GNU layout): the two programs; the core and session libraries
 # with their headers (include/sculpt/core/..., include/sculpt/sculpt/session/...) and the CMake
 # package that finds them (find_package(sculpt): sculpt::core, sculpt::session); the file formats'

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Debian packages (`cpack` in the build directory): sculpt (the programs, their man pages,
 # completions, desktop files and data, the Python module) and sculpt-dev (the libraries, headers and CMake package),
 # for /usr. The programs' library dependencies are read from the binaries by dpkg-shlibdeps, so

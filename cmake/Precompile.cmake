@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # sculpt_precompile(target HEADERS header... [LIGHT source...]): the third-party headers nearly
 # every file of a target includes, parsed once per target instead of once per file (OpenVDB's
 # headers cost about six seconds per translation unit, CLI11's five). LIGHT lists the target's

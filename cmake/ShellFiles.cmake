@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Made from the built programs, so they always say what the build does: the man pages (help2man,
 # from --help and each command's --help) and the shell completions (`sculpt --completion SHELL`,
 # from the command tree). Installed where man and each shell look.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The build's version for `--version` and bug reports: the project's version and the git commit
 # it was configured from ("unknown" outside a git checkout), in a generated header that the two
 # programs include through the sculpt_version interface target.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # sculpt_warnings(target): our own code compiles without warnings under -Wall -Wextra -Wpedantic
 # -Wshadow; with SCULPT_WERROR (CI turns it on) a warning fails the build. Third-party headers
 # are included as SYSTEM, so their warnings do not drown ours.

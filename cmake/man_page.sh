@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Makes PROGRAM's man page with help2man from its --help and --version, with a COMMANDS section
 # holding each COMMAND's own --help.   usage: man_page.sh PROGRAM OUTPUT SUMMARY [COMMAND...]
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Renders the application icon with the program itself: the clay ball with the face the example
 # stroke script sculpts, ray-traced at each size on a transparent background.
 # usage: render_icons.sh SCULPT STROKES OUTDIR NAME

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configures and builds the Release tree in build/ (tests and benchmarks included).
 # SCULPT_WERROR=ON in the environment makes any warning in our code an error (CI sets it).
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks the dependency rules of ARCHITECTURE.md on the includes (a CTest entry runs this): each
 # folder of core/ includes only the folders it may use, core/ nothing of sculpt/ or ui/, only
 # core/scan and core/io reach VTK, the session nothing of the command line; in ui/ each folder

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The main job, from a fresh Debian 12 machine: install what is missing, build, and open
 # sculpt-ui on the default clay ball. On a machine with no display, say so, then show the same
 # thing headless: replay the face script in sculpt-ui under Xvfb, save the sculpted document,

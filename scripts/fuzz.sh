@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fuzzes the parsers with libFuzzer under AddressSanitizer and UndefinedBehaviorSanitizer, each
 # target for SECONDS (default 120: the fifteen targets take about 15 minutes on 2 cores), starting
 # from the seed corpus kept in tests/fuzz/corpus/.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages this project builds, tests and runs with. Idempotent: only
 # missing packages are installed, so a second run returns in a moment. Needs root (or sudo).
 # python3-jsonschema, lib3mf-dev, desktop-file-utils, appstream, shared-mime-info: the independent

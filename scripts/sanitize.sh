@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the tree with AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/ (see
 # scripts/sanitizer-tree.sh) and runs the whole test suite there; any report fails its test.
 #   usage: scripts/sanitize.sh [ctest arguments...]   e.g. -R MeshImport, -LE ui

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Sourced by scripts/fuzz.sh and scripts/sanitize.sh: configures build-sanitize/, one clang tree
 # compiled with AddressSanitizer, UndefinedBehaviorSanitizer and libFuzzer's coverage hooks, so
 # that the fuzz targets and the test suite are built from the same objects, once.

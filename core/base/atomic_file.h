@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file atomic_file.h
 /// @brief Write a file so that a crash never leaves it half written.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file cgroup_memory.h
 /// @brief The memory a control group still allows this process: the limit a batch scheduler

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file disk_budget.h
 /// @brief Refuse a long write (a sequence of frames) the disk cannot hold, before it fills it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file enum_names.h
 /// @brief The names an enumeration is written with in files and messages, in one table per enum.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file file_extension.h
 /// @brief How file formats are recognised: by a path's lower-case extension.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file interrupt_cleanup.h
 /// @brief Files that exist only while being written (AtomicFile's temporaries), removed when an

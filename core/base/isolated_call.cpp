@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/base/isolated_call.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file isolated_call.h
 /// @brief Runs a third-party decoder in a forked child process under an address-space and CPU

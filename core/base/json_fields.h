@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file json_fields.h
 /// @brief Reading typed fields from JSON documents with messages that say where and what.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file memory_budget.h
 /// @brief Refuse work that would need more memory than the process may have, before allocating.

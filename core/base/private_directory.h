@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file private_directory.h
 /// @brief A directory only its owner may enter (0700), as the XDG Base Directory specification

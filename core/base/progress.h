@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file progress.h
 /// @brief How long operations report progress and learn they should stop.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file text_format.h
 /// @brief Numbers as people read them, for messages and reports.

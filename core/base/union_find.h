@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file union_find.h
 /// @brief Disjoint sets over 0..n-1 (path halving): the shells of a mesh, the pieces of a field.

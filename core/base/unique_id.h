@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file unique_id.h
 /// @brief An identity that is never handed out twice in a process: what a viewer keys its cache

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file warning_summary.h
 /// @brief Warnings said once per kind: a label map of 2,000 labels must not print 2,000 lines

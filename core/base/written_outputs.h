@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file written_outputs.h
 /// @brief What a long write makes (a morph's frames, a tracked sequence, a sequence's renders,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file add_carve.cpp
 /// @brief add / carve: the union or difference of a ball swept as a capsule from the previous
 ///        stamp, blended into the surface by a smooth minimum whose width the falloff sets.

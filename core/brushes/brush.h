@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file brush.h
 /// @brief Sculpting brushes: what one stamp (dab) of a stroke does to the field.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file brush_tools.h
 /// @brief The tools behind applyStamp (brush.h), one file each; see brush.h for what each does.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file flatten.cpp
 /// @brief flatten: the surface under the brush moves part of its way to the least-squares plane
 ///        through it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file follow.cpp
 /// @brief follow: the surface under the brush moves part of its way to a target surface (the
 ///        level-set motion's target term, restricted to the brush and weighted by its falloff).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file grab.cpp
 /// @brief grab: the surface under the brush follows the pointer's drag from the previous stamp.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file inflate.cpp
 /// @brief inflate / deflate: the surface under the brush moves along its normal.
 

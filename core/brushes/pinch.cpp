@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file pinch.cpp
 /// @brief pinch: the surface moves towards the stroke line through the stamp (sharpens creases).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file primitive_stamp.cpp
 /// @brief primitive: a primitive scene, its origin placed at the stamp, combined by its operation.
 

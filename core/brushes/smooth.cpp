@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// @file smooth.cpp
 /// @brief smooth: mean-curvature flow under the brush, weighted by its falloff; with keepVolume
 ///        the volume it removed under the brush is given back by an offset of the same falloff.

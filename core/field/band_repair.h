@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file band_repair.h
 /// @brief Float grids from other programs that are meant as distances but are not a narrow

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file band_rule.h
 /// @brief What the narrow band stores of a value: the one rule every writer of the field follows.

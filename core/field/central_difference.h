@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file central_difference.h
 /// @brief The central-difference gradient of a sampled field, and the closest surface point it

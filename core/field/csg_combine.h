@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file csg_combine.h
 /// @brief Combines a shape into the sculpt: union, difference, intersection or replace.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dense_gather.h
 /// @brief Copies a box of a sparse tree into a dense array, leaf by leaf.

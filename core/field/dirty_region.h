@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dirty_region.h
 /// @brief The set of leaf nodes an edit touched.

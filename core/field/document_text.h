@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_text.h
 /// @brief The words a document holds, wherever they come from (a `.vdb`'s grid names and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file field_image.h
 /// @brief The sculpted shape: a narrow-band signed distance field on a sparse grid.

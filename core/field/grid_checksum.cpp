@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/grid_checksum.h"
 
 #include <openvdb/tree/LeafManager.h>

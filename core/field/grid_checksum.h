@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file grid_checksum.h
 /// @brief A 64-bit fingerprint of a grid's values and active topology.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file grid_tiles.h
 /// @brief The tiles of a float tree that are not its background (a value standing for a whole

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file leaf_journal.h
 /// @brief Copy-on-write record of the leaves an edit changed, for bit-exact undo and redo.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mean_curvature.h
 /// @brief The mean curvature of a sampled distance field by central differences: what the

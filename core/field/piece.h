@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file piece.h
 /// @brief One part of a document: a level set of its own that never blends with the others

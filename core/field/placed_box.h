@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file placed_box.h
 /// @brief Boxes of pieces: a field's surface box in its own world, and a box carried by a

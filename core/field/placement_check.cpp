@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/placement_check.h"
 
 #include "core/base/text_format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file placement_check.h
 /// @brief What a piece's placement may be, wherever one comes from (a document's metadata, a

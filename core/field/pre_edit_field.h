@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file pre_edit_field.h
 /// @brief A read-only view of a field as it was before the edits a LeafJournal holds, without

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/surface_mask.h"
 
 #include <tbb/parallel_for.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_mask.h
 /// @brief Reading the field's mask where an edit lands, and holding the share of the edit it holds.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_ray.h
 /// @brief The first crossing of a ray with the zero level set of a field (as it is, or as it was

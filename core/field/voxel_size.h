@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file voxel_size.h
 /// @brief The voxel sizes a model may have, and the lattice of one.

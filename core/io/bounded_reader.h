@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file bounded_reader.h
 /// @brief Reads little-endian fields from a stream of known size, refusing any length or count

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file byte_order.h
 /// @brief Numbers as binary formats store them, in either byte order.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file content_uuid.h
 /// @brief Documents whose bytes follow from their content alone.

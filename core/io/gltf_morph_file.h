@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file gltf_morph_file.h
 /// @brief A mesh of fixed connectivity whose vertices move, as a binary glTF 2.0 file (`.glb`):

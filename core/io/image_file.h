@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file image_file.h
 /// @brief Writing a rendered image: multi-layer OpenEXR for compositing, 8-bit PNG for a picture.

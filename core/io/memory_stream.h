@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file memory_stream.h
 /// @brief An input stream over bytes already in memory, at the file positions they came from.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_file.h
 /// @brief Mesh export for printing and rendering: binary PLY (ours, with normals), OBJ and binary

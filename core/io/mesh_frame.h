@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_frame.h
 /// @brief The frame a mesh file's coordinates are in, named in its header as Slicer writes and

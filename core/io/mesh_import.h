@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_import.h
 /// @brief Triangle meshes (OBJ, PLY, STL, OFF) into editable field images.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_sequence.h
 /// @brief A mesh of fixed connectivity whose vertices move: what the sequence writers (glTF

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file metadata_seal.h
 /// @brief The seal over the metadata a document says about itself (every `sculpt.*` field of the

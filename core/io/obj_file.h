@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file obj_file.h
 /// @brief Wavefront OBJ meshes: the positions and faces; texture coordinates, normals, groups

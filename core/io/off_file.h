@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file off_file.h
 /// @brief OFF meshes (Geomview, CGAL, Princeton's shape benchmark), which VTK cannot read.

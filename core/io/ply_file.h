@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file ply_file.h
 /// @brief PLY meshes (Stanford): read in text and both binary byte orders, every length and index

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file point_cache_file.h
 /// @brief Point caches (`.pc2`, the format of Blender's Mesh Cache modifier and 3ds Max): the

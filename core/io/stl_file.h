@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file stl_file.h
 /// @brief STL meshes, binary and text: three corners per triangle (joined where they coincide

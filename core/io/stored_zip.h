@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file stored_zip.h
 /// @brief A ZIP archive of stored (uncompressed) entries: the container of 3MF files. Entries

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file text_lines.h
 /// @brief The lines of a text file as words, for the mesh readers (OBJ, OFF, text PLY and STL):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file threemf_file.h
 /// @brief 3MF export: the format PrusaSlicer, Bambu Studio and Cura open by default. Unlike STL it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file usd_mesh_file.h
 /// @brief A mesh sequence as a USD text layer (`.usda`): one Mesh prim with fixed face lists and

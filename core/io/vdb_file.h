@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vdb_file.h
 /// @brief Field images in OpenVDB's `.vdb` format, readable by Houdini, Blender and OpenVDB tools.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vdb_layout.h
 /// @brief What a `.vdb` file declares (header, file metadata, the table of grids with each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/io/vdb_tree_check.h"
 
 #include <openvdb/io/Compression.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vdb_tree_check.h
 /// @brief Walks a float grid's transform and tree in a `.vdb` file the way OpenVDB's reader

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/io/vtk_error_catcher.h"
 
 #include <vtkLogger.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vtk_error_catcher.h
 /// @brief Catches what VTK reports during one call instead of letting it print to stderr, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vtk_logging.h
 /// @brief VTK's logger kept off stderr, for programs (VTK-free header: the command line's main

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file band_redistance.h
 /// @brief Local redistancing of a narrow band after an edit moved it by up to a voxel.

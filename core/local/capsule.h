@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file capsule.h
 /// @brief The points within a distance of a segment: the region a stamp or a stroke step covers.

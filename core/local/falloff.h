@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file falloff.h
 /// @brief How strongly a brush acts at a distance from its centre.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/local/local_patch.h"
 
 #include "core/field/band_rule.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file local_patch.h
 /// @brief A small copy of the field around an edit, worked on alone and written back in place.

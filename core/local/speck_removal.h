@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file speck_removal.h
 /// @brief Removes the specks an edit can leave: tiny closed shells of one sign (a few voxels of

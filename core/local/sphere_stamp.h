@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sphere_stamp.h
 /// @brief The elementary local edit: add (union) or carve (difference) a ball.

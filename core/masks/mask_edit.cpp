@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/masks/mask_edit.h"
 
 #include "core/field/central_difference.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mask_edit.h
 /// @brief The one way the mask is written: a rule gives each voxel of some of the field's leaves

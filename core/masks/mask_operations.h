@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mask_operations.h
 /// @brief What a user does to the whole mask at once: invert, clear, blur, sharpen, grow, shrink.

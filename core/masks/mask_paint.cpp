@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/masks/mask_paint.h"
 
 #include "core/local/capsule.h"

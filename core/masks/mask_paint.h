@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mask_paint.h
 /// @brief The mask brush: one stamp paints or erases the mask on the surface under it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/masks/mask_selection.h"
 
 #include "core/base/enum_names.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mask_selection.h
 /// @brief Masking what a rule selects at once: the clay inside a box or lasso drawn on the screen,

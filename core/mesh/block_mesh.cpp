@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/block_mesh.h"
 
 namespace sculpt {

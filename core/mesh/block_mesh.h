@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file block_mesh.h
 /// @brief The cached surface of one block of cells.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file block_mesher.h
 /// @brief Marching cubes over one block of a narrow-band level set.

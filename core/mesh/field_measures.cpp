@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/field_measures.h"
 
 #include "core/base/union_find.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file field_measures.h
 /// @brief What `sculpt info` reports about a field image: size, storage and shape measures.

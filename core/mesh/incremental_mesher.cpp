@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/incremental_mesher.h"
 
 #include "core/mesh/block_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file incremental_mesher.h
 /// @brief The surface of a field image as cached block meshes, re-meshed only where it changed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/marching_cubes_table.h"
 
 #include <stdexcept>

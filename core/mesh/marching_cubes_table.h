@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file marching_cubes_table.h
 /// @brief The marching-cubes case table, generated so that it is consistent across cells.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/mesh_welder.h"
 
 #include <tbb/parallel_reduce.h>

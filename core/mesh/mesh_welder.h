@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_welder.h
 /// @brief Joins block meshes into one shared-vertex mesh by their global edge keys.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/polygon_soup.h"
 
 #include <cstring>

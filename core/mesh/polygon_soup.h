@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file polygon_soup.h
 /// @brief Meshes as files hold them: polygons of any size, and vertices repeated where a format

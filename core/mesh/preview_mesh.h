@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file preview_mesh.h
 /// @brief A quick, coarse surface of a large field image: what the window shows while the full

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/mesh/surface_statistics.h"
 
 #include "core/base/union_find.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_statistics.h
 /// @brief Volume, area, Euler characteristic and shell count of an IncrementalMesher's surface,

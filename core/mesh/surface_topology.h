@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_topology.h
 /// @brief The topology of a closed triangulated surface: its Euler characteristic and shells, and

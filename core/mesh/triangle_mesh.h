@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file triangle_mesh.h
 /// @brief An indexed triangle mesh in world coordinates: what meshers produce and writers save.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/motion/level_set_evolution.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file level_set_evolution.h
 /// @brief Moves a field image's surface under a composite normal speed (motion_terms.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph.h
 /// @brief Automatic morphing: the source surface follows a target shape by level-set motion

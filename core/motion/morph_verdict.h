@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph_verdict.h
 /// @brief What a morph's result means for its user: which rule stopped it and what would help.

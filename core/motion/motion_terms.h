@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file motion_terms.h
 /// @brief The terms of the normal speed that moves a level set (Cani, eq. 1):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file shape_distance.h
 /// @brief How far apart two surfaces are, read at the points where each crosses the grid's

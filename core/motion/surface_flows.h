@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_flows.h
 /// @brief Whole-shape operations built on LevelSetEvolution: smooth and offset.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file volume_estimate.h
 /// @brief Enclosed volume and area of a level set that need not be a signed distance.

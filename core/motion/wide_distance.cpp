@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/motion/wide_distance.h"
 
 #include "core/base/memory_budget.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file wide_distance.h
 /// @brief A shape's signed distance far beyond its narrow band. A narrow band reads its half

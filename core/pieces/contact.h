@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file contact.h
 /// @brief Whether two pieces overlap, looked for only where their local boxes meet

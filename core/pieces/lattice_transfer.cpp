@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/pieces/lattice_transfer.h"
 
 #include <openvdb/tools/LevelSetRebuild.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file lattice_transfer.h
 /// @brief One piece's field on another's voxels: what merging and pushing two pieces need, since

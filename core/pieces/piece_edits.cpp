@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/pieces/piece_edits.h"
 
 #include "core/field/csg_combine.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file piece_edits.h
 /// @brief What `sculpt pieces` (and the Pieces panel) do to pieces besides moving them: merge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/pieces/push.h"
 
 #include "core/field/placed_box.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file push.h
 /// @brief Pieces that do not blend deform on contact (Desbrun, Tsingos and Cani 1995, section 5;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file analytic_shapes.h
 /// @brief Exact signed distances of the starting shapes (sphere, box, torus), centred at the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file field_kernels.h
 /// @brief Field functions of the distance r to a skeleton (the soft-object literature).

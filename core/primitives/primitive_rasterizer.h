@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file primitive_rasterizer.h
 /// @brief Bakes a primitive set into a narrow-band level set.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file primitive_set.h
 /// @brief Implicit primitives blended into one field (Desbrun, Tsingos & Cani 1995).

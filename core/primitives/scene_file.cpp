@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/primitives/scene_file.h"
 
 #include "core/base/errors.h"

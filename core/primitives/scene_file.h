@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scene_file.h
 /// @brief Primitive scenes in JSON (schema: data/scene.schema.json; format: README).

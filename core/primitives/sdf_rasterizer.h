@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sdf_rasterizer.h
 /// @brief Samples an exact analytic signed distance function into a narrow-band level set.

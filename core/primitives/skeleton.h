@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file skeleton.h
 /// @brief The convex skeletons a primitive's field is built around: point, segment, triangle,

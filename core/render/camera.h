@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file camera.h
 /// @brief A pinhole camera: where it stands, what it looks at, and the ray through any point of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file ray_tracer.h
 /// @brief Final images of a sculpt, ray-traced against the level set itself.

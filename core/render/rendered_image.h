@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file rendered_image.h
 /// @brief What a render produces: colour with coverage, camera distance and surface normal per

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/render/surface_extent.h"
 
 #include <algorithm>

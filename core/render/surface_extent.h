@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_extent.h
 /// @brief Where a surface may be, for framing it in a camera: the world bounding box of its band

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/scan/dicom_directory.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dicom_directory.h
 /// @brief Which files of a directory are DICOM image slices: those its DICOMDIR names, when it

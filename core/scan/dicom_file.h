@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dicom_file.h
 /// @brief One DICOM file's image as GDCM decodes it, with each frame's place in the patient.

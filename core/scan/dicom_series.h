@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dicom_series.h
 /// @brief A DICOM series (a directory of slices, or one multi-frame file) assembled into one scan.

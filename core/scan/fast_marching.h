@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file fast_marching.h
 /// @brief First-order distances from a surface on a small dense box of voxels.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file header_checks.h
 /// @brief What a scan's header claims, checked against the file before a third-party reader

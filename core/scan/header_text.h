@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file header_text.h
 /// @brief What the text headers of NRRD and MetaImage files share: lines read with a bound,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/scan/inrimage_file.h"
 
 #include "core/base/errors.h"

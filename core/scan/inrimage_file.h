@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file inrimage_file.h
 /// @brief INRIA's INRIMAGE-4 format (.inr, .inr.gz: CGAL's sample segmentations, its mesher's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file kept_scan.h
 /// @brief The scan a document was imported from, kept in the document: its samples as a float

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file label_map.h
 /// @brief A document's pieces given back as a segmentation: a label per sample of a scan's

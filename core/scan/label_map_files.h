@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file label_map_files.h
 /// @brief A label map written as the segmentation tools read it: NIfTI-1 (.nii, .nii.gz), NRRD

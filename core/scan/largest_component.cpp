@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/scan/largest_component.h"
 
 #include "core/scan/mask_regions.h"

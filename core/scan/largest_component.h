@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file largest_component.h
 /// @brief Keeps the largest solid piece of a shape, without cavities: one closed shell to print.

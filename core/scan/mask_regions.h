@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mask_regions.h
 /// @brief Face-connected regions of a bit mask (a BoolTree's active voxels and tiles).

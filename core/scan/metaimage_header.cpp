@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // checkMetaImageHeader (header_checks.h): a MetaImage's text header and the samples it says it
 // has; and metaImagePlacement (scan_frame.h): where the header places them.
 #include "core/base/errors.h"

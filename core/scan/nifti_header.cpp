@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // checkNiftiHeader (header_checks.h): the NIfTI-1 header's fields, at their fixed offsets.
 #include "core/base/errors.h"
 #include "core/base/text_format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // checkNrrdHeader (header_checks.h): a NRRD's text header and the samples it says it has; and
 // nrrdPlacement (scan_frame.h): where the header places them.
 #include "core/base/errors.h"

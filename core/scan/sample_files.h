@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sample_files.h
 /// @brief Where a detached header's samples are: one data file, or a list of them (NRRD's

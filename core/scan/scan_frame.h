@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_frame.h
 /// @brief The one frame documents are in: LPS millimetres (x grows to the patient's left, y to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_lattice.h
 /// @brief Where a scan's samples lie: how many along each index axis, and the affine map from a

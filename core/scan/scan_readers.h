@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_readers.h
 /// @brief Reading a scan from its file(s) into a ScanVolume.

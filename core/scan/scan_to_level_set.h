@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_to_level_set.h
 /// @brief A scan's iso-surface as an editable field image.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/scan/scan_transfer.h"
 
 #include "core/scan/vtk_image_scan.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_transfer.h
 /// @brief A ScanVolume taken across the pipe from the isolated reader's child process

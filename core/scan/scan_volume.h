@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scan_volume.h
 /// @brief A medical volume (CT, MRI) as read from its file: samples on a lattice and the lattice's

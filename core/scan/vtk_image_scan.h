@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vtk_image_scan.h
 /// @brief Inside a ScanVolume: the VTK image that holds its samples, and what every reader does

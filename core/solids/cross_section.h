@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file cross_section.h
 /// @brief Where a plane cuts the solid, from the field itself (not from a mesh): the region of

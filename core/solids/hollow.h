@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file hollow.h
 /// @brief A solid made a shell of a given thickness, with drain holes: what a resin print needs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/solids/islands.h"
 
 #include "core/field/csg_combine.h"

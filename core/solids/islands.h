@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file islands.h
 /// @brief Islands: the disjoint solids of a model (a scan's specks, parts cut apart), found with

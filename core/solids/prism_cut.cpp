@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/solids/prism_cut.h"
 
 #include "core/base/enum_names.h"

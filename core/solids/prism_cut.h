@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file prism_cut.h
 /// @brief Cutting or filling along the view: a polygon drawn on the screen (a box, a lasso, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/solids/wall_thickness.h"
 
 #include "core/field/central_difference.h"

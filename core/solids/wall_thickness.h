@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file wall_thickness.h
 /// @brief How thick the solid is under a surface point, and how far a surface overhangs: what a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file corotated_triangles.h
 /// @brief The tangential relaxation of a tracked mesh: co-rotational constant-strain triangles

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/edge_hold.h"
 
 #include "core/tracking/mesh_adjacency.h"

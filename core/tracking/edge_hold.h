@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file edge_hold.h
 /// @brief Keeps a tracked mesh's edges inside [e, 2e] by sliding their ends along the surface,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file edge_remesher.h
 /// @brief ALTERMESH (Nesme and Bouthors): the local changes that keep a tracked mesh's edges

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/mesh_adjacency.h"
 
 #include "core/base/union_find.h"

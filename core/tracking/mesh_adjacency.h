@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_adjacency.h
 /// @brief How an indexed triangle mesh's pieces meet: each vertex's triangles, edges as keys,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_edit.h
 /// @brief A change of a tracked mesh's connectivity, by vertex ids: what a sequence replays to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/mesh_tracker.h"
 
 #include "core/mesh/incremental_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_tracker.h
 /// @brief A triangle mesh that moves with a changing level set instead of being re-meshed

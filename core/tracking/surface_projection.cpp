@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/surface_projection.h"
 
 #include <cmath>

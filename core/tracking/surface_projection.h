@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_projection.h
 /// @brief A point brought back onto the zero level set by Newton steps along the gradient

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/topology_surgery.h"
 
 #include "core/tracking/mesh_adjacency.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file topology_surgery.h
 /// @brief A topology event's second stage (Nesme and Bouthors, dynamic triangulation of implicit

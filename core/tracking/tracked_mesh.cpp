@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/tracked_mesh.h"
 
 #include "core/base/union_find.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tracked_mesh.h
 /// @brief The triangle mesh a tracker moves with the surface: positions, triangles and a stable

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tracked_mesh_quality.h
 /// @brief How well shaped a tracked mesh is, measured: its smallest angle, the share of thin

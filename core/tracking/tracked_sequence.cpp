@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/tracking/tracked_sequence.h"
 
 #include "core/tracking/mesh_adjacency.h"

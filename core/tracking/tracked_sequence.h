@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tracked_sequence.h
 /// @brief The frames of a tracked mesh, grouped into segments of constant connectivity: within a

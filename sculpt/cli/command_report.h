@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file command_report.h
 /// @brief What a command tells its caller on stdout: prose lines for a person, one JSON object

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file commands.h
 /// @brief The subcommands of the `sculpt` program. Each adds itself to the application with its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_input.h
 /// @brief A command's input document: its path and, for files of other programs holding

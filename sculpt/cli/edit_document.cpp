@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/cli/edit_document.h"
 
 #include "core/base/atomic_file.h"

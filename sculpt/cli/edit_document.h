@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file edit_document.h
 /// @brief The shape of every editing command: read a document, change it with a progress bar,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/base/errors.h"
 #include "core/base/text_format.h"
 #include "core/io/vdb_layout.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/solids/islands.h"
 #include "sculpt/cli/command_report.h"
 #include "sculpt/cli/commands.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `sculpt` command-line program: every edit the UI can make, headless.
 // Exit codes: 0 success, 2 bad input or usage, 1 internal error, 128 + N on signal N (130 Ctrl-C,
 // 143 SIGTERM), with no temporary file left.

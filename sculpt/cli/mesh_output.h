@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_output.h
 /// @brief The optional `--mesh out.ply` of commands that write a document, and the meshes they

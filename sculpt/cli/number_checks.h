@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file number_checks.h
 /// @brief CLI11 validators whose messages a user can read ("must be a positive number (got 0)"),

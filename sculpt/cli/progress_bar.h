@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file progress_bar.h
 /// @brief A progress bar on the terminal for long commands (nothing when stderr is not a TTY,

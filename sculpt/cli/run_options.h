@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file run_options.h
 /// @brief The options every command that computes takes alike, for scripts and batch jobs:

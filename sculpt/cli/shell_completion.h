@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file shell_completion.h
 /// @brief Shell completion scripts made from the program's own command tree, so they always

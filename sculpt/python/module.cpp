@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Python module `sculpt`: documents made, opened, imported, edited, measured and saved by the
 // same code as the `sculpt` program. Long work runs without the GIL and stops on Ctrl-C
 // (python_progress.h); a failed edit leaves the document as it was.

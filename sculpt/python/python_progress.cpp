@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/python/python_progress.h"
 
 namespace sculpt::python {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file python_progress.h
 /// @brief Long work called from Python: run without the GIL (other Python threads go on), with a

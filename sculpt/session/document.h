@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document.h
 /// @brief The open document: its pieces, each a sculpt session (field, live mesh, undo journal)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_info.h
 /// @brief A document's measures as JSON, the keys `sculpt info --json` prints and the Python

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file frame_files.h
 /// @brief Numbered frames in a directory (DIR/frame_0000.vdb ...), as morph writes them and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/session/import_preview.h"
 
 #include "core/scan/largest_component.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file import_preview.h
 /// @brief A scan or mesh read once for the window's Import panel: what the file holds, and a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file label_export.h
 /// @brief A document's pieces given back to the scan they came from as a segmentation file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/session/label_names.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file label_names.h
 /// @brief The names and colours a segmentation tool gives a label map's values, for its pieces:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file model_filter.h
 /// @brief Whole-model filters, the same from the window (Filters menu, run as a job) and the

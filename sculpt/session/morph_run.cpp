@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/session/morph_run.h"
 
 #include "core/base/memory_budget.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph_run.h
 /// @brief A morph of the model into a target file with every frame kept in memory (the

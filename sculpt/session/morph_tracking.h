@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph_tracking.h
 /// @brief A morph's tracked mesh (`sculpt morph --tracked`, the Morph panel's "tracked mesh"):

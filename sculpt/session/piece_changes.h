@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file piece_changes.h
 /// @brief What an edit of a document's pieces makes, as work on copies of the pieces taken when

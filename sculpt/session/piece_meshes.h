@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file piece_meshes.h
 /// @brief A document's pieces as mesh files, each where it is placed: one file for one piece;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scene_bake.h
 /// @brief A primitive scene baked into a document: what `sculpt build --into` and the window's

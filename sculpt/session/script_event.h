@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file script_event.h
 /// @brief One edit of a document as a stroke script records it: a brush stroke, undo and redo, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file script_replay.h
 /// @brief Replaying a stroke script's events on a document: the one path for `sculpt apply`, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sculpt_session.h
 /// @brief The document being sculpted: its field, its undo history and, optionally, a live mesh.

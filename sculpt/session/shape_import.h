@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file shape_import.h
 /// @brief Any shape a user brings — a document, a scan, a mesh — as a field image.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file stroke.h
 /// @brief A brush stroke as the user drew it: settings, symmetry and the sampled path.

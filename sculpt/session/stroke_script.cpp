@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "sculpt/session/stroke_script.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file stroke_script.h
 /// @brief Stroke scripts: a sculpting session recorded as JSON, replayed bit for bit.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tracked_export.h
 /// @brief A tracked mesh's sequence written as files people can play: per segment of constant

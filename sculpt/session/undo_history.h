@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file undo_history.h
 /// @brief Unlimited undo and redo of strokes within a memory budget.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # check-layers.sh refuses a panel, a mode or a tool that includes the window (ui/app): each gets
 # one such include in a copy of the sources, and the check must fail naming that file; the copy
 # as it is must pass (so a failure is the include's).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-stamp latency of the brushes (stamp + local redistancing + incremental re-mesh of the
 // touched blocks), radius 16 voxels, on spheres of radius 128, 256 and 512 voxels, beside the
 // naive path (tools::csgUnion of a stamp sphere, then a full tools::volumeToMesh) in one run.

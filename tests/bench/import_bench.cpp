@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importing a scan into a document beside VTK's vtkFlyingEdges3D on the same volume, in one run:
 // wall time and peak memory (peak resident set growth, reset before each iteration through
 // /proc/self/clear_refs), and the ratio of that peak to the scan's dense size. Memory counters

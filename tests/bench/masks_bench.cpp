@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Masks, cuts and hollowing beside their references, in one run (issue 34's figures):
 // - one smoothing step of the whole model with half its surface masked, against the same step
 //   unmasked: what reading the mask costs;

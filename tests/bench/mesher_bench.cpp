@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The incremental block mesher beside OpenVDB's volumeToMesh, on level-set spheres.
 // Run: build/tests/bench/mesher_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 //

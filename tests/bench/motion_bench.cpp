@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Level-set motion beside OpenVDB's own tools, in one run.
 // Run: build/tests/bench/motion_bench --benchmark_repetitions=3 --benchmark_report_aggregates_only
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pieces: the contact query through local boxes beside sampling every vertex, and a label map's
 // import as pieces beside one label's, in one run.
 // Run: build/tests/bench/pieces_bench

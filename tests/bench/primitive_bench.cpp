@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stamping one point primitive (radius 16 voxels) into a sphere, beside OpenVDB's csgUnion with a
 // createLevelSetSphere of the same radius, in one run.
 // Run: build/tests/bench/primitive_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only

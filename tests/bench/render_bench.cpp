@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray-traced final images: ours (colour, depth and normals per pixel) beside OpenVDB's own
 // tools::rayTrace (RayTracer.h, DiffuseShader, colour only) on the same grid and camera, in one
 // run; and a 4-sample 1920x1080 render of the demo's sculpted face.

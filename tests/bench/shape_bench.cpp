@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Building the starting sphere: our analytic rasterizer versus OpenVDB's createLevelSetSphere.
 // Run: build/tests/bench/shape_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracked mesh's cost per evolution step beside re-meshing the whole model, in one run.
 // Run: build/tests/bench/tracking_bench
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A scripted measurement of sculpt-ui under Mesa's software OpenGL (not a Google Benchmark: the
 // figures come from replayed sessions, as a person would see them). For each model it replays 3 s
 // still (static frame), a 10-second stroke at 60 events a second, a 3-second orbit drag and 30

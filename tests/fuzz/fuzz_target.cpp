@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One libFuzzer target per input the programs parse, chosen at build time by SCULPT_FUZZ_TARGET
 // (see tests/fuzz/CMakeLists.txt and scripts/fuzz.sh). Each writes the fuzzer's bytes to a file
 // and runs what the program runs on such a file. An InputError is the right answer to bad bytes;

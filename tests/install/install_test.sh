@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the build tree BUILD into a temporary prefix and checks what a packager relies on: the
 # installed programs run from there (--version names the build), the docs, licences, schemas
 # and examples are where the GNU layout puts them, and a small program builds against the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Builds the Debian packages of the build tree BUILD (cpack) into a temporary directory and checks
 # what apt relies on: the runtime package declares the libraries its programs link (read by
 # dpkg-shlibdeps), holds the programs, man pages, completions and desktop files under /usr, and

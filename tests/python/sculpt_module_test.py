@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """The Python module as a script or a notebook uses it: documents made, imported, edited and
 measured by the same code as the sculpt program (their files equal byte for byte), numpy
 meshes, progress callbacks, Ctrl-C, and other Python threads running during long work.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file cgal_data.h
 /// @brief Meshes nobody here wrote: CGAL's sample data (Debian's libcgal-demo ships them in

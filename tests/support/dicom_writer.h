@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dicom_writer.h
 /// @brief Writes minimal DICOM images (explicit VR little endian, 16-bit monochrome) so tests can

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file file_bytes.h
 /// @brief A file's bytes as one string and back: what tests that damage files work on.

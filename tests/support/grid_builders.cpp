@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/grid_builders.h"
 
 #include "core/primitives/analytic_shapes.h"

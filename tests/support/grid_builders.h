@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file grid_builders.h
 /// @brief Hand-made level sets for tests: a few explicit voxel values in an outside field, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/mesh_checks.h"
 
 #include "core/base/union_find.h"

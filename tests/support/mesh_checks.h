@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mesh_checks.h
 /// @brief Test helpers: topology and measures of triangle meshes, computed by us and by VTK.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file progress_log.h
 /// @brief A Progress callback for tests: records every fraction reported and can ask to stop

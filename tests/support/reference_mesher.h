@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file reference_mesher.h
 /// @brief OpenVDB's own polygonizer (tools::volumeToMesh, adaptivity 0), triangulated.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file run_sculpt.h
 /// @brief Runs the real `sculpt` executable (path from the build) for end-to-end tests.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/solid_shapes.h"
 
 #include "core/mesh/incremental_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file solid_shapes.h
 /// @brief Solids the print tools are tested on (islands, thin walls, cuts seen from the front),

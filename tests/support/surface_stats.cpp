@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/surface_stats.h"
 
 #include "core/mesh/incremental_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_stats.h
 /// @brief Test measures of a field's surface: mean radius, curvature spread.

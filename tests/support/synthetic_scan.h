@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file synthetic_scan.h
 /// @brief Scans of known shapes for the import tests: a sampled signed distance, and a ball

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/threemf_reader.h"
 
 #include <Model/COM/NMR_DLLInterfaces.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file threemf_reader.h
 /// @brief A 3MF file as lib3mf (Debian's lib3mf-dev, the 3MF Consortium's library) reads it: the

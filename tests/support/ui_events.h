@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file ui_events.h
 /// @brief The window's input as tests write it (an event recording for --play or a headless

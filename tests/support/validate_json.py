@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """Validates JSON files against a JSON Schema (draft 2020-12) with Debian's python3-jsonschema:
 an independent check of what our programs print. Usage: validate_json.py SCHEMA FILE...
 Prints one line per invalid file and exits 1 if any is."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/support/vdb_files.h"
 
 #include <openvdb/io/File.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file vdb_files.h
 /// @brief `.vdb` files as other programs write them: several named grids, metadata of their own.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sculpt-ui end to end, under Xvfb with Mesa: every test replays recorded input (--play)
 // through the same code as live input and reads what the program reported and drew.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/ui/ui_driver.h"
 
 #include <sys/types.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file ui_driver.h
 /// @brief Drives the real sculpt-ui under Xvfb for tests: builds an event recording, replays it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Autosave without a window: when it writes (changed, interval passed, never mid-stroke), where,
 // and that the copies are the user's alone whatever the umask.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The window's commands, as their owners register them: a headless SculptApp's registry has one
 // row per command with no key bound twice, and the registry itself refuses a second row for a
 // command or a chord bound twice in one scope.

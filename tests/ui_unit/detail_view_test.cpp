@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The level-of-detail rule on chunks laid out by hand: which go coarse under a triangle budget.
 
 #include "ui/view/detail_view.h"

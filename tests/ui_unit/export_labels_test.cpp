@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // File > Export Segmentation (Ctrl+Shift+E) in a headless window: an imported scan's document
 // writes its piece as a Slicer .seg.nrrd on the kept scan's lattice, the ball's samples labelled
 // as the scan has them; a document keeping no scan is refused with the reason.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The file chooser's listing and Tab completion, on a real directory: folders first, only the
 // kinds a prompt accepts, hidden files left out, a bounded listing, completion to the longest
 // shared prefix.

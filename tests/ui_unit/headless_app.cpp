@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "tests/ui_unit/headless_app.h"
 
 #include "ui/window/headless_window.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file headless_app.h
 /// @brief The whole window (SculptApp) in the test's own process on a HeadlessWindow: input

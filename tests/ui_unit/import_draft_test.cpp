@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Import panel's draft without a window: the preview is rebuilt when an option that shapes
 // it changes and only then, follows the iso-value, and an option the import refuses leaves no
 // preview and says why, until it is set right again.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The model display on a renderer that never draws: what it uploads when the mesher it shows is
 // replaced or a stamp changes it, and what its level of detail draws.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The window's tools driven by input events in a headless SculptApp (no display): a brush stroke
 // and its undo, a lasso cut, a box mask, a piece moved into another (stopping at contact, then
 // pushing it aside); each grid checked against `sculpt apply` of the window's stroke log or the

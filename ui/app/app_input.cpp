@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SculptApp: where every input event goes (the keys and mouse of README's table): the dialogs,
 // the tool, the open mode or the camera.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/app/gui_context.h"
 
 #include "ui/input/imgui_input.h"

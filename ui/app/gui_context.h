@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file gui_context.h
 /// @brief Dear ImGui's context for the window's panels: the same layout on every start, the keys

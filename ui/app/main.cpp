@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /// sculpt-ui: the sculpting window. See --help and the README.
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sculpt_app.h
 /// @brief sculpt-ui: the window a sculptor works in. It composes the parts (the workspace and

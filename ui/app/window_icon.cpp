@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/app/window_icon.h"
 
 #include <vtkImageData.h>

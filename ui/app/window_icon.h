@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file window_icon.h
 /// @brief The window's icon (X11 shows it in the title bar and the task switcher; Wayland takes

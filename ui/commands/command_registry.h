@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file command_registry.h
 /// @brief The window's commands, each added by its owner (F3D's addCommand): a second row for a

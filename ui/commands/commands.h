@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file commands.h
 /// @brief Everything a key, a menu item or a button can ask for. Each is registered once, by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file autosave.h
 /// @brief Nothing lost: the document is copied to a recovery file every few minutes while it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/document/file_listing.h"
 
 #include "core/base/file_extension.h"

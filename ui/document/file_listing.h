@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file file_listing.h
 /// @brief What a file prompt shows under its path field: one directory's folders and the files

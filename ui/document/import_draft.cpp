@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/document/import_draft.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file import_draft.h
 /// @brief The Import panel's work: the file read once (ImportPreview), the options the panel

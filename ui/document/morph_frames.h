@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph_frames.h
 /// @brief The frames of a finished morph (Morph panel), shown one at a time in the view in place

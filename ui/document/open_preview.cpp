@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/document/open_preview.h"
 
 #include "core/mesh/preview_mesh.h"

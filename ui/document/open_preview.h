@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file open_preview.h
 /// @brief The coarse surface a job making a document (open, import) hands the window before

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file primitive_draft.h
 /// @brief The Primitives panel's scene before it is baked: the primitives being placed and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/document/recent_files.h"
 
 #include "core/base/atomic_file.h"

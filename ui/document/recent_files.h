@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file recent_files.h
 /// @brief File > Open Recent: the last documents opened or saved, newest first, kept in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_files.h
 /// @brief The document as files: opened as a job (asking which level set of a file of several),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/input/event_player.h"
 
 namespace sculpt::ui {

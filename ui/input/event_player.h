@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file event_player.h
 /// @brief Replays a recording (--play) at the pace it was recorded, on the window's clock: each

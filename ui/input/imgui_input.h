@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file imgui_input.h
 /// @brief Feeds InputEvents (live or replayed) to Dear ImGui through its io, before NewFrame.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file input_event.h
 /// @brief One thing the user did, as the window reported it: the unit of live input, of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file pointer_state.h
 /// @brief Where the pointer is and which modifier keys are down, as the events so far say: what

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/input/replay.h"
 
 namespace sculpt::ui {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file replay.h
 /// @brief The window's scripted side: a recording played (--play) or made (--record), and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file background_job.h
 /// @brief A long operation (a filter, a morph, an import, opening or exporting) run off the UI

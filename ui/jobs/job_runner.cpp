@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/jobs/job_runner.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file job_runner.h
 /// @brief The window's one background job at a time and what becomes of its result: started

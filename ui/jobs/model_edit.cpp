@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/jobs/model_edit.h"
 
 #include "core/solids/prism_cut.h"

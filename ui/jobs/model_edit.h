@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file model_edit.h
 /// @brief A whole-model edit (smooth, offset, a cut, a mask selection, import into the model,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/modes/import_mode.h"
 
 #include "core/base/text_format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file import_mode.h
 /// @brief File > Import once the file is read: the Import panel and the preview of the surface

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ImportMode's panel: what the file holds, the iso-value over its histogram, crop, smoothing,
 // cleanup, voxel size and what the result becomes; Apply or Cancel.
 

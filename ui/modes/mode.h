@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mode.h
 /// @brief A panel that owns the view until it is accepted (Enter) or cancelled (Esc): an

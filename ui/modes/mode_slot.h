@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file mode_slot.h
 /// @brief The one mode open at a time: opened in place of the one before (its hint in the status

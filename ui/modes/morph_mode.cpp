@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/modes/morph_mode.h"
 
 #include "core/field/grid_checksum.h"

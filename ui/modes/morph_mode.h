@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file morph_mode.h
 /// @brief A finished morph's frames (the Morph panel) shown in place of the document: played

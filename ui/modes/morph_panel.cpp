@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MorphMode's panel: the frames' slider, play/pause, step, keep, export, close; the tracked
 // mesh's quality; how the morph ended.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/modes/primitives_mode.h"
 
 #include "core/base/atomic_file.h"

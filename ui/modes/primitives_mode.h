@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file primitives_mode.h
 /// @brief Placing primitives (Shift+A, Primitives > Load Scene): the Primitives panel, their

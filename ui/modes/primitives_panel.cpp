@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PrimitivesMode's panel: the primitives' list, the selected one's skeleton and kernel, the
 // scene's iso-value and operation; Bake, Load and Save.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The dialogs' answers, as keys of Scope::Dialog (a dialog open takes every key): OK and Close,
 // "save changes?", "recover?" and "which level set?".
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file dialogs.h
 /// @brief What the dialogs hold between frames: the one prompt open (its kind, its path field

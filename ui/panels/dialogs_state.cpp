@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/base/errors.h"
 #include "ui/panels/dialogs.h"
 #include "ui/status/notices.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A file prompt's path field and, under it, the file chooser: the directory the typed path
 // names (its folders and the files the prompt accepts, with size and date), Up, Home and the
 // recent files. Typing, Tab (completion) and Enter work without the mouse, and replays drive

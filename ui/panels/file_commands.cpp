@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The File menu's commands: new, open, save, export, strokes and the follow brush's target. Each
 // prompt it opens says what OK does with the path.
 

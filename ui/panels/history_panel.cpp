@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/base/text_format.h"
 #include "ui/panels/panel_host.h"
 #include "ui/panels/panels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Filters and Mask menus' commands: whole-model filters (each a dialog, then a job), the
 // island and drain hole under the pointer, and the mask's operations and selections. Each lands
 // through the workspace as one undo step.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file panel_host.h
 /// @brief What a panel (and a mode's panel) may reach: the commands, the workspace and its

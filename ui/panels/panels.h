@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file panels.h
 /// @brief The ImGui panels over the 3D view, one file each: the menu bar, the tool palette,

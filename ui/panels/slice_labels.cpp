@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Slices view's labels, drawn over its three views: each view's name and plane, the
 // patient's directions at its edges, and the window and level.
 

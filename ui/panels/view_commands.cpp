@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The View menu's commands: framing, the axis views and orbit steps (Blender's numpad), zoom,
 // the clay's looks, the target's ghost, the trackball, the clip plane, and Help. Navigation follows Blender's
 // sculpt mode where it has a key.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_view.h
 /// @brief The open document as the 3D view shows it: the viewport and its camera, the look, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file slice_mouse.h
 /// @brief The mouse over the Slices view (SliceViews): a left press or drag puts the cursor

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/scene/view_drag.h"
 
 #include "ui/input/input_event.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file view_drag.h
 /// @brief A drag that is not the tool's: the camera's (orbit, pan, zoom), a brush setting's (F

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/sculpting/brush_options.h"
 
 #include "core/field/csg_combine.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file brush_options.h
 /// @brief The brush as the tool palette sets it, and what the held modifiers make of it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file hover_key.h
 /// @brief What the surface under the pointer depends on: the ray through it, the field and its

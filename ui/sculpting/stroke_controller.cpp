@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/sculpting/stroke_controller.h"
 
 #include "sculpt/session/document.h"

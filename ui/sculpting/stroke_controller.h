@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file stroke_controller.h
 /// @brief Turns a mouse drag into a live stroke: each mouse event becomes a sample and its

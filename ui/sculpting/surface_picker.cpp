@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/sculpting/surface_picker.h"
 
 #include "core/field/surface_ray.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_picker.h
 /// @brief What the mouse points at: the ray cast against the level set itself (firstSurfaceCrossing),

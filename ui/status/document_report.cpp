@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/status/document_report.h"
 
 #include "core/field/grid_checksum.h"

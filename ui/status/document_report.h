@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file document_report.h
 /// @brief What the window's report says of the document: its grids' checksums, its pieces and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/status/frame_log.h"
 
 #include "sculpt/session/sculpt_session.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file frame_log.h
 /// @brief What the frames did since the last report, for replays and benchmarks: how long each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file notices.h
 /// @brief What the window tells the user: the status line's notice (saved, cancelled, why an

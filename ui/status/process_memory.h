@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file process_memory.h
 /// @brief What this process holds in memory, as the kernel counts it (Linux /proc/self/status).

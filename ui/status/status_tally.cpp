@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/status/status_tally.h"
 
 #include "sculpt/session/document.h"

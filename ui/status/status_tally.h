@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file status_tally.h
 /// @brief The status bar's figures, kept current once a frame at the cost of what changed: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tool.h
 /// @brief What a left press on the view does until another tool is chosen: sculpt with the brush,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tool_box.h
 /// @brief Every tool the window has, and the one chosen. A tool keeps its settings while another

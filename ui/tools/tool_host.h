@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file tool_host.h
 /// @brief What a tool may reach: the workspace (the document, its edits and jobs, the notices),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file block_cluster.h
 /// @brief A mesh's coarse twin by vertex clustering: what the display draws far away and what

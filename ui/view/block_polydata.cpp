@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/block_polydata.h"
 
 #include <glm/common.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file block_polydata.h
 /// @brief Mesher blocks as VTK geometry: what every display of a surface uploads.

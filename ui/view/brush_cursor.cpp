@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/brush_cursor.h"
 
 #include <vtkActor.h>

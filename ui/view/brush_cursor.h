@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file brush_cursor.h
 /// @brief The brush under the mouse: a ring lying on the surface, turned to its normal and sized

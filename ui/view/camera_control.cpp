@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/camera_control.h"
 
 #include "ui/view/viewport.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file camera_control.h
 /// @brief Navigation as sculptors know it (Blender, SculptGL): orbit about the focal point

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/cap_display.h"
 
 #include "core/mesh/incremental_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file cap_display.h
 /// @brief The caps of the clip plane's cut: each visible piece's section by the plane

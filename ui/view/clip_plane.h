@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file clip_plane.h
 /// @brief View > Clip Plane: a plane hiding the clay on one side so its inside shows (Slicer's

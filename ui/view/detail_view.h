@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file detail_view.h
 /// @brief The level of detail of the model display: which chunks of the surface are drawn from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file model_display.h
 /// @brief The sculpt on screen: the mesher's blocks grouped into display chunks, one VTK actor

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file pieces_display.h
 /// @brief The document's pieces besides the one being sculpted, each drawn from its own live

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/placement_matrix.h"
 
 #include <vtkMatrix4x4.h>

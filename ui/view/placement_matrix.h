@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file placement_matrix.h
 /// @brief A piece's placement (world from its field's world, OpenVDB's row vectors) as the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file scales_display.h
 /// @brief The "scales" view (after Desbrun, Tsingos and Cani): small discs lying on the surface

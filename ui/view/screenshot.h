@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file screenshot.h
 /// @brief The composed frame (the 3D view and the panels over it) read back from the OpenGL

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file shape_display.h
 /// @brief A whole shape other than the document, meshed once when it is set and drawn as one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/skeleton_display.h"
 
 #include <vtkActor.h>

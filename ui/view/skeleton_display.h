@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file skeleton_display.h
 /// @brief The skeletons of the primitives being placed, drawn over everything (in the overlay

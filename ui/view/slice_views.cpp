@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/slice_views.h"
 
 #include "core/scan/kept_scan.h"

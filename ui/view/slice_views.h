@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file slice_views.h
 /// @brief View > Slices: the kept scan's axial, coronal and sagittal planes through one cursor,

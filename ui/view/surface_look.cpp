@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/surface_look.h"
 
 #include <vtkActor.h>

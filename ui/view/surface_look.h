@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_look.h
 /// @brief How the clay looks: matcaps (clay, white, red wax) or lit, smooth or flat, wireframe.

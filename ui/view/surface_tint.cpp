@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/surface_tint.h"
 
 #include "core/solids/wall_thickness.h"

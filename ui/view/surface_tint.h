@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file surface_tint.h
 /// @brief What colours the clay besides its look: the mask (darker where held) and the print

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file symmetry_planes.h
 /// @brief The active mirror planes (x = 0, y = 0, z = 0), drawn faintly through the model.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/twin_builder.h"
 
 #include "ui/view/block_cluster.h"

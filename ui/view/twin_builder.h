@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file twin_builder.h
 /// @brief The coarse twins of display chunks, clustered on a worker thread so that neither a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file viewport.h
 /// @brief The 3D view: a VTK renderer drawing into the window's current OpenGL context, its

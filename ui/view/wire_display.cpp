@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/view/wire_display.h"
 
 #include "ui/view/block_polydata.h"

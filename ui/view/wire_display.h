@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file wire_display.h
 /// @brief A triangle mesh drawn as its edges over the surface: the morph's tracked mesh, so one

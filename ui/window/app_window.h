@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file app_window.h
 /// @brief The GLFW window and its OpenGL 3.2 core context; turns GLFW callbacks into InputEvents.

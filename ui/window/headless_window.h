@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file headless_window.h
 /// @brief A window with no display and no OpenGL: the application runs whole (input routing,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file window.h
 /// @brief What the application needs of its window: events delivered as InputEvents, a size, a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/workspace/workspace.h"
 
 #include "ui/commands/command_registry.h"

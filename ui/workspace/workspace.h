@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file workspace.h
 /// @brief The document being worked on and the one way its changes land: a whole-model edit or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The memory a control group leaves us, read from fixture hierarchies laid out as the kernel's:
 // cgroup v2 (Slurm, systemd, Docker on current hosts) and v1's memory controller (older hosts).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An interruption (Ctrl-C, a scheduler's SIGTERM) ends the program at once, with the exit code
 // shells expect, and leaves no half-written file; finished files stay.
 

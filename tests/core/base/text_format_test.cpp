@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numbers as the window and the command line print them.
 
 #include "core/base/text_format.h"

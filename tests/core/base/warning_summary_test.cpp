@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A label map's warnings alike (each piece's debris, say) are said three times and then counted;
 // warnings of other kinds, and those of fewer pieces, are said in full and in order.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a long write makes is taken back when it fails, and a sequence the disk cannot hold is
 // refused once its first item shows the size of the rest.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Brushes (core/brushes/brush.h): each tool's effect against what it promises, on analytic shapes.
 
 #include "core/base/errors.h"

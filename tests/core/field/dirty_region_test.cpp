@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/dirty_region.h"
 #include "core/field/field_image.h"
 #include "core/primitives/analytic_shapes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rays against the level set: agreement with OpenVDB's LevelSetRayIntersector, and the surface
 // as it was before a journal's edits, read without a copy.
 

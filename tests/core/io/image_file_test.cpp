@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendered images written to OpenEXR and PNG, read back with the OpenEXR library and VTK.
 
 #include "core/base/errors.h"

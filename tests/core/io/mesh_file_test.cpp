@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exported meshes, re-read by VTK: closed, 2-manifold, enclosing the grid's volume.
 
 #include "core/base/errors.h"

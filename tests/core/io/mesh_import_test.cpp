@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importing meshes (core/mesh_import.h): closed meshes keep their volume, open ones are reported,
 // bad files are refused.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // 3MF files as the 3MF Consortium's own library (lib3mf) reads them: every object with its name,
 // size and colour, a build item each, the unit the document says.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Documents in .vdb files: exact round trips, foreign files, and damaged files refused cleanly.
 
 #include "core/base/errors.h"

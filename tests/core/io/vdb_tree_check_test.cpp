@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The walk of a float tree before OpenVDB reads it (core/io/vdb_tree_check.h): it ends where
 // the file says for every coding OpenVDB writes, refuses the damage OpenVDB would leak or crash
 // on, and finds the grids of streamed files, which carry no offsets.

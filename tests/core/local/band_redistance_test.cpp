@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Local band redistancing against OpenVDB's LevelSetTracker run on the same patch: after the
 // surface moved by part of a voxel, both rebuild the band, ours only inside its zone.
 

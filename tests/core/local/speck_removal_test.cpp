@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/local/speck_removal.h"
 #include "core/primitives/analytic_shapes.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Mask selections mask exactly what they select, judged by each voxel's closest surface point on
 // shapes whose answer is known: a square seen from the front, the inner wall of a hollow ball, a
 // thin fin on a thick plate, one ball among specks.

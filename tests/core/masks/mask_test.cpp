@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The mask holds the surface where it is 1, bit for bit, through every kind of edit (a brush's
 // stamps, whole-model smoothing, a morph), is journalled with the surface, and round-trips
 // through a document.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The block mesher on analytic shapes, after random local edits, and against OpenVDB and VTK.
 
 #include "core/local/sphere_stamp.h"

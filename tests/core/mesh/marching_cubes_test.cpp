@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The generated marching-cubes table: every configuration and every ambiguous face pair closes.
 
 #include "core/mesh/incremental_mesher.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The coarse preview the window shows while a large document is meshed: a closed surface near
 // the true one, with about stride^2 fewer triangles, and the stride chosen from the budget.
 

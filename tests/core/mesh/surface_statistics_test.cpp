@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/csg_combine.h"
 #include "core/local/sphere_stamp.h"
 #include "core/mesh/surface_statistics.h"

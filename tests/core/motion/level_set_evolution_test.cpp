@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Level-set motion against analytic laws: curvature flow, offsets, volume control, locality.
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Morphing between shapes: convergence, topology change, volume line, refusal of disjoint shapes.
 
 #include "core/base/errors.h"

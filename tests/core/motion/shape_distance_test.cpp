@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distances between shapes beyond their narrow bands, and where a shape is resolvable.
 
 #include "core/motion/shape_distance.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The volume estimate (volume control's measure) against two others of the same field: OpenVDB's
 // LevelSetMeasure and the welded mesh's volume, and against the analytic volume, on distance
 // fields and on a stretched field (|grad phi| != 1, what a moving level set drifts to).

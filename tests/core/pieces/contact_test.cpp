@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/io/mesh_import.h"
 #include "core/mesh/incremental_mesher.h"
 #include "core/pieces/contact.h"

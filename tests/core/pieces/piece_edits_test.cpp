@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "core/field/grid_checksum.h"
 #include "core/mesh/field_measures.h"
 #include "core/pieces/piece_edits.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Starting shapes against their analytic volume, area and topology, and against OpenVDB's own
 // sphere builder.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Implicit primitives: kernels, lone primitives against analytic shapes, blending graph, CSG.
 
 #include "core/base/errors.h"

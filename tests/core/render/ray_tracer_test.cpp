@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ray-traced renders of analytic shapes: coverage against the projected disc, depth against the
 // distance to the sphere, normals, determinism across thread counts, framing, and the warnings.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // DICOM series (core/scan/dicom_series.h, dicom_file.h): slice order and placement, the jitter
 // real scanners leave in slice positions, compressed transfer syntaxes, multi-frame files, and
 // refusal of gaps and mixed series.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fast marching on a dense box (core/fast_marching.h): exact on planes, first-order accurate on
 // spheres, seeds untouched, faces left alone, marching stops at its limit.
 

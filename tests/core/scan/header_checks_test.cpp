@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The classes of bad scan headers (core/scan/header_checks.h), each built from a good file: non-
 // finite numbers in any field that places the samples, sizes and spacings beyond the limits,
 // data file lists of absurd range, compressed samples that do not inflate to what is declared.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scan kept in a document: the same samples at the same places after a save and a read, the
 // same surface imported from it as from the scan itself, sparse where the scan is uniform, and a
 // damaged or missing one refused naming the file.

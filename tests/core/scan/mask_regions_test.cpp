@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Face-connected regions of bit masks (core/mask_regions.h): the same regions as OpenVDB's
 // extractActiveVoxelSegmentMasks on random masks, through leaf faces and active tiles.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every scan format lands in the documents' frame, LPS millimetres: one volume with a marker at
 // the patient's left-anterior, written as NIfTI (sform; qform only; in micrometres), NRRD (a RAS
 // space; an LPS space with the negative directions Slicer writes), MetaImage (a flipped

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Importing scans (core/scan_volume.h, core/scan_to_level_set.h): every format, world placement,
 // agreement with VTK on a real MRI, and refusal of bad files. DICOM: dicom_series_test.cpp.
 

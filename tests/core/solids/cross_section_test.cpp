@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A plane's cut of the solid, from the field: the clay ball's cap through its centre is pi r^2
 // within 0.5% (and its outline 2 pi r), an off-centre or tilted cut the circle's area there, a
 // box's cut its square, and a plane missing the solid cuts nothing.

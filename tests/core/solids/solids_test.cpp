@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Hollowing and islands against analytic volumes and the marching-cubes mesh's topology.
 
 #include "core/base/errors.h"

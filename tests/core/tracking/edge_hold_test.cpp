@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The edge hold on a relaxed sphere mesh: an edge pushed just past 2e is slid back inside the
 // range by its neighbourhood, everything stays inside [e, 2e] and well shaped, only vertices near
 // it move; an edge far past the range is left to the remesher.

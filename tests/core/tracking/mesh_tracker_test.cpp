@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracked mesh on fields that do not move: it settles (drift under a hundredth of a voxel a
 // step), stays on the surface, closed and 2-manifold with the marching-cubes mesh's topology,
 // its triangles well shaped and its edges within [e, 2e], bit for bit the same on 1 or 2 threads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tracked sequence keeps one segment while the tracker only splits and collapses edges: each
 // frame of it is exactly the tracked surface of that frame (the tracker's vertices where they
 // are, the others on its surface: at an edge's midpoint before a split, on their keeper after a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Uses the installed engine as another program would: a ball rasterized, measured and saved.
 // Prints its volume and Euler characteristic; exits 1 if they are not a sphere's.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The program as a batch job runs it: interrupted by Ctrl-C or a scheduler, under a memory limit,
 // its reports read as JSON, on any number of threads.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shell completion made from the command tree: bash completes what --help lists; the zsh and fish
 // scripts parse in their shells.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End to end: the `sculpt` program on a temporary directory, as a user runs it.
 
 #include "core/field/grid_checksum.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The document without a window: undo and redo restore the grid bit for bit, and the modified
 // mark follows the saved state through edits, undo, redo and saves.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frames in a directory are played in the order people count them, whatever their digits' width.
 
 #include "sculpt/session/frame_files.h"

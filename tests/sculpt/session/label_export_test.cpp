@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Segmentations out: a three-label NIfTI (written here byte by byte, with a qfac of -1 as FSL's
 // atlases have) imported a piece per label and exported on its own lattice gives back the same
 // header geometry and each label's samples (Dice >= 0.98); NRRD and Slicer's .seg.nrrd lie on the

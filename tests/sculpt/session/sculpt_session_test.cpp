@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sculpting session (sculpt/): strokes, symmetry, undo/redo, stroke scripts and replays.
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A tracked sequence written as files people play: the point cache and the glTF read back (the
 // glTF by tinygltf, another implementation) with the vertex count, triangles and positions of
 // the tracked mesh at every frame; `sculpt morph --tracked` writes them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/tools/gesture/cut_gesture.h"
 
 #include <glm/geometric.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file cut_gesture.h
 /// @brief A cut drawn on the screen: a box (two corners), a lasso (the pointer's path) or a line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/tools/gesture/gesture_tool.h"
 
 #include "sculpt/session/document.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file gesture_tool.h
 /// @brief Cut and mask gestures: a box, lasso or line drawn on the screen sweeps a prism along the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/tools/pieces/piece_gesture.h"
 
 #include "core/base/text_format.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file piece_gesture.h
 /// @brief Blender's G, R and S on a piece: the pointer moves, turns or scales it about its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file pieces_tool.h
 /// @brief Pieces mode (Tab): a click picks the piece to sculpt; G, R and S move, turn and scale

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "ui/tools/sculpt/sculpt_tool.h"
 
 #include "core/base/errors.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #pragma once
 /// @file sculpt_tool.h
 /// @brief The brush: a left drag on the model is a live stroke of the palette's tool (Ctrl: its
