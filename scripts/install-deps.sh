@@ -3,7 +3,8 @@
 # Installs the Debian 12 packages this project builds, tests and runs with. Idempotent: only
 # missing packages are installed, so a second run returns in a moment. Needs root (or sudo).
 # python3-jsonschema, lib3mf-dev, desktop-file-utils, appstream, shared-mime-info: the independent
-# validators and readers the tests check --json reports, 3MF files and the desktop files with.
+# validators and readers the tests check --json reports, 3MF files and the desktop files with;
+# zsh and fish parse their completion scripts.
 set -euo pipefail
 
 packages=(
@@ -17,7 +18,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy
   libgtest-dev libgmock-dev libbenchmark-dev libtinygltf-dev
   mricron-data libcgal-demo python3-jsonschema lib3mf-dev
-  desktop-file-utils appstream shared-mime-info
+  desktop-file-utils appstream shared-mime-info zsh fish
 )
 
 # --sanitizers: also what scripts/sanitizer-tree.sh builds with (clang and its sanitizer and
