@@ -4,10 +4,9 @@
 # from the command tree). Installed where man and each shell look.
 find_program(HELP2MAN help2man REQUIRED)
 set(generated ${PROJECT_BINARY_DIR}/generated)
-set(sculptCommands new info mesh smooth offset morph build apply import export-labels hollow islands pieces render)
 add_custom_command(OUTPUT ${generated}/sculpt.1
   COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/man_page.sh $<TARGET_FILE:sculpt> ${generated}/sculpt.1
-          "volumetric clay sculpting on sparse signed-distance grids" ${sculptCommands}
+          "volumetric clay sculpting on sparse signed-distance grids"
   DEPENDS sculpt ${PROJECT_SOURCE_DIR}/cmake/man_page.sh VERBATIM)
 add_custom_command(OUTPUT ${generated}/sculpt-ui.1
   COMMAND bash ${PROJECT_SOURCE_DIR}/cmake/man_page.sh $<TARGET_FILE:sculpt-ui> ${generated}/sculpt-ui.1

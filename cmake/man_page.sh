@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Makes PROGRAM's man page with help2man from its --help and --version, with a COMMANDS section
-# holding each COMMAND's own --help.   usage: man_page.sh PROGRAM OUTPUT SUMMARY [COMMAND...]
+# holding the own --help of each command its --help lists (so a new command is in it at once).
+# usage: man_page.sh PROGRAM OUTPUT SUMMARY
 set -euo pipefail
 program=$1 output=$2 summary=$3
-shift 3
+mapfile -t commands < <("$program" --help | sed -n '/^Subcommands:/,$p' | grep -oE '^  [a-z][a-z-]*' | tr -d ' ')
+set -- "${commands[@]}"
 include=$(mktemp)
 trap 'rm -f "$include"' EXIT
 includes=()

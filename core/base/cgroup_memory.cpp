@@ -101,29 +101,50 @@ std::optional<std::string> groupPath(const std::string& procCgroup, const std::s
     return std::nullopt;
 }
 
-/// The least limit minus working set from the group's directory up to the mount point.
-std::optional<std::uint64_t> leftInHierarchy(const std::string& procCgroup, const std::string& mountinfo,
-                                             const std::string& v1Controller, const Hierarchy& names)
+/// A group's directory, or one above it, with its hierarchy's file names.
+struct GroupLevel {
+    fs::path dir;
+    const Hierarchy* names;
+};
+
+/// The process's group directory in one hierarchy and every one above it up to the mount point
+/// (none if the hierarchy is not mounted or the group is outside the mount).
+void addLevels(const std::string& procCgroup, const std::string& mountinfo, const std::string& v1Controller,
+               const Hierarchy& names, std::vector<GroupLevel>& levels)
 {
     const std::optional<CgroupMount> mount = findMount(mountinfo, v1Controller);
     const std::optional<std::string> path = groupPath(procCgroup, v1Controller);
-    if (!mount || !path) return std::nullopt;
+    if (!mount || !path) return;
     // A container sees its own group as the mount's root; a path outside the mount is not visible.
     const std::string root = mount->root == "/" ? "" : mount->root;
-    if (path->compare(0, root.size(), root) != 0) return std::nullopt;
+    if (path->compare(0, root.size(), root) != 0) return;
     const fs::path below = fs::path(path->substr(root.size())).relative_path();
-    fs::path dir = below.empty() ? mount->mountPoint : mount->mountPoint / below;
-    std::optional<std::uint64_t> least;
-    for (;; dir = dir.parent_path()) {
-        const std::optional<std::uint64_t> limit = readNumber(dir / names.limit);
-        if (limit && *limit < kNoLimit) {
-            const std::uint64_t usage = readNumber(dir / names.usage).value_or(0);
-            const std::uint64_t cache = std::min(usage, statValue(dir / "memory.stat", names.inactiveFile));
-            const std::uint64_t workingSet = usage - cache;
-            const std::uint64_t left = *limit > workingSet ? *limit - workingSet : 0;
-            least = std::min(least.value_or(left), left);
-        }
+    for (fs::path dir = below.empty() ? mount->mountPoint : mount->mountPoint / below;; dir = dir.parent_path()) {
+        levels.push_back({dir, &names});
         if (dir == mount->mountPoint || !dir.has_relative_path()) break;
+    }
+}
+
+std::vector<GroupLevel> groupLevels(const std::string& procCgroup, const std::string& mountinfo)
+{
+    std::vector<GroupLevel> levels;
+    addLevels(procCgroup, mountinfo, "", kUnified, levels);
+    addLevels(procCgroup, mountinfo, "memory", kMemoryV1, levels);
+    return levels;
+}
+
+/// The least limit minus working set over `levels`.
+std::optional<std::uint64_t> leftIn(const std::vector<GroupLevel>& levels)
+{
+    std::optional<std::uint64_t> least;
+    for (const GroupLevel& level : levels) {
+        const std::optional<std::uint64_t> limit = readNumber(level.dir / level.names->limit);
+        if (!limit || *limit >= kNoLimit) continue;
+        const std::uint64_t usage = readNumber(level.dir / level.names->usage).value_or(0);
+        const std::uint64_t cache = std::min(usage, statValue(level.dir / "memory.stat", level.names->inactiveFile));
+        const std::uint64_t workingSet = usage - cache;
+        const std::uint64_t left = *limit > workingSet ? *limit - workingSet : 0;
+        least = std::min(least.value_or(left), left);
     }
     return least;
 }
@@ -140,15 +161,16 @@ std::string fileText(const char* path)
 
 std::optional<std::uint64_t> cgroupMemoryLeft(const std::string& procCgroup, const std::string& mountinfo)
 {
-    const std::optional<std::uint64_t> unified = leftInHierarchy(procCgroup, mountinfo, "", kUnified);
-    const std::optional<std::uint64_t> v1 = leftInHierarchy(procCgroup, mountinfo, "memory", kMemoryV1);
-    if (unified && v1) return std::min(*unified, *v1);
-    return unified ? unified : v1;
+    return leftIn(groupLevels(procCgroup, mountinfo));
 }
 
 std::optional<std::uint64_t> cgroupMemoryLeft()
 {
-    return cgroupMemoryLeft(fileText("/proc/self/cgroup"), fileText("/proc/self/mountinfo"));
+    // Where the groups are is found once: a process stays in its group (a batch job's does), and
+    // the check runs before every large allocation, once per primitive of a scene being dragged.
+    static const std::vector<GroupLevel> levels =
+        groupLevels(fileText("/proc/self/cgroup"), fileText("/proc/self/mountinfo"));
+    return leftIn(levels);
 }
 
 }  // namespace sculpt

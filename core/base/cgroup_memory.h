@@ -13,7 +13,8 @@ namespace sculpt {
 
 /// The least, over the process's control group and every group above it, of its memory limit
 /// minus its working set (usage less inactive file cache, which the kernel reclaims first), for
-/// cgroup v2 and the v1 memory controller; nullopt when no group sets a limit.
+/// cgroup v2 and the v1 memory controller; nullopt when no group sets a limit. The groups are
+/// found once per process, their limits and usage read at each call.
 std::optional<std::uint64_t> cgroupMemoryLeft();
 
 /// The same, from the text of /proc/self/cgroup and /proc/self/mountinfo (whose mount points

@@ -22,7 +22,9 @@ done
 # The man page documents every command (help2man's COMMANDS section), as man shows it.
 if command -v man >/dev/null; then
   page=$(MANWIDTH=100 man -l "$prefix/share/man/man1/sculpt.1" 2>/dev/null)
-  for command in new info mesh smooth offset morph build apply import export-labels hollow islands pieces render; do
+  mapfile -t commands < <("$prefix/bin/sculpt" --help | sed -n '/^Subcommands:/,$p' | grep -oE '^  [a-z][a-z-]*' | tr -d ' ')
+  ((${#commands[@]} >= 14)) || fail "sculpt --help lists ${#commands[@]} commands"
+  for command in "${commands[@]}"; do
     grep -q "sculpt $command" <<<"$page" || fail "man sculpt says nothing of 'sculpt $command'"
   done
 fi

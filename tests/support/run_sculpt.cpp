@@ -45,6 +45,14 @@ CommandResult collectResult(int status, const std::string& workDir)
 
 const char* sculptExecutable() { return SCULPT_EXECUTABLE; }
 
+const std::vector<std::string>& sculptCommands()
+{
+    static const std::vector<std::string> commands{"new",    "info",    "mesh",   "smooth", "offset",
+                                                   "morph",  "build",   "apply",  "import", "export-labels",
+                                                   "hollow", "islands", "pieces", "render"};
+    return commands;
+}
+
 CommandResult runSculpt(const std::string& args, const std::string& workDir)
 {
     return runCommand("'" SCULPT_EXECUTABLE "' " + args, workDir);

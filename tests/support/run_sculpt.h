@@ -4,6 +4,7 @@
 /// @brief Runs the real `sculpt` executable (path from the build) for end-to-end tests.
 
 #include <string>
+#include <vector>
 
 namespace sculpt::test {
 
@@ -15,6 +16,8 @@ struct CommandResult {
 
 /// The path of the `sculpt` executable under test.
 const char* sculptExecutable();
+/// Every command the program has (the tests that go through them all fail for one left out).
+const std::vector<std::string>& sculptCommands();
 
 /// Runs `sculpt ARGS` through the shell in `workDir`; ARGS must already be shell-safe.
 CommandResult runSculpt(const std::string& args, const std::string& workDir);

@@ -43,11 +43,10 @@ TEST(Completion, BashOffersEveryOptionEachCommandsHelpLists)
     ASSERT_EQ(script.exitCode, 0);
     std::ofstream(dir / "sculpt.bash") << script.out;
     const std::set<std::string> commands = bashCompletes(dir, "", "");
-    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply", "import",
-                                "export-labels", "hollow", "islands", "pieces", "render"}) {
+    for (const std::string& command : test::sculptCommands()) {
         EXPECT_TRUE(commands.count(command)) << command;
         const std::set<std::string> offered = bashCompletes(dir, command, "-");
-        const std::string help = runSculpt(std::string(command) + " --help", dir.path()).out;
+        const std::string help = runSculpt(command + " --help", dir.path()).out;
         const std::regex option("(^|[ ,])(--[a-z][a-z-]*)");
         std::size_t listed = 0;
         for (auto it = std::sregex_iterator(help.begin(), help.end(), option); it != std::sregex_iterator(); ++it) {

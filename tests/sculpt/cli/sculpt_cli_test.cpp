@@ -62,11 +62,10 @@ TEST(SculptCli, VersionNamesTheBuildAndABareCallShowsTheUsage)
 TEST(SculptCli, EveryCommandsHelpShowsExamplesOfIt)
 {
     TempDir dir;
-    for (const char* command : {"new", "info", "mesh", "smooth", "offset", "morph", "build", "apply", "import",
-                                "export-labels", "hollow", "islands", "pieces", "render"}) {
-        const auto r = runSculpt(std::string(command) + " --help", dir.path());
+    for (const std::string& command : test::sculptCommands()) {
+        const auto r = runSculpt(command + " --help", dir.path());
         EXPECT_EQ(r.exitCode, 0) << command;
-        const auto examples = r.out.find("Examples:\n  sculpt " + std::string(command) + " ");
+        const auto examples = r.out.find("Examples:\n  sculpt " + command + " ");
         EXPECT_NE(examples, std::string::npos) << command << ":\n" << r.out;
     }
 }
